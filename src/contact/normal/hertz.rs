@@ -1,0 +1,105 @@
+//! Hertz elastic normal law (Rojek 2016 eqs 2, 9; Zhong 2009 model II, eqs 10–13).
+//!
+//!   F_n^e = 4/3 E* √R* δ^{3/2}                 (eq 2; Rojek writes h = −δ)
+//!   k_n   = dF/dδ = 2 E* √(R* δ) = ∛(6 R* E*² F)  (eqs 9–10)
+//!   U     = 8/15 E* √R* δ^{5/2}
+//!
+//! E* from Rojek eq 3, R* from eq 4 (`crate::material`). No history.
+//! A head-on collision at approach speed v has the closed forms (Johnson 1985 §11.4):
+//!   δ_max = (15 m* v² / (16 E* √R*))^{2/5}
+//!   t_c   = 3.21807 (m*/k̃)^{2/5} v^{−1/5},  k̃ = 4/3 E* √R*
+//! Zhong eq 13 prints the constant as 3.21 (0.25 % low; docs/paper-discrepancies.md).
+//! LIGGGHTS keyword: `model hertz`.
+
+pub fn hertz_force(overlap: f64, effective_radius: f64, effective_modulus: f64) -> f64 {
+    4.0 / 3.0 * effective_modulus * (effective_radius * overlap).sqrt() * overlap
+}
+
+pub fn hertz_stiffness(overlap: f64, effective_radius: f64, effective_modulus: f64) -> f64 {
+    2.0 * effective_modulus * (effective_radius * overlap).sqrt()
+}
+
+pub fn hertz_energy(overlap: f64, effective_radius: f64, effective_modulus: f64) -> f64 {
+    8.0 / 15.0 * effective_modulus * effective_radius.sqrt() * overlap.powf(2.5)
+}
+
+/// Inverse of eq 2: the overlap at which the Hertz force equals `force`.
+pub fn hertz_overlap_at_force(force: f64, effective_radius: f64, effective_modulus: f64) -> f64 {
+    (force / (4.0 / 3.0 * effective_modulus * effective_radius.sqrt())).powf(2.0 / 3.0)
+}
+
+pub fn hertz_max_overlap(
+    effective_mass: f64,
+    approach_speed: f64,
+    effective_radius: f64,
+    effective_modulus: f64,
+) -> f64 {
+    (15.0 * effective_mass * approach_speed.powi(2)
+        / (16.0 * effective_modulus * effective_radius.sqrt()))
+    .powf(0.4)
+}
+
+/// Exact constant of the elastic Hertz contact duration,
+/// 2·√π·Γ(7/5)/Γ(9/10)·(5/4)^{2/5} (derived in docs/paper-discrepancies.md §2).
+pub const HERTZ_DURATION_CONSTANT: f64 = 3.218_07;
+
+pub fn hertz_contact_duration(
+    effective_mass: f64,
+    approach_speed: f64,
+    effective_radius: f64,
+    effective_modulus: f64,
+) -> f64 {
+    let k_tilde = 4.0 / 3.0 * effective_modulus * effective_radius.sqrt();
+    HERTZ_DURATION_CONSTANT * (effective_mass / k_tilde).powf(0.4) * approach_speed.powf(-0.2)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+
+    const R: f64 = 5e-6;
+    const E: f64 = 1e11;
+
+    #[test]
+    fn stiffness_matches_both_rojek_forms() {
+        let d = 3e-9;
+        let f = hertz_force(d, R, E);
+        assert_relative_eq!(
+            hertz_stiffness(d, R, E),
+            (6.0 * R * E * E * f).cbrt(),
+            max_relative = 1e-12
+        );
+    }
+
+    #[test]
+    fn stiffness_is_force_derivative() {
+        let (d, h) = (3e-9, 1e-15);
+        let fd = (hertz_force(d + h, R, E) - hertz_force(d - h, R, E)) / (2.0 * h);
+        assert_relative_eq!(fd, hertz_stiffness(d, R, E), max_relative = 1e-6);
+    }
+
+    #[test]
+    fn energy_derivative_is_force() {
+        let (d, h) = (3e-9, 1e-15);
+        let fd = (hertz_energy(d + h, R, E) - hertz_energy(d - h, R, E)) / (2.0 * h);
+        assert_relative_eq!(fd, hertz_force(d, R, E), max_relative = 1e-6);
+    }
+
+    #[test]
+    fn overlap_at_force_inverts_force() {
+        let d = 2e-9;
+        assert_relative_eq!(
+            hertz_overlap_at_force(hertz_force(d, R, E), R, E),
+            d,
+            max_relative = 1e-12
+        );
+    }
+
+    #[test]
+    fn max_overlap_stores_all_kinetic_energy() {
+        let (m, v) = (1e-11, 0.2);
+        let d = hertz_max_overlap(m, v, R, E);
+        assert_relative_eq!(hertz_energy(d, R, E), 0.5 * m * v * v, max_relative = 1e-12);
+    }
+}

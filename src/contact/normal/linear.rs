@@ -1,0 +1,105 @@
+//! Linear spring normal law (Zhong 2009 model I, eq 5).
+//!
+//!   F_n^e = k_n δ            (δ = R_i + R_j − |x_i − x_j| > 0, repulsive positive)
+//!   stiffness dF/dδ = k_n,   stored energy U = ½ k_n δ²
+//!
+//! With a constant dashpot γ_n (eq 6) the collision has the closed forms of
+//! Zhong eqs 7–9, implemented below for the verification cases.
+//! Parameters: k_n in N/m. No history. LIGGGHTS keyword: `model hooke/stiffness`.
+
+pub fn linear_force(stiffness: f64, overlap: f64) -> f64 {
+    stiffness * overlap
+}
+
+pub fn linear_energy(stiffness: f64, overlap: f64) -> f64 {
+    0.5 * stiffness * overlap * overlap
+}
+
+/// Damped linear oscillator of one collision: natural frequency ω₀ = √(k/m*),
+/// decay rate β = γ_n / (2 m*), damped frequency ω = √(ω₀² − β²).
+#[derive(Clone, Copy, Debug)]
+pub struct LinearCollision {
+    pub omega0: f64,
+    pub beta: f64,
+}
+
+impl LinearCollision {
+    pub fn new(stiffness: f64, effective_mass: f64, gamma_n: f64) -> Self {
+        LinearCollision {
+            omega0: (stiffness / effective_mass).sqrt(),
+            beta: gamma_n / (2.0 * effective_mass),
+        }
+    }
+
+    pub fn damped_frequency(&self) -> f64 {
+        (self.omega0.powi(2) - self.beta.powi(2)).sqrt()
+    }
+
+    /// Zhong eq 8: t_n = π / ω (until the overlap returns to zero).
+    pub fn contact_duration(&self) -> f64 {
+        std::f64::consts::PI / self.damped_frequency()
+    }
+
+    /// Zhong eq 7: ε_n = exp(−β t_n).
+    pub fn restitution(&self) -> f64 {
+        (-self.beta * self.contact_duration()).exp()
+    }
+
+    /// Exact maximum overlap of δ(t) = (v/ω) e^{−βt} sin ωt, reached at
+    /// t* = atan(ω/β)/ω. Zhong eq 9 gives only the bound v t_n / π = v/ω, which is
+    /// reached when β = 0.
+    pub fn max_overlap(&self, approach_speed: f64) -> f64 {
+        let w = self.damped_frequency();
+        if self.beta == 0.0 {
+            return approach_speed / w;
+        }
+        let t_star = (w / self.beta).atan() / w;
+        approach_speed / w * (-self.beta * t_star).exp() * (w * t_star).sin()
+    }
+
+    /// The damping coefficient γ_n that gives restitution `e` (inverse of eqs 7–8).
+    pub fn gamma_for_restitution(stiffness: f64, effective_mass: f64, e: f64) -> f64 {
+        let ln_e = e.ln();
+        let omega0 = (stiffness / effective_mass).sqrt();
+        let beta = -ln_e * omega0 / (std::f64::consts::PI.powi(2) + ln_e * ln_e).sqrt();
+        2.0 * effective_mass * beta
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+
+    #[test]
+    fn gamma_for_restitution_inverts_eq7() {
+        let g = LinearCollision::gamma_for_restitution(1e7, 2e-3, 0.5);
+        assert_relative_eq!(
+            LinearCollision::new(1e7, 2e-3, g).restitution(),
+            0.5,
+            max_relative = 1e-12
+        );
+    }
+
+    #[test]
+    fn undamped_max_overlap_equals_zhong_eq9_bound() {
+        let c = LinearCollision::new(1e7, 2e-3, 0.0);
+        assert_relative_eq!(
+            c.max_overlap(1.0),
+            1.0 * c.contact_duration() / std::f64::consts::PI
+        );
+    }
+
+    #[test]
+    fn damped_max_overlap_is_below_eq9_bound() {
+        let c = LinearCollision::new(1e7, 2e-3, 3.0);
+        assert!(c.max_overlap(1.0) < c.contact_duration() / std::f64::consts::PI);
+    }
+
+    #[test]
+    fn energy_derivative_is_force() {
+        let (k, d, h) = (1e7, 1e-4, 1e-9);
+        let fd = (linear_energy(k, d + h) - linear_energy(k, d - h)) / (2.0 * h);
+        assert_relative_eq!(fd, linear_force(k, d), max_relative = 1e-6);
+    }
+}

@@ -1,0 +1,91 @@
+//! Broad phase: which pairs may be in contact. A Verlet neighbour list with a skin
+//! is built by one of the detectors and reused until some particle has moved more
+//! than half the skin, so the detector runs rarely. The list is sorted (i < j,
+//! lexicographic), which makes iteration order — and so every result — independent
+//! of the detector and of hashing.
+
+pub mod brute;
+pub mod cells;
+
+use crate::particles::Vec3;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Detector {
+    Brute,
+    Cells,
+}
+
+impl Detector {
+    pub fn candidate_pairs(
+        &self,
+        position: &[Vec3],
+        radius: &[f64],
+        margin: f64,
+    ) -> Vec<(u32, u32)> {
+        match self {
+            Detector::Brute => brute::candidate_pairs(position, radius, margin),
+            Detector::Cells => cells::candidate_pairs(position, radius, margin),
+        }
+    }
+}
+
+/// Candidate pairs with a per-pair history slot (the tangential spring), carried
+/// across rebuilds by merging the two sorted lists.
+#[derive(Clone, Debug)]
+pub struct NeighborList {
+    pub detector: Detector,
+    pub skin: f64,
+    pub pairs: Vec<(u32, u32)>,
+    /// One slot per pair when contacts have history, otherwise empty.
+    pub history: Vec<Vec3>,
+    keeps_history: bool,
+    reference_position: Vec<Vec3>,
+    pub builds: u64,
+}
+
+impl NeighborList {
+    pub fn new(detector: Detector, skin: f64, keeps_history: bool) -> Self {
+        NeighborList {
+            detector,
+            skin,
+            pairs: Vec::new(),
+            history: Vec::new(),
+            keeps_history,
+            reference_position: Vec::new(),
+            builds: 0,
+        }
+    }
+
+    /// Rebuild when the list is empty of reference or some particle moved > skin/2.
+    pub fn update(&mut self, position: &[Vec3], radius: &[f64]) {
+        let limit = 0.25 * self.skin * self.skin;
+        let stale = self.reference_position.len() != position.len()
+            || position
+                .iter()
+                .zip(&self.reference_position)
+                .any(|(p, q)| (p - q).norm_squared() > limit);
+        if stale {
+            self.rebuild(position, radius);
+        }
+    }
+
+    pub fn rebuild(&mut self, position: &[Vec3], radius: &[f64]) {
+        let pairs = self.detector.candidate_pairs(position, radius, self.skin);
+        if self.keeps_history {
+            let mut history = vec![Vec3::zeros(); pairs.len()];
+            let mut old = 0;
+            for (k, pair) in pairs.iter().enumerate() {
+                while old < self.pairs.len() && self.pairs[old] < *pair {
+                    old += 1;
+                }
+                if old < self.pairs.len() && self.pairs[old] == *pair {
+                    history[k] = self.history[old];
+                }
+            }
+            self.history = history;
+        }
+        self.pairs = pairs;
+        self.reference_position = position.to_vec();
+        self.builds += 1;
+    }
+}

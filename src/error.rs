@@ -1,0 +1,58 @@
+//! The error kinds of tamp and the exit codes the CLI contract maps them to:
+//! 2 for bad input (the message names the field and the rule), 3 for a run that
+//! became unstable (the message names the particle or contact and the step).
+
+use thiserror::Error;
+
+#[derive(Debug, Error)]
+pub enum TampError {
+    /// Bad input: `path` is the JSON path (or CLI argument) and `rule` what it broke.
+    #[error("{path}: {rule}")]
+    Input { path: String, rule: String },
+
+    /// Several input errors found in one pass; each line is `path: rule`.
+    #[error("{}", .0.iter().map(|e| e.to_string()).collect::<Vec<_>>().join("\n"))]
+    InputMany(Vec<TampError>),
+
+    /// The run stopped because it became unstable; nothing non-finite was written.
+    #[error("unstable at step {step} (t = {time:.6e} s): {what}")]
+    Unstable { step: u64, time: f64, what: String },
+
+    #[error("{context}: {source}")]
+    Io {
+        context: String,
+        #[source]
+        source: std::io::Error,
+    },
+
+    /// A verification case could not be evaluated (distinct from a case that fails).
+    #[error("{0}")]
+    Other(String),
+}
+
+impl TampError {
+    pub fn input(path: impl Into<String>, rule: impl Into<String>) -> Self {
+        TampError::Input {
+            path: path.into(),
+            rule: rule.into(),
+        }
+    }
+
+    pub fn io(context: impl Into<String>, source: std::io::Error) -> Self {
+        TampError::Io {
+            context: context.into(),
+            source,
+        }
+    }
+
+    /// Exit code of the CLI contract (docs/architecture.md).
+    pub fn exit_code(&self) -> i32 {
+        match self {
+            TampError::Input { .. } | TampError::InputMany(_) => 2,
+            TampError::Unstable { .. } => 3,
+            TampError::Io { .. } | TampError::Other(_) => 1,
+        }
+    }
+}
+
+pub type Result<T> = std::result::Result<T, TampError>;

@@ -1,0 +1,22 @@
+//! tamp: a verification-first discrete element method reference implementation for
+//! powder packing and cold die compaction. See README.md and docs/architecture.md.
+
+pub mod contact;
+pub mod detect;
+pub mod error;
+pub mod integrate;
+pub mod material;
+pub mod output;
+pub mod particles;
+pub mod run;
+pub mod scene;
+pub mod simulation;
+pub mod timestep;
+pub mod verify;
+pub mod walls;
+
+pub use error::{Result, TampError};
+
+/// Version and commit this binary was built from.
+pub const VERSION: &str = env!("CARGO_PKG_VERSION");
+pub const GIT_COMMIT: &str = env!("TAMP_GIT_COMMIT");

@@ -1,0 +1,64 @@
+//! Everything a run writes. Files are written to a temporary name in the target
+//! directory and renamed, so a reader never sees a half-written file and an
+//! interrupted run never clobbers a previous result.
+
+pub mod series;
+pub mod summary;
+pub mod vtk;
+
+use crate::error::{Result, TampError};
+use serde::Serialize;
+use std::path::Path;
+
+pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
+    let name = path
+        .file_name()
+        .map(|n| n.to_string_lossy().to_string())
+        .unwrap_or_default();
+    let tmp = path.with_file_name(format!(".{name}.tmp"));
+    std::fs::write(&tmp, bytes)
+        .map_err(|e| TampError::io(format!("writing {}", tmp.display()), e))?;
+    std::fs::rename(&tmp, path).map_err(|e| {
+        TampError::io(
+            format!("renaming {} to {}", tmp.display(), path.display()),
+            e,
+        )
+    })
+}
+
+pub fn create_dir(dir: &Path) -> Result<()> {
+    std::fs::create_dir_all(dir)
+        .map_err(|e| TampError::io(format!("creating {}", dir.display()), e))
+}
+
+/// Where a result came from: enough to reproduce it.
+#[derive(Clone, Debug, Serialize)]
+pub struct Provenance {
+    pub tamp_version: String,
+    pub git_commit: String,
+    pub scene_sha256: String,
+    pub seed: u64,
+    pub dt: f64,
+    pub dt_estimate: Option<f64>,
+    pub steps: u64,
+}
+
+impl Provenance {
+    pub fn new(
+        scene_sha256: String,
+        seed: u64,
+        dt: f64,
+        dt_estimate: Option<f64>,
+        steps: u64,
+    ) -> Self {
+        Provenance {
+            tamp_version: crate::VERSION.to_string(),
+            git_commit: crate::GIT_COMMIT.to_string(),
+            scene_sha256,
+            seed,
+            dt,
+            dt_estimate,
+            steps,
+        }
+    }
+}

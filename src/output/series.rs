@@ -1,0 +1,74 @@
+//! series.csv: one row every `series_every` steps with the requested columns.
+
+use crate::error::{Result, TampError};
+use crate::simulation::Simulation;
+
+pub struct Series {
+    columns: Vec<String>,
+    header: Vec<String>,
+    rows: Vec<Vec<f64>>,
+}
+
+impl Series {
+    /// `requested` empty means every column.
+    pub fn new(requested: &[String], sim: &Simulation) -> Self {
+        let columns: Vec<String> = if requested.is_empty() {
+            crate::scene::validate::SERIES_COLUMNS
+                .iter()
+                .map(|s| s.to_string())
+                .collect()
+        } else {
+            requested.to_vec()
+        };
+        let mut header = vec!["step".to_string(), "time".to_string()];
+        for c in &columns {
+            if c == "wall_forces" {
+                for w in &sim.walls {
+                    for a in ["x", "y", "z"] {
+                        header.push(format!("wall_force_{}_{a}", w.name));
+                    }
+                }
+            } else {
+                header.push(c.clone());
+            }
+        }
+        Series {
+            columns,
+            header,
+            rows: Vec::new(),
+        }
+    }
+
+    pub fn record(&mut self, sim: &Simulation) {
+        let mut row = vec![sim.step as f64, sim.time];
+        for c in &self.columns {
+            match c.as_str() {
+                "kinetic_energy" => row.push(sim.particles.translational_kinetic_energy()),
+                "rotational_energy" => row.push(sim.particles.rotational_kinetic_energy()),
+                "stored_energy" => row.push(sim.stored_energy()),
+                "external_work" => row.push(sim.external_work),
+                "dissipated_energy" => row.push(sim.dissipated_energy()),
+                "contact_count" => row.push(sim.contact_count() as f64),
+                "max_overlap_ratio" => row.push(sim.max_overlap_ratio),
+                "wall_forces" => sim
+                    .wall_force
+                    .iter()
+                    .for_each(|f| row.extend([f.x, f.y, f.z])),
+                other => unreachable!("column '{other}' passed validation"),
+            }
+        }
+        self.rows.push(row);
+    }
+
+    pub fn to_csv(&self) -> Result<Vec<u8>> {
+        let mut w = csv::Writer::from_writer(Vec::new());
+        let err = |e: csv::Error| TampError::Other(format!("writing series.csv: {e}"));
+        w.write_record(&self.header).map_err(err)?;
+        for row in &self.rows {
+            w.write_record(row.iter().map(|v| format!("{v:e}")))
+                .map_err(err)?;
+        }
+        w.into_inner()
+            .map_err(|e| TampError::Other(format!("writing series.csv: {e}")))
+    }
+}

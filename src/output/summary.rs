@@ -1,0 +1,65 @@
+//! summary.json: provenance plus the final quantities of a run.
+
+use super::Provenance;
+use crate::simulation::Simulation;
+use serde::Serialize;
+
+#[derive(Debug, Serialize)]
+pub struct Summary {
+    pub provenance: Provenance,
+    pub scene_name: String,
+    pub particles: usize,
+    pub time: f64,
+    pub steps: u64,
+    pub kinetic_energy: f64,
+    pub rotational_energy: f64,
+    pub stored_energy: f64,
+    pub external_work: f64,
+    pub dissipated_energy: f64,
+    pub contact_count: usize,
+    pub max_overlap_ratio: f64,
+    pub neighbor_list_builds: u64,
+    pub wall_forces: Vec<WallForce>,
+    pub warnings: Vec<String>,
+}
+
+#[derive(Debug, Serialize)]
+pub struct WallForce {
+    pub wall: String,
+    pub force: [f64; 3],
+}
+
+impl Summary {
+    pub fn new(
+        sim: &Simulation,
+        provenance: Provenance,
+        scene_name: &str,
+        warnings: Vec<String>,
+    ) -> Self {
+        Summary {
+            provenance,
+            scene_name: scene_name.to_string(),
+            particles: sim.particles.len(),
+            time: sim.time,
+            steps: sim.step,
+            kinetic_energy: sim.particles.translational_kinetic_energy(),
+            rotational_energy: sim.particles.rotational_kinetic_energy(),
+            stored_energy: sim.stored_energy(),
+            external_work: sim.external_work,
+            dissipated_energy: sim.dissipated_energy(),
+            contact_count: sim.contact_count(),
+            max_overlap_ratio: sim.max_overlap_ratio,
+            neighbor_list_builds: sim.neighbors.builds,
+            wall_forces: sim
+                .walls
+                .iter()
+                .zip(&sim.wall_force)
+                .map(|(w, f)| WallForce {
+                    wall: w.name.clone(),
+                    force: [f.x, f.y, f.z],
+                })
+                .collect(),
+            warnings,
+        }
+    }
+}

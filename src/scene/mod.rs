@@ -1,0 +1,50 @@
+//! Scene files: parse (with JSON paths in every error), validate, build a `Simulation`.
+
+pub mod build;
+pub mod schema;
+pub mod validate;
+
+pub use build::{BuiltScene, build};
+pub use schema::Scene;
+
+use crate::error::{Result, TampError};
+use sha2::{Digest, Sha256};
+
+/// Parse scene JSON text. Errors name the JSON path (`particles[3].radius`) and the rule.
+pub fn parse(text: &str) -> Result<Scene> {
+    let de = &mut serde_json::Deserializer::from_str(text);
+    let scene: Scene = serde_path_to_error::deserialize(de).map_err(|e| {
+        let path = e.path().to_string();
+        let inner = e.into_inner();
+        let path = if path == "." {
+            "scene".to_string()
+        } else {
+            path
+        };
+        let rule = if inner.is_syntax() || inner.is_eof() {
+            format!("malformed JSON: {inner}")
+        } else {
+            inner.to_string()
+        };
+        TampError::input(path, rule)
+    })?;
+    validate::validate(&scene)?;
+    Ok(scene)
+}
+
+/// Read, parse and validate a scene file; also returns the SHA-256 of its bytes.
+pub fn load(path: &std::path::Path) -> Result<(Scene, String)> {
+    let bytes = std::fs::read(path)
+        .map_err(|e| TampError::io(format!("reading scene {}", path.display()), e))?;
+    let text = String::from_utf8(bytes.clone())
+        .map_err(|_| TampError::input(path.display().to_string(), "must be UTF-8 text"))?;
+    let scene = parse(&text)?;
+    Ok((scene, sha256_hex(&bytes)))
+}
+
+pub fn sha256_hex(bytes: &[u8]) -> String {
+    Sha256::digest(bytes)
+        .iter()
+        .map(|b| format!("{b:02x}"))
+        .collect()
+}

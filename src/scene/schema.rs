@@ -1,0 +1,303 @@
+//! The scene file schema (JSON). Every field, unit and default is documented in
+//! docs/scene-format.md; unknown fields are rejected.
+
+use serde::{Deserialize, Serialize};
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct Scene {
+    #[serde(default)]
+    pub name: String,
+    /// Seed of every random choice the scene makes (insertion positions, velocities).
+    #[serde(default)]
+    pub seed: u64,
+    pub materials: Vec<MaterialSpec>,
+    pub contact: ContactSpec,
+    #[serde(default)]
+    pub particles: Vec<ParticleSpec>,
+    #[serde(default)]
+    pub insert: Vec<InsertSpec>,
+    #[serde(default)]
+    pub walls: Vec<WallSpec>,
+    /// Gravitational acceleration, m/s²; absent means no gravity.
+    #[serde(default)]
+    pub gravity: Option<[f64; 3]>,
+    /// Absent means particles do not rotate.
+    #[serde(default)]
+    pub rotation: Option<RotationSpec>,
+    pub time_step: TimeStepSpec,
+    pub run: RunSpec,
+    #[serde(default)]
+    pub broad_phase: BroadPhaseSpec,
+    #[serde(default)]
+    pub stability: StabilitySpec,
+    #[serde(default)]
+    pub output: OutputSpec,
+}
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct MaterialSpec {
+    pub name: String,
+    /// kg/m³
+    pub density: f64,
+    /// Pa; required by elastic laws (hertz).
+    #[serde(default)]
+    pub youngs_modulus: Option<f64>,
+    #[serde(default)]
+    pub poisson_ratio: Option<f64>,
+}
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct ContactSpec {
+    pub normal: NormalSpec,
+    #[serde(default)]
+    pub damping: Option<DampingSpec>,
+    #[serde(default)]
+    pub tangential: Option<TangentialSpec>,
+}
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(tag = "law", rename_all = "snake_case", deny_unknown_fields)]
+pub enum NormalSpec {
+    /// Zhong model I: F = k_n δ.
+    Linear { stiffness: f64 },
+    /// Rojek eq 2 / Zhong model II.
+    Hertz {},
+}
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
+pub enum DampingSpec {
+    /// c_n = ξ · 2√(m* k_n), Rojek eqs 6–10.
+    CriticalFraction { xi: f64 },
+    /// c_n = γ_n, Zhong eq 6 (N·s/m).
+    Constant { gamma_n: f64 },
+}
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(tag = "law", rename_all = "snake_case", deny_unknown_fields)]
+pub enum TangentialSpec {
+    /// Zhong model IX, eqs 24–25.
+    CundallStrack {
+        stiffness: f64,
+        friction: f64,
+        /// Per-material-pair friction overrides.
+        #[serde(default)]
+        friction_pairs: Vec<FrictionPair>,
+    },
+}
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct FrictionPair {
+    pub materials: [String; 2],
+    pub friction: f64,
+}
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct ParticleSpec {
+    /// m
+    pub position: [f64; 3],
+    /// m
+    pub radius: f64,
+    pub material: String,
+    #[serde(default)]
+    pub velocity: Option<[f64; 3]>,
+    #[serde(default)]
+    pub omega: Option<[f64; 3]>,
+    /// When set, the particle moves at this velocity whatever the forces (m/s).
+    #[serde(default)]
+    pub prescribed_velocity: Option<[f64; 3]>,
+}
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct InsertSpec {
+    pub count: usize,
+    pub radius: RadiusSpec,
+    pub material: String,
+    /// Axis-aligned box the particles must lie inside (whole spheres), m.
+    pub region: BoxRegion,
+    /// Speed of each particle in a uniformly random direction, m/s.
+    #[serde(default)]
+    pub speed: f64,
+    /// Magnitude of each particle's spin in a random direction, rad/s.
+    #[serde(default)]
+    pub spin: f64,
+    #[serde(default = "default_attempts")]
+    pub max_attempts: usize,
+}
+
+fn default_attempts() -> usize {
+    100_000
+}
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(untagged)]
+pub enum RadiusSpec {
+    Fixed(f64),
+    Uniform { min: f64, max: f64 },
+}
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct BoxRegion {
+    pub lower: [f64; 3],
+    pub upper: [f64; 3],
+}
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
+pub enum WallSpec {
+    Plane {
+        #[serde(default)]
+        name: Option<String>,
+        /// A point of the plane, m.
+        point: [f64; 3],
+        /// Points to the side where particles are; normalised on load.
+        normal: [f64; 3],
+        material: String,
+        /// Constant velocity of the plane, m/s.
+        #[serde(default)]
+        velocity: Option<[f64; 3]>,
+    },
+}
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct RotationSpec {
+    /// Multiplies every moment of inertia (Rojek 2016 §3.4 uses 10).
+    #[serde(default = "one")]
+    pub inertia_scale: f64,
+}
+
+fn one() -> f64 {
+    1.0
+}
+
+#[derive(Clone, Debug, Default, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct TimeStepSpec {
+    /// Safety factor α of Rojek eq 26.
+    #[serde(default = "default_alpha")]
+    pub alpha: f64,
+    /// Impact speed that sets the stiffness of nonlinear laws before contacts exist, m/s.
+    #[serde(default)]
+    pub characteristic_velocity: Option<f64>,
+    /// A fixed step (s) that overrides α·Δt_cr; a warning is printed when it exceeds it.
+    #[serde(default)]
+    pub fixed: Option<f64>,
+}
+
+fn default_alpha() -> f64 {
+    0.2
+}
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct RunSpec {
+    /// Simulated time, s (exclusive with `steps`).
+    #[serde(default)]
+    pub duration: Option<f64>,
+    #[serde(default)]
+    pub steps: Option<u64>,
+}
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct BroadPhaseSpec {
+    #[serde(default = "default_detector")]
+    pub kind: DetectorSpec,
+    /// Verlet skin as a fraction of the smallest radius.
+    #[serde(default = "default_skin")]
+    pub skin_fraction: f64,
+}
+
+impl Default for BroadPhaseSpec {
+    fn default() -> Self {
+        BroadPhaseSpec {
+            kind: default_detector(),
+            skin_fraction: default_skin(),
+        }
+    }
+}
+
+fn default_detector() -> DetectorSpec {
+    DetectorSpec::Cells
+}
+
+fn default_skin() -> f64 {
+    0.2
+}
+
+#[derive(Clone, Copy, Debug, Deserialize, Serialize, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum DetectorSpec {
+    Brute,
+    Cells,
+}
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct StabilitySpec {
+    #[serde(default = "default_max_overlap")]
+    pub max_overlap_fraction: f64,
+    #[serde(default = "default_energy_growth")]
+    pub max_energy_growth: f64,
+    #[serde(default = "default_check_every")]
+    pub check_every: u64,
+    /// Largest overlap allowed between initial particles, as a fraction of the smaller radius.
+    #[serde(default = "default_initial_overlap")]
+    pub initial_overlap_tolerance: f64,
+}
+
+impl Default for StabilitySpec {
+    fn default() -> Self {
+        StabilitySpec {
+            max_overlap_fraction: default_max_overlap(),
+            max_energy_growth: default_energy_growth(),
+            check_every: default_check_every(),
+            initial_overlap_tolerance: default_initial_overlap(),
+        }
+    }
+}
+
+fn default_max_overlap() -> f64 {
+    0.5
+}
+fn default_energy_growth() -> f64 {
+    0.5
+}
+fn default_check_every() -> u64 {
+    100
+}
+fn default_initial_overlap() -> f64 {
+    1e-6
+}
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct OutputSpec {
+    /// Steps between rows of series.csv; 0 chooses about 1000 rows.
+    #[serde(default)]
+    pub series_every: u64,
+    /// Columns of series.csv; empty means all (see docs/scene-format.md).
+    #[serde(default)]
+    pub series: Vec<String>,
+    /// Steps between VTK frames; 0 writes none.
+    #[serde(default)]
+    pub vtk_every: u64,
+}
+
+impl Default for OutputSpec {
+    fn default() -> Self {
+        OutputSpec {
+            series_every: 0,
+            series: Vec::new(),
+            vtk_every: 0,
+        }
+    }
+}

@@ -1,0 +1,262 @@
+//! Rules a scene must satisfy before anything is built. All violations are
+//! collected, each as `json.path: rule, got value`.
+
+use super::schema::*;
+use crate::error::{Result, TampError};
+use std::collections::HashSet;
+
+pub const SERIES_COLUMNS: &[&str] = &[
+    "kinetic_energy",
+    "rotational_energy",
+    "stored_energy",
+    "external_work",
+    "dissipated_energy",
+    "contact_count",
+    "max_overlap_ratio",
+    "wall_forces",
+];
+
+struct Errors(Vec<TampError>);
+
+impl Errors {
+    fn push(&mut self, path: impl Into<String>, rule: impl Into<String>) {
+        self.0.push(TampError::input(path, rule));
+    }
+
+    fn positive(&mut self, path: impl Into<String>, value: f64) {
+        if !(value > 0.0 && value.is_finite()) {
+            self.push(path, format!("must be > 0 and finite, got {value:e}"));
+        }
+    }
+
+    fn non_negative(&mut self, path: impl Into<String>, value: f64) {
+        if !(value >= 0.0 && value.is_finite()) {
+            self.push(path, format!("must be >= 0 and finite, got {value:e}"));
+        }
+    }
+
+    fn finite3(&mut self, path: impl Into<String>, v: &[f64; 3]) {
+        if !v.iter().all(|c| c.is_finite()) {
+            self.push(path, format!("must be finite, got {v:?}"));
+        }
+    }
+}
+
+pub fn validate(scene: &Scene) -> Result<()> {
+    let mut e = Errors(Vec::new());
+    if scene.materials.is_empty() {
+        e.push("materials", "must list at least one material");
+    }
+    let mut names = HashSet::new();
+    for (k, m) in scene.materials.iter().enumerate() {
+        if !names.insert(m.name.as_str()) {
+            e.push(
+                format!("materials[{k}].name"),
+                format!("must be unique, '{}' is repeated", m.name),
+            );
+        }
+        e.positive(format!("materials[{k}].density"), m.density);
+        if let Some(y) = m.youngs_modulus {
+            e.positive(format!("materials[{k}].youngs_modulus"), y);
+        }
+        if let Some(nu) = m.poisson_ratio
+            && !(nu > -1.0 && nu < 0.5)
+        {
+            e.push(
+                format!("materials[{k}].poisson_ratio"),
+                format!("must be > -1 and < 0.5, got {nu}"),
+            );
+        }
+    }
+    let known = |name: &str| names.contains(name);
+
+    match &scene.contact.normal {
+        NormalSpec::Linear { stiffness } => e.positive("contact.normal.stiffness", *stiffness),
+        NormalSpec::Hertz {} => {
+            for (k, m) in scene.materials.iter().enumerate() {
+                if m.youngs_modulus.is_none() {
+                    e.push(
+                        format!("materials[{k}].youngs_modulus"),
+                        "is required by contact.normal.law 'hertz'",
+                    );
+                }
+                if m.poisson_ratio.is_none() {
+                    e.push(
+                        format!("materials[{k}].poisson_ratio"),
+                        "is required by contact.normal.law 'hertz'",
+                    );
+                }
+            }
+        }
+    }
+    match &scene.contact.damping {
+        Some(DampingSpec::CriticalFraction { xi }) => e.non_negative("contact.damping.xi", *xi),
+        Some(DampingSpec::Constant { gamma_n }) => {
+            e.non_negative("contact.damping.gamma_n", *gamma_n)
+        }
+        None => {}
+    }
+    if let Some(TangentialSpec::CundallStrack {
+        stiffness,
+        friction,
+        friction_pairs,
+    }) = &scene.contact.tangential
+    {
+        e.positive("contact.tangential.stiffness", *stiffness);
+        e.non_negative("contact.tangential.friction", *friction);
+        for (k, fp) in friction_pairs.iter().enumerate() {
+            e.non_negative(
+                format!("contact.tangential.friction_pairs[{k}].friction"),
+                fp.friction,
+            );
+            for (s, name) in fp.materials.iter().enumerate() {
+                if !known(name) {
+                    e.push(
+                        format!("contact.tangential.friction_pairs[{k}].materials[{s}]"),
+                        format!("unknown material '{name}'"),
+                    );
+                }
+            }
+        }
+    }
+
+    for (k, p) in scene.particles.iter().enumerate() {
+        e.finite3(format!("particles[{k}].position"), &p.position);
+        e.positive(format!("particles[{k}].radius"), p.radius);
+        if !known(&p.material) {
+            e.push(
+                format!("particles[{k}].material"),
+                format!("unknown material '{}'", p.material),
+            );
+        }
+        for (field, v) in [
+            ("velocity", &p.velocity),
+            ("omega", &p.omega),
+            ("prescribed_velocity", &p.prescribed_velocity),
+        ] {
+            if let Some(v) = v {
+                e.finite3(format!("particles[{k}].{field}"), v);
+            }
+        }
+    }
+    for (k, ins) in scene.insert.iter().enumerate() {
+        let path = format!("insert[{k}]");
+        if !known(&ins.material) {
+            e.push(
+                format!("{path}.material"),
+                format!("unknown material '{}'", ins.material),
+            );
+        }
+        let r_max = match ins.radius {
+            RadiusSpec::Fixed(r) => {
+                e.positive(format!("{path}.radius"), r);
+                r
+            }
+            RadiusSpec::Uniform { min, max } => {
+                e.positive(format!("{path}.radius.min"), min);
+                if !(max >= min && max.is_finite()) {
+                    e.push(
+                        format!("{path}.radius.max"),
+                        format!("must be >= radius.min ({min:e}), got {max:e}"),
+                    );
+                }
+                max
+            }
+        };
+        e.finite3(format!("{path}.region.lower"), &ins.region.lower);
+        e.finite3(format!("{path}.region.upper"), &ins.region.upper);
+        for a in 0..3 {
+            if ins.region.upper[a] - ins.region.lower[a] < 2.0 * r_max {
+                e.push(
+                    format!("{path}.region.upper[{a}]"),
+                    format!("the region must be at least one particle diameter ({:e} m) wide along every axis", 2.0 * r_max),
+                );
+                break;
+            }
+        }
+        e.non_negative(format!("{path}.speed"), ins.speed);
+        e.non_negative(format!("{path}.spin"), ins.spin);
+    }
+    if scene.particles.is_empty() && scene.insert.iter().all(|i| i.count == 0) {
+        e.push(
+            "particles",
+            "the scene must contain at least one particle (particles or insert)",
+        );
+    }
+    for (k, w) in scene.walls.iter().enumerate() {
+        let WallSpec::Plane {
+            point,
+            normal,
+            material,
+            velocity,
+            ..
+        } = w;
+        e.finite3(format!("walls[{k}].point"), point);
+        let len = normal.iter().map(|c| c * c).sum::<f64>().sqrt();
+        if !(len > 0.0 && len.is_finite()) {
+            e.push(
+                format!("walls[{k}].normal"),
+                format!("must have non-zero finite length, got {normal:?}"),
+            );
+        }
+        if !known(material) {
+            e.push(
+                format!("walls[{k}].material"),
+                format!("unknown material '{material}'"),
+            );
+        }
+        if let Some(v) = velocity {
+            e.finite3(format!("walls[{k}].velocity"), v);
+        }
+    }
+    if let Some(g) = &scene.gravity {
+        e.finite3("gravity", g);
+    }
+    if let Some(r) = &scene.rotation {
+        e.positive("rotation.inertia_scale", r.inertia_scale);
+    }
+    let ts = &scene.time_step;
+    if !(ts.alpha > 0.0 && ts.alpha <= 1.0) {
+        e.push(
+            "time_step.alpha",
+            format!("must be in (0, 1], got {}", ts.alpha),
+        );
+    }
+    if let Some(v) = ts.characteristic_velocity {
+        e.positive("time_step.characteristic_velocity", v);
+    }
+    if let Some(dt) = ts.fixed {
+        e.positive("time_step.fixed", dt);
+    }
+    match (scene.run.duration, scene.run.steps) {
+        (Some(d), None) => e.positive("run.duration", d),
+        (None, Some(_)) => {}
+        _ => e.push("run", "give exactly one of 'duration' (s) or 'steps'"),
+    }
+    e.positive("broad_phase.skin_fraction", scene.broad_phase.skin_fraction);
+    e.positive(
+        "stability.max_overlap_fraction",
+        scene.stability.max_overlap_fraction,
+    );
+    e.positive(
+        "stability.max_energy_growth",
+        scene.stability.max_energy_growth,
+    );
+    e.non_negative(
+        "stability.initial_overlap_tolerance",
+        scene.stability.initial_overlap_tolerance,
+    );
+    for (k, c) in scene.output.series.iter().enumerate() {
+        if !SERIES_COLUMNS.contains(&c.as_str()) {
+            e.push(
+                format!("output.series[{k}]"),
+                format!("unknown column '{c}', expected one of {SERIES_COLUMNS:?}"),
+            );
+        }
+    }
+    match e.0.len() {
+        0 => Ok(()),
+        1 => Err(e.0.pop().unwrap()),
+        _ => Err(TampError::InputMany(e.0)),
+    }
+}

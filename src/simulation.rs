@@ -1,0 +1,498 @@
+//! One DEM run: state, the step loop, and its safeguards.
+//!
+//! Each step: half kick → drift (walls move too) → neighbour-list check → forces
+//! (pairs, walls, gravity) → half kick. Only the effects the scene enabled run:
+//! rotation and friction select a monomorphised force loop, gravity and walls are
+//! skipped when absent.
+//!
+//! Energy book: E_mech = kinetic (translation + spin) + energy stored in contact
+//! springs. External work W is the work of gravity and of prescribed bodies (moving
+//! walls, driven particles). Dissipation D = E_mech(0) + W − E_mech ≥ 0 for every law
+//! tamp has; a clearly negative D means the integration is adding energy (unstable).
+
+use crate::contact::{ContactGeometry, ContactLaw};
+use crate::detect::NeighborList;
+use crate::error::{Result, TampError};
+use crate::integrate;
+use crate::material::{Material, PairTable, effective_mass, effective_radius};
+use crate::particles::{Motion, Particles, Vec3};
+use crate::timestep::critical_time_step;
+use crate::walls::PlaneWall;
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StabilityLimits {
+    /// Largest overlap allowed, as a fraction of the smaller radius of the contact.
+    pub max_overlap_fraction: f64,
+    /// Largest energy gain without external work, as a fraction of the energy scale.
+    pub max_energy_growth: f64,
+    /// Steps between energy checks.
+    pub check_every: u64,
+}
+
+impl Default for StabilityLimits {
+    fn default() -> Self {
+        StabilityLimits {
+            max_overlap_fraction: 0.5,
+            max_energy_growth: 0.5,
+            check_every: 100,
+        }
+    }
+}
+
+#[derive(Clone, Debug)]
+pub struct Simulation {
+    pub particles: Particles,
+    pub walls: Vec<PlaneWall>,
+    pub materials: Vec<Material>,
+    pub pair_table: PairTable,
+    pub law: ContactLaw,
+    pub gravity: Option<Vec3>,
+    pub rotation: bool,
+    pub dt: f64,
+    pub step: u64,
+    pub time: f64,
+    pub neighbors: NeighborList,
+    /// Tangential springs of particle–wall contacts, `[wall][particle]`; empty without friction.
+    wall_history: Vec<Vec<Vec3>>,
+    /// Force the particles exert on each wall at the current step, N.
+    pub wall_force: Vec<Vec3>,
+    pub limits: StabilityLimits,
+    /// Work done on the particles by gravity and prescribed bodies since the start, J.
+    pub external_work: f64,
+    external_work_scale: f64,
+    external_power: f64,
+    initial_mechanical_energy: f64,
+    /// Largest overlap / smaller radius seen so far.
+    pub max_overlap_ratio: f64,
+}
+
+impl Simulation {
+    #[allow(clippy::too_many_arguments)]
+    pub fn new(
+        particles: Particles,
+        walls: Vec<PlaneWall>,
+        materials: Vec<Material>,
+        pair_table: PairTable,
+        law: ContactLaw,
+        gravity: Option<Vec3>,
+        rotation: bool,
+        dt: f64,
+        mut neighbors: NeighborList,
+        limits: StabilityLimits,
+    ) -> Result<Self> {
+        let n = particles.len();
+        let wall_history = if law.has_history() {
+            vec![vec![Vec3::zeros(); n]; walls.len()]
+        } else {
+            Vec::new()
+        };
+        neighbors.rebuild(&particles.position, &particles.radius);
+        let mut sim = Simulation {
+            wall_force: vec![Vec3::zeros(); walls.len()],
+            particles,
+            walls,
+            materials,
+            pair_table,
+            law,
+            gravity,
+            rotation,
+            dt,
+            step: 0,
+            time: 0.0,
+            neighbors,
+            wall_history,
+            limits,
+            external_work: 0.0,
+            external_work_scale: 0.0,
+            external_power: 0.0,
+            initial_mechanical_energy: 0.0,
+            max_overlap_ratio: 0.0,
+        };
+        sim.compute_forces()?;
+        sim.external_power = sim.prescribed_power();
+        sim.initial_mechanical_energy = sim.mechanical_energy();
+        Ok(sim)
+    }
+
+    pub fn step(&mut self) -> Result<()> {
+        let dt = self.dt;
+        integrate::kick(&mut self.particles, 0.5 * dt);
+        if self.rotation {
+            integrate::kick_spin(&mut self.particles, 0.5 * dt);
+        }
+        let gravity_work = integrate::drift(&mut self.particles, dt, self.gravity.as_ref());
+        for wall in &mut self.walls {
+            wall.advance(dt);
+        }
+        self.neighbors
+            .update(&self.particles.position, &self.particles.radius);
+        self.compute_forces()?;
+        integrate::kick(&mut self.particles, 0.5 * dt);
+        if self.rotation {
+            integrate::kick_spin(&mut self.particles, 0.5 * dt);
+        }
+        self.step += 1;
+        self.time += dt;
+        if let Some(i) = integrate::first_non_finite(&self.particles) {
+            return Err(self.unstable(format!(
+                "particle {i} has a non-finite position, velocity or spin"
+            )));
+        }
+        // Trapezoidal work of prescribed bodies, exact for gravity.
+        let power = self.prescribed_power();
+        let step_work = 0.5 * dt * (self.external_power + power) + gravity_work;
+        self.external_power = power;
+        self.external_work += step_work;
+        self.external_work_scale += step_work.abs();
+        if self.limits.check_every > 0 && self.step.is_multiple_of(self.limits.check_every) {
+            self.check_energy()?;
+        }
+        Ok(())
+    }
+
+    /// Run `steps` steps, calling `observe` after each.
+    pub fn run_with(&mut self, steps: u64, mut observe: impl FnMut(&Simulation)) -> Result<()> {
+        for _ in 0..steps {
+            self.step()?;
+            observe(self);
+        }
+        Ok(())
+    }
+
+    fn unstable(&self, what: String) -> TampError {
+        TampError::Unstable {
+            step: self.step,
+            time: self.time,
+            what,
+        }
+    }
+
+    fn compute_forces(&mut self) -> Result<()> {
+        match (self.rotation, self.law.has_history()) {
+            (false, false) => self.compute_forces_with::<false, false>(),
+            (false, true) => self.compute_forces_with::<false, true>(),
+            (true, false) => self.compute_forces_with::<true, false>(),
+            (true, true) => self.compute_forces_with::<true, true>(),
+        }
+    }
+
+    /// Contact, wall and body forces at the current positions. `ROT`: spins enter
+    /// contact velocities and torques are accumulated. `HIST`: contacts carry a
+    /// tangential spring.
+    fn compute_forces_with<const ROT: bool, const HIST: bool>(&mut self) -> Result<()> {
+        let p = &mut self.particles;
+        let n = p.len();
+        p.force.iter_mut().for_each(|f| *f = Vec3::zeros());
+        if ROT {
+            p.torque.iter_mut().for_each(|t| *t = Vec3::zeros());
+        }
+        if let Some(g) = self.gravity {
+            for i in 0..n {
+                if p.motion[i] == Motion::Free {
+                    p.force[i] += g * p.mass[i];
+                }
+            }
+        }
+        let dt = self.dt;
+        let max_fraction = self.limits.max_overlap_fraction;
+        let mut worst = self.max_overlap_ratio;
+
+        for (k, &(i, j)) in self.neighbors.pairs.iter().enumerate() {
+            let (i, j) = (i as usize, j as usize);
+            let d = p.position[i] - p.position[j];
+            let reach = p.radius[i] + p.radius[j];
+            let dist2 = d.norm_squared();
+            if dist2 >= reach * reach {
+                if HIST {
+                    self.neighbors.history[k] = Vec3::zeros();
+                }
+                continue;
+            }
+            let dist = dist2.sqrt();
+            let overlap = reach - dist;
+            let ratio = overlap / p.radius[i].min(p.radius[j]);
+            worst = worst.max(ratio);
+            if ratio > max_fraction || dist == 0.0 {
+                return Err(TampError::Unstable {
+                    step: self.step,
+                    time: self.time,
+                    what: format!(
+                        "contact {i}-{j}: overlap {overlap:.4e} m is {ratio:.3} of the smaller radius (limit {max_fraction})"
+                    ),
+                });
+            }
+            let normal = d / dist;
+            // Contact point in the middle of the overlap: the two lever arms add up to
+            // the centre distance, so contact torques conserve angular momentum.
+            let lever_i = p.radius[i] - 0.5 * overlap;
+            let lever_j = p.radius[j] - 0.5 * overlap;
+            let mut relative_velocity = p.velocity[i] - p.velocity[j];
+            if ROT {
+                relative_velocity -=
+                    p.omega[i].cross(&normal) * lever_i + p.omega[j].cross(&normal) * lever_j;
+            }
+            let g = ContactGeometry {
+                normal,
+                overlap,
+                effective_radius: effective_radius(p.radius[i], p.radius[j]),
+                effective_mass: effective_mass(p.mass[i], p.mass[j]),
+                relative_velocity,
+            };
+            let pair = self.pair_table.get(p.material[i], p.material[j]);
+            let spring = if HIST {
+                Some(&mut self.neighbors.history[k])
+            } else {
+                None
+            };
+            let f = self.law.evaluate(&g, pair, spring, dt);
+            let total = normal * f.normal + f.tangential;
+            if !total.iter().all(|c| c.is_finite()) {
+                return Err(TampError::Unstable {
+                    step: self.step,
+                    time: self.time,
+                    what: format!(
+                        "contact {i}-{j}: non-finite contact force at overlap {overlap:.4e} m"
+                    ),
+                });
+            }
+            p.force[i] += total;
+            p.force[j] -= total;
+            if ROT && HIST {
+                let t = -normal.cross(&f.tangential);
+                p.torque[i] += t * lever_i;
+                p.torque[j] += t * lever_j;
+            }
+        }
+
+        for (w, wall) in self.walls.iter().enumerate() {
+            let mut on_wall = Vec3::zeros();
+            for i in 0..n {
+                let overlap = p.radius[i] - wall.distance(&p.position[i]);
+                if overlap <= 0.0 {
+                    if HIST {
+                        self.wall_history[w][i] = Vec3::zeros();
+                    }
+                    continue;
+                }
+                let ratio = overlap / p.radius[i];
+                worst = worst.max(ratio);
+                if ratio > max_fraction {
+                    return Err(TampError::Unstable {
+                        step: self.step,
+                        time: self.time,
+                        what: format!(
+                            "contact {i}-wall '{}': overlap {overlap:.4e} m is {ratio:.3} of the radius (limit {max_fraction})",
+                            wall.name
+                        ),
+                    });
+                }
+                let normal = wall.normal;
+                let lever = p.radius[i] - 0.5 * overlap;
+                let mut relative_velocity = p.velocity[i] - wall.velocity;
+                if ROT {
+                    relative_velocity -= p.omega[i].cross(&normal) * lever;
+                }
+                let g = ContactGeometry {
+                    normal,
+                    overlap,
+                    effective_radius: p.radius[i],
+                    effective_mass: p.mass[i],
+                    relative_velocity,
+                };
+                let pair = self.pair_table.get(p.material[i], wall.material);
+                let spring = if HIST {
+                    Some(&mut self.wall_history[w][i])
+                } else {
+                    None
+                };
+                let f = self.law.evaluate(&g, pair, spring, dt);
+                let total = normal * f.normal + f.tangential;
+                if !total.iter().all(|c| c.is_finite()) {
+                    return Err(TampError::Unstable {
+                        step: self.step,
+                        time: self.time,
+                        what: format!("contact {i}-wall '{}': non-finite contact force", wall.name),
+                    });
+                }
+                p.force[i] += total;
+                on_wall -= total;
+                if ROT && HIST {
+                    p.torque[i] += -normal.cross(&f.tangential) * lever;
+                }
+            }
+            self.wall_force[w] = on_wall;
+        }
+        self.max_overlap_ratio = worst;
+        Ok(())
+    }
+
+    /// Power the prescribed bodies put into the particles at the current state, W.
+    fn prescribed_power(&self) -> f64 {
+        let p = &self.particles;
+        let driven: f64 = (0..p.len())
+            .filter(|&i| p.motion[i] != Motion::Free)
+            .map(|i| -p.force[i].dot(&p.velocity[i]))
+            .sum();
+        let walls: f64 = self
+            .walls
+            .iter()
+            .zip(&self.wall_force)
+            .map(|(w, f)| -f.dot(&w.velocity))
+            .sum();
+        driven + walls
+    }
+
+    /// Energy stored in all contact springs (pairs and walls), J.
+    pub fn stored_energy(&self) -> f64 {
+        let p = &self.particles;
+        let hist = self.law.has_history();
+        let mut energy = 0.0;
+        for (k, &(i, j)) in self.neighbors.pairs.iter().enumerate() {
+            let (i, j) = (i as usize, j as usize);
+            let overlap = p.radius[i] + p.radius[j] - (p.position[i] - p.position[j]).norm();
+            if overlap > 0.0 {
+                let pair = self.pair_table.get(p.material[i], p.material[j]);
+                let spring = hist.then(|| &self.neighbors.history[k]);
+                energy += self.law.stored_energy(
+                    overlap,
+                    effective_radius(p.radius[i], p.radius[j]),
+                    pair,
+                    spring,
+                );
+            }
+        }
+        for (w, wall) in self.walls.iter().enumerate() {
+            for i in 0..p.len() {
+                let overlap = p.radius[i] - wall.distance(&p.position[i]);
+                if overlap > 0.0 {
+                    let pair = self.pair_table.get(p.material[i], wall.material);
+                    let spring = hist.then(|| &self.wall_history[w][i]);
+                    energy += self.law.stored_energy(overlap, p.radius[i], pair, spring);
+                }
+            }
+        }
+        energy
+    }
+
+    pub fn kinetic_energy(&self) -> f64 {
+        self.particles.translational_kinetic_energy() + self.particles.rotational_kinetic_energy()
+    }
+
+    pub fn mechanical_energy(&self) -> f64 {
+        self.kinetic_energy() + self.stored_energy()
+    }
+
+    /// Energy dissipated so far: E_mech(0) + W − E_mech. Negative means energy was created.
+    pub fn dissipated_energy(&self) -> f64 {
+        self.initial_mechanical_energy + self.external_work - self.mechanical_energy()
+    }
+
+    fn check_energy(&self) -> Result<()> {
+        let gained = -self.dissipated_energy();
+        let scale = self.initial_mechanical_energy.abs() + self.external_work_scale;
+        if scale > 0.0 && gained > self.limits.max_energy_growth * scale {
+            let p = &self.particles;
+            let fastest = (0..p.len())
+                .max_by(|&a, &b| {
+                    p.velocity[a]
+                        .norm_squared()
+                        .total_cmp(&p.velocity[b].norm_squared())
+                })
+                .unwrap_or(0);
+            return Err(self.unstable(format!(
+                "mechanical energy grew by {gained:.4e} J, {:.3} of the energy scale {scale:.4e} J, without external work \
+                 (fastest: particle {fastest} at {:.4e} m/s); the time step is likely too large",
+                gained / scale,
+                p.velocity[fastest].norm()
+            )));
+        }
+        Ok(())
+    }
+
+    /// Number of particle–particle and particle–wall contacts at the current positions.
+    pub fn contact_count(&self) -> usize {
+        let p = &self.particles;
+        let pairs = self
+            .neighbors
+            .pairs
+            .iter()
+            .filter(|&&(i, j)| {
+                let (i, j) = (i as usize, j as usize);
+                (p.position[i] - p.position[j]).norm() < p.radius[i] + p.radius[j]
+            })
+            .count();
+        let walls: usize = self
+            .walls
+            .iter()
+            .map(|w| {
+                (0..p.len())
+                    .filter(|&i| w.distance(&p.position[i]) < p.radius[i])
+                    .count()
+            })
+            .sum();
+        pairs + walls
+    }
+
+    /// Overlap of two particles (negative when apart), m.
+    pub fn overlap(&self, i: usize, j: usize) -> f64 {
+        let p = &self.particles;
+        p.radius[i] + p.radius[j] - (p.position[i] - p.position[j]).norm()
+    }
+
+    /// Critical time step estimate, Rojek eqs 26–29 without the safety factor.
+    /// `characteristic_velocity` sets the impact stiffness of nonlinear laws; `None`
+    /// when a nonlinear law has neither that velocity nor any current contact.
+    pub fn critical_time_step(&self, characteristic_velocity: Option<f64>) -> Option<f64> {
+        let p = &self.particles;
+        let mut contact_stiffness = vec![0.0; p.len()];
+        for &(i, j) in &self.neighbors.pairs {
+            let (i, j) = (i as usize, j as usize);
+            let overlap = self.overlap(i, j);
+            if overlap > 0.0 {
+                let pair = self.pair_table.get(p.material[i], p.material[j]);
+                let k = self
+                    .law
+                    .normal
+                    .response(overlap, effective_radius(p.radius[i], p.radius[j]), pair)
+                    .stiffness;
+                contact_stiffness[i] += k;
+                contact_stiffness[j] += k;
+            }
+        }
+        let mut best: Option<f64> = None;
+        for i in 0..p.len() {
+            let mut k = contact_stiffness[i];
+            let twin = self.pair_table.get(p.material[i], p.material[i]);
+            let mut partners = vec![(0.5 * p.mass[i], 0.5 * p.radius[i], twin)];
+            partners.extend(self.walls.iter().map(|w| {
+                (
+                    p.mass[i],
+                    p.radius[i],
+                    self.pair_table.get(p.material[i], w.material),
+                )
+            }));
+            for (m_eff, r_eff, pair) in partners {
+                let impact = match (&self.law.normal, characteristic_velocity) {
+                    (crate::contact::normal::NormalLaw::Linear { stiffness }, _) => {
+                        Some(*stiffness)
+                    }
+                    (law, Some(v)) => Some(law.impact_stiffness(m_eff, v, r_eff, pair)),
+                    (_, None) => None,
+                };
+                if let Some(ki) = impact {
+                    k = k.max(ki);
+                }
+            }
+            if k > 0.0 {
+                let xi = self
+                    .law
+                    .damping
+                    .map(|d| d.ratio(0.5 * p.mass[i], k))
+                    .unwrap_or(0.0);
+                let dt = critical_time_step(k, p.mass[i], xi);
+                best = Some(best.map_or(dt, |b: f64| b.min(dt)));
+            }
+        }
+        best
+    }
+}

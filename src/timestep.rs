@@ -1,0 +1,37 @@
+//! Critical time step of the explicit central-difference scheme (Rojek 2016 §3.4).
+//!
+//!   Δt_cr = (2/ω)(√(1 + ξ²) − ξ)       (eqs 24–25, 28)
+//!   ω_i   = √(k_i / m_i)                (eq 29)
+//!   Δt    = α · min_i Δt_cr,i            (eqs 26–27; Rojek calls α "β" in the text)
+//!
+//! k_i is the stiffness particle i meets: for a law with constant stiffness the law's
+//! k_n; for Hertz the stiffness at the maximum overlap of a head-on impact at the
+//! scene's characteristic velocity against an identical particle or any wall (eq 9
+//! at δ_max), or, if larger, the sum of its current contact stiffnesses.
+
+/// Rojek eq 28 for one mass–spring–dashpot system.
+pub fn critical_time_step(stiffness: f64, mass: f64, damping_ratio: f64) -> f64 {
+    let omega = (stiffness / mass).sqrt();
+    2.0 / omega * ((1.0 + damping_ratio * damping_ratio).sqrt() - damping_ratio)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+
+    #[test]
+    fn undamped_limit_is_two_over_omega() {
+        assert_relative_eq!(critical_time_step(4.0, 1.0, 0.0), 1.0);
+    }
+
+    #[test]
+    fn damping_shortens_the_step() {
+        assert!(critical_time_step(4.0, 1.0, 0.9) < critical_time_step(4.0, 1.0, 0.0));
+        assert_relative_eq!(
+            critical_time_step(4.0, 1.0, 1.0),
+            2f64.sqrt() - 1.0,
+            max_relative = 1e-14
+        );
+    }
+}

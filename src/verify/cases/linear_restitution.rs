@@ -1,0 +1,56 @@
+//! Two equal spheres, linear spring–dashpot (Zhong 2009 model I, Table 1 values),
+//! head-on: restitution, contact duration and maximum overlap against the damped
+//! oscillator's closed forms (Zhong eqs 7–9), once with the scene's γ_n (e ≈ 0.5)
+//! and once with γ_n = 0.
+
+use super::probe::binary_collision;
+use crate::contact::normal::linear::LinearCollision;
+use crate::error::Result;
+use crate::material::effective_mass;
+use crate::scene::{self, schema::DampingSpec, schema::NormalSpec};
+use crate::verify::{CaseContext, Measured};
+
+pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
+    let base = ctx.scene()?;
+    let NormalSpec::Linear { stiffness } = base.contact.normal else {
+        return Err(crate::TampError::Other(
+            "linear_restitution needs the linear law".into(),
+        ));
+    };
+    let gamma = match base.contact.damping {
+        Some(DampingSpec::Constant { gamma_n }) => gamma_n,
+        _ => {
+            return Err(crate::TampError::Other(
+                "linear_restitution needs constant damping".into(),
+            ));
+        }
+    };
+    let mut out = Vec::new();
+    for (suffix, gamma_n) in [("", gamma), ("_undamped", 0.0)] {
+        let mut s = base.clone();
+        s.contact.damping = (gamma_n > 0.0).then_some(DampingSpec::Constant { gamma_n });
+        let mut sim = scene::build(&s)?.sim;
+        let p = &sim.particles;
+        let m_eff = effective_mass(p.mass[0], p.mass[1]);
+        let approach =
+            -(p.velocity[0] - p.velocity[1]).dot(&(p.position[0] - p.position[1]).normalize());
+        let exact = LinearCollision::new(stiffness, m_eff, gamma_n);
+        let c = binary_collision(&mut sim, 0, 1, 1_000_000)?;
+        out.push(Measured::new(
+            &format!("restitution{suffix}"),
+            c.restitution,
+            exact.restitution(),
+        ));
+        out.push(Measured::new(
+            &format!("contact_duration{suffix}"),
+            c.duration,
+            exact.contact_duration(),
+        ));
+        out.push(Measured::new(
+            &format!("max_overlap{suffix}"),
+            c.max_overlap,
+            exact.max_overlap(approach),
+        ));
+    }
+    Ok(out)
+}

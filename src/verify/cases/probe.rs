@@ -1,0 +1,73 @@
+//! Probes shared by the cases: measurements that read a simulation, never advance it.
+
+use crate::error::{Result, TampError};
+use crate::simulation::Simulation;
+
+/// What one binary collision between particles `i` and `j` looked like.
+#[derive(Clone, Copy, Debug)]
+pub struct Collision {
+    /// From first touch to separation, each interpolated linearly between steps, s.
+    pub duration: f64,
+    /// Largest overlap, refined by a parabola through the three samples around the peak, m.
+    pub max_overlap: f64,
+    /// Normal relative speed after / before.
+    pub restitution: f64,
+}
+
+/// Step `sim` until `i` and `j` have touched and separated (at most `max_steps`).
+pub fn binary_collision(
+    sim: &mut Simulation,
+    i: usize,
+    j: usize,
+    max_steps: u64,
+) -> Result<Collision> {
+    let n = (sim.particles.position[i] - sim.particles.position[j]).normalize();
+    let approach = |s: &Simulation| -(s.particles.velocity[i] - s.particles.velocity[j]).dot(&n);
+    let v_before = approach(sim);
+    let dt = sim.dt;
+    let mut prev = sim.overlap(i, j);
+    let (mut start, mut end) = (None, None);
+    let mut samples: Vec<f64> = Vec::new();
+    for _ in 0..max_steps {
+        sim.step()?;
+        let now = sim.overlap(i, j);
+        if start.is_none() && prev <= 0.0 && now > 0.0 {
+            start = Some(sim.time - dt + dt * (-prev) / (now - prev));
+        }
+        if start.is_some() {
+            samples.push(now);
+        }
+        if start.is_some() && prev > 0.0 && now <= 0.0 {
+            end = Some(sim.time - dt + dt * prev / (prev - now));
+            break;
+        }
+        prev = now;
+    }
+    let (Some(start), Some(end)) = (start, end) else {
+        return Err(TampError::Other(format!(
+            "particles {i} and {j} did not complete a collision in {max_steps} steps"
+        )));
+    };
+    let k = samples
+        .iter()
+        .enumerate()
+        .max_by(|a, b| a.1.total_cmp(b.1))
+        .map(|(k, _)| k)
+        .unwrap_or(0);
+    let max_overlap = if k > 0 && k + 1 < samples.len() {
+        let (a, b, c) = (samples[k - 1], samples[k], samples[k + 1]);
+        let curvature = a - 2.0 * b + c;
+        if curvature < 0.0 {
+            b - 0.125 * (a - c).powi(2) / curvature
+        } else {
+            b
+        }
+    } else {
+        samples[k]
+    };
+    Ok(Collision {
+        duration: end - start,
+        max_overlap,
+        restitution: -approach(sim) / v_before,
+    })
+}

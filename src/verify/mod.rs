@@ -1,0 +1,320 @@
+//! Verification cases. A case is data plus one function:
+//! - `verification/<name>.json` holds the tier, the scene file, and per quantity its
+//!   unit, tolerance (and kind), source, and the one-sentence reason for the tolerance;
+//! - `cases/<name>.rs` runs the scene(s) and returns, per quantity, the value tamp
+//!   computed and the reference computed independently from the inputs.
+//!
+//! The runner joins the two, judges each quantity, and writes the report. A quantity
+//! present on one side only is an error of the case, never silently skipped.
+
+pub mod cases;
+pub mod report;
+
+use crate::error::{Result, TampError};
+use crate::scene::{self, Scene};
+use serde::{Deserialize, Serialize};
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
+#[serde(rename_all = "lowercase")]
+pub enum Tier {
+    Quick,
+    Full,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum ToleranceKind {
+    Relative,
+    Absolute,
+}
+
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct QuantitySpec {
+    pub name: String,
+    pub unit: String,
+    pub tolerance: f64,
+    pub tolerance_kind: ToleranceKind,
+    pub source: String,
+    /// Why this tolerance (one sentence).
+    pub why: String,
+    /// The value a paper states, when it differs from the recomputed reference.
+    #[serde(default)]
+    pub paper_value: Option<f64>,
+}
+
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CaseSpec {
+    pub name: String,
+    pub tier: Tier,
+    pub description: String,
+    /// Scene file relative to `verification/`.
+    #[serde(default)]
+    pub scene: Option<String>,
+    pub quantities: Vec<QuantitySpec>,
+}
+
+/// What a case function returns for one quantity.
+#[derive(Clone, Debug)]
+pub struct Measured {
+    pub name: String,
+    pub value: f64,
+    pub reference: f64,
+}
+
+impl Measured {
+    pub fn new(name: &str, value: f64, reference: f64) -> Self {
+        Measured {
+            name: name.to_string(),
+            value,
+            reference,
+        }
+    }
+}
+
+pub struct CaseContext<'a> {
+    pub spec: &'a CaseSpec,
+    pub dir: PathBuf,
+    /// Where a case may write extra artefacts (CSV curves, plots).
+    pub report_dir: PathBuf,
+}
+
+impl CaseContext<'_> {
+    /// The case's scene, parsed and validated like any user scene.
+    pub fn scene(&self) -> Result<Scene> {
+        let file =
+            self.spec.scene.as_ref().ok_or_else(|| {
+                TampError::Other(format!("case {} names no scene", self.spec.name))
+            })?;
+        Ok(scene::load(&self.dir.join(file))?.0)
+    }
+}
+
+pub type CaseFn = fn(&CaseContext) -> Result<Vec<Measured>>;
+
+#[derive(Clone, Debug, Serialize)]
+pub struct QuantityResult {
+    pub name: String,
+    pub value: f64,
+    pub reference: f64,
+    pub error: f64,
+    pub tolerance: f64,
+    pub tolerance_kind: ToleranceKind,
+    pub unit: String,
+    pub source: String,
+    pub why: String,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub paper_value: Option<f64>,
+    pub status: Status,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Status {
+    Pass,
+    Fail,
+    Error,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct CaseResult {
+    pub name: String,
+    pub tier: Tier,
+    pub status: Status,
+    pub wall_s: f64,
+    pub description: String,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub error: Option<String>,
+    pub quantities: Vec<QuantityResult>,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct VerificationReport {
+    pub tamp_version: String,
+    pub git_commit: String,
+    pub cases: Vec<CaseResult>,
+}
+
+/// The verification directory: `$TAMP_VERIFICATION_DIR`, else the crate's own.
+pub fn verification_dir() -> PathBuf {
+    std::env::var_os("TAMP_VERIFICATION_DIR")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("verification"))
+}
+
+pub fn load_specs(dir: &Path) -> Result<Vec<CaseSpec>> {
+    let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
+        .map_err(|e| TampError::io(format!("reading {}", dir.display()), e))?
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| {
+            p.extension().is_some_and(|x| x == "json")
+                && !p.to_string_lossy().ends_with(".scene.json")
+        })
+        .collect();
+    files.sort();
+    files
+        .iter()
+        .map(|f| {
+            let text = std::fs::read_to_string(f)
+                .map_err(|e| TampError::io(format!("reading {}", f.display()), e))?;
+            let de = &mut serde_json::Deserializer::from_str(&text);
+            serde_path_to_error::deserialize(de).map_err(|e| {
+                TampError::input(
+                    format!("{}: {}", f.display(), e.path()),
+                    e.into_inner().to_string(),
+                )
+            })
+        })
+        .collect()
+}
+
+fn judge(spec: &QuantitySpec, m: &Measured) -> QuantityResult {
+    let error = match spec.tolerance_kind {
+        ToleranceKind::Absolute => (m.value - m.reference).abs(),
+        ToleranceKind::Relative => (m.value - m.reference).abs() / m.reference.abs(),
+    };
+    let status = if error.is_finite() && error <= spec.tolerance {
+        Status::Pass
+    } else {
+        Status::Fail
+    };
+    QuantityResult {
+        name: spec.name.clone(),
+        value: m.value,
+        reference: m.reference,
+        error,
+        tolerance: spec.tolerance,
+        tolerance_kind: spec.tolerance_kind,
+        unit: spec.unit.clone(),
+        source: spec.source.clone(),
+        why: spec.why.clone(),
+        paper_value: spec.paper_value,
+        status,
+    }
+}
+
+pub fn run_case(spec: &CaseSpec, dir: &Path, report_dir: &Path) -> CaseResult {
+    let started = Instant::now();
+    let ctx = CaseContext {
+        spec,
+        dir: dir.to_path_buf(),
+        report_dir: report_dir.to_path_buf(),
+    };
+    let outcome = match cases::find(&spec.name) {
+        Some(f) => f(&ctx),
+        None => Err(TampError::Other(format!(
+            "no code registered for case '{}' in src/verify/cases",
+            spec.name
+        ))),
+    };
+    let wall_s = started.elapsed().as_secs_f64();
+    let mut result = CaseResult {
+        name: spec.name.clone(),
+        tier: spec.tier,
+        status: Status::Pass,
+        wall_s,
+        description: spec.description.clone(),
+        error: None,
+        quantities: Vec::new(),
+    };
+    match outcome {
+        Err(e) => {
+            result.status = Status::Error;
+            result.error = Some(e.to_string());
+        }
+        Ok(measured) => {
+            let mut problems = Vec::new();
+            for q in &spec.quantities {
+                match measured.iter().find(|m| m.name == q.name) {
+                    Some(m) => result.quantities.push(judge(q, m)),
+                    None => problems.push(format!("quantity '{}' was not measured", q.name)),
+                }
+            }
+            for m in &measured {
+                if !spec.quantities.iter().any(|q| q.name == m.name) {
+                    problems.push(format!(
+                        "measured quantity '{}' has no entry in the case file",
+                        m.name
+                    ));
+                }
+            }
+            if !problems.is_empty() {
+                result.status = Status::Error;
+                result.error = Some(problems.join("; "));
+            } else if result.quantities.iter().any(|q| q.status != Status::Pass) {
+                result.status = Status::Fail;
+            }
+        }
+    }
+    result
+}
+
+/// `tamp verify`: returns the exit code (0 all pass, 1 otherwise).
+pub fn run_cli(tier: Tier, names: &[String], json: Option<&Path>, report_dir: &Path) -> Result<u8> {
+    let dir = verification_dir();
+    let specs = load_specs(&dir)?;
+    for n in names {
+        if !specs.iter().any(|s| &s.name == n) {
+            return Err(TampError::input("--case", format!("unknown case '{n}'")));
+        }
+    }
+    let selected: Vec<&CaseSpec> = specs
+        .iter()
+        .filter(|s| {
+            if names.is_empty() {
+                tier == Tier::Full || s.tier == Tier::Quick
+            } else {
+                names.contains(&s.name)
+            }
+        })
+        .collect();
+    crate::output::create_dir(report_dir)?;
+    let mut results = Vec::new();
+    for spec in selected {
+        eprint!("{:<32} ", spec.name);
+        let r = run_case(spec, &dir, report_dir);
+        eprintln!(
+            "{:?} ({:.2} s){}",
+            r.status,
+            r.wall_s,
+            r.error
+                .as_deref()
+                .map(|e| format!(": {e}"))
+                .unwrap_or_default()
+        );
+        results.push(r);
+    }
+    let report = VerificationReport {
+        tamp_version: crate::VERSION.to_string(),
+        git_commit: crate::GIT_COMMIT.to_string(),
+        cases: results,
+    };
+    let json_path = json
+        .map(Path::to_path_buf)
+        .unwrap_or_else(|| report_dir.join("verification.json"));
+    crate::output::write_atomic(
+        &json_path,
+        &serde_json::to_vec_pretty(&report).expect("report serialises"),
+    )?;
+    crate::output::write_atomic(
+        &report_dir.join("verification.md"),
+        report::markdown(&report).as_bytes(),
+    )?;
+    let failed = report
+        .cases
+        .iter()
+        .filter(|c| c.status != Status::Pass)
+        .count();
+    let quantities: usize = report.cases.iter().map(|c| c.quantities.len()).sum();
+    println!(
+        "{} passed, {} failed: verification ({} quantities); report in {}",
+        report.cases.len() - failed,
+        failed,
+        quantities,
+        report_dir.join("verification.md").display()
+    );
+    Ok(if failed == 0 { 0 } else { 1 })
+}
