@@ -460,8 +460,8 @@ impl Simulation {
             }
         }
         let mut best: Option<f64> = None;
-        for i in 0..p.len() {
-            let mut k = contact_stiffness[i];
+        for (i, &in_contact) in contact_stiffness.iter().enumerate() {
+            let mut k = in_contact;
             let twin = self.pair_table.get(p.material[i], p.material[i]);
             let mut partners = vec![(0.5 * p.mass[i], 0.5 * p.radius[i], twin)];
             partners.extend(self.walls.iter().map(|w| {

@@ -278,7 +278,7 @@ fn default_initial_overlap() -> f64 {
     1e-6
 }
 
-#[derive(Clone, Debug, Deserialize, Serialize)]
+#[derive(Clone, Debug, Default, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct OutputSpec {
     /// Steps between rows of series.csv; 0 chooses about 1000 rows.
@@ -292,12 +292,3 @@ pub struct OutputSpec {
     pub vtk_every: u64,
 }
 
-impl Default for OutputSpec {
-    fn default() -> Self {
-        OutputSpec {
-            series_every: 0,
-            series: Vec::new(),
-            vtk_every: 0,
-        }
-    }
-}

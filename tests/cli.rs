@@ -1,0 +1,164 @@
+//! The CLI contract: `tamp run` outputs and provenance, exit 3 on instability, VTK
+//! frames that parse back, `tamp verify` exit codes.
+
+use serde_json::{Value, json};
+use std::process::Command;
+
+fn tamp(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_tamp"))
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+fn base() -> Value {
+    serde_json::from_str(include_str!("scenes/base.json")).unwrap()
+}
+
+#[test]
+fn run_writes_summary_series_and_vtk_with_provenance() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = dir.path().join("scene.json");
+    std::fs::write(&scene, base().to_string()).unwrap();
+    let out = dir.path().join("out");
+    let o = tamp(&[
+        "run",
+        scene.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+
+    let summary: Value =
+        serde_json::from_slice(&std::fs::read(out.join("summary.json")).unwrap()).unwrap();
+    let prov = &summary["provenance"];
+    assert_eq!(prov["tamp_version"], env!("CARGO_PKG_VERSION"));
+    assert!(prov["git_commit"].as_str().unwrap().len() >= 7);
+    let sha = tamp::scene::sha256_hex(&std::fs::read(&scene).unwrap());
+    assert_eq!(prov["scene_sha256"], sha);
+    assert!(prov["dt"].as_f64().unwrap() > 0.0);
+    // The spheres come to rest on the floor: the floor carries their weight.
+    let weight = 2.0 * 2500.0 * 4.0 / 3.0 * std::f64::consts::PI * 1e-9 * 9.81;
+    let fz = summary["wall_forces"][0]["force"][2].as_f64().unwrap();
+    assert!(
+        (fz + weight).abs() < 0.05 * weight,
+        "floor force {fz}, weight {weight}"
+    );
+
+    let series = std::fs::read_to_string(out.join("series.csv")).unwrap();
+    assert!(
+        series
+            .lines()
+            .next()
+            .unwrap()
+            .starts_with("step,time,kinetic_energy")
+    );
+    assert!(series.lines().count() > 100);
+
+    let frames: Vec<_> = std::fs::read_dir(out.join("vtk"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .collect();
+    assert!(frames.len() >= 2);
+    for f in frames {
+        let vtk = vtkio::Vtk::import(&f)
+            .unwrap_or_else(|e| panic!("{} does not parse: {e}", f.display()));
+        let vtkio::model::DataSet::PolyData { pieces, .. } = vtk.data else {
+            panic!("not polydata")
+        };
+        let vtkio::model::Piece::Inline(piece) = &pieces[0] else {
+            panic!("not inline")
+        };
+        assert_eq!(piece.num_points(), 2);
+        assert_eq!(piece.data.point.len(), 4);
+    }
+    // No temporary files are left behind.
+    assert!(
+        std::fs::read_dir(&out).unwrap().all(|e| !e
+            .unwrap()
+            .file_name()
+            .to_string_lossy()
+            .ends_with(".tmp"))
+    );
+}
+
+#[test]
+fn ten_times_the_critical_step_stops_with_exit_3_and_a_diagnostic() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut s = base();
+    s["contact"]["damping"] = Value::Null;
+    s["particles"][0]["velocity"] = json!([0, 0, -1.0]);
+    // Δt_cr for this scene is about 1.1e-5 s at 1 m/s (α = 1); ten times that:
+    s["time_step"] = json!({"fixed": 1.1e-4, "characteristic_velocity": 1.0, "alpha": 1.0});
+    let scene = dir.path().join("scene.json");
+    std::fs::write(&scene, s.to_string()).unwrap();
+    let out = dir.path().join("out");
+    let o = tamp(&[
+        "run",
+        scene.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--quiet",
+    ]);
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(3), "{stderr}");
+    assert!(stderr.contains("warning: time_step.fixed"), "{stderr}");
+    assert!(stderr.contains("unstable at step"), "{stderr}");
+    assert!(
+        stderr.contains("contact 0-wall 'floor'") || stderr.contains("contact 0-1"),
+        "{stderr}"
+    );
+    assert!(
+        !out.join("summary.json").exists(),
+        "an unstable run must not write a summary"
+    );
+}
+
+#[test]
+fn verify_rejects_unknown_case_with_exit_2() {
+    let o = tamp(&["verify", "--case", "no_such_case"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--case: unknown case 'no_such_case'"));
+}
+
+#[test]
+fn verify_writes_report_and_contract_json() {
+    let dir = tempfile::tempdir().unwrap();
+    let report = dir.path().join("report");
+    let o = tamp(&[
+        "verify",
+        "--case",
+        "hertz_yield_onset",
+        "--report",
+        report.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let j: Value =
+        serde_json::from_slice(&std::fs::read(report.join("verification.json")).unwrap()).unwrap();
+    let case = &j["cases"][0];
+    assert_eq!(case["name"], "hertz_yield_onset");
+    assert_eq!(case["status"], "pass");
+    for key in [
+        "name",
+        "value",
+        "reference",
+        "tolerance",
+        "tolerance_kind",
+        "unit",
+        "source",
+    ] {
+        assert!(!case["quantities"][0][key].is_null(), "missing {key}");
+    }
+    let md = std::fs::read_to_string(report.join("verification.md")).unwrap();
+    assert!(md.contains("| hertz_yield_onset | F_Y_table2 |"));
+}
+
+#[test]
+fn every_verification_scene_parses() {
+    for entry in std::fs::read_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/verification")).unwrap() {
+        let path = entry.unwrap().path();
+        if path.to_string_lossy().ends_with(".scene.json") {
+            tamp::scene::load(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        }
+    }
+}

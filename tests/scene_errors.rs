@@ -1,0 +1,121 @@
+//! Bad scenes exit with code 2 and a message naming the JSON path and the rule.
+
+use serde_json::{Value, json};
+use std::process::Command;
+
+fn base() -> Value {
+    serde_json::from_str(include_str!("scenes/base.json")).unwrap()
+}
+
+/// Run `tamp run` on `text`; return (exit code, stderr).
+fn run_text(text: &str) -> (i32, String) {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = dir.path().join("scene.json");
+    std::fs::write(&scene, text).unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_tamp"))
+        .args([
+            "run",
+            scene.to_str().unwrap(),
+            "--out",
+            dir.path().join("out").to_str().unwrap(),
+            "--quiet",
+        ])
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stderr).to_string(),
+    )
+}
+
+fn expect_input_error(scene: Value, needles: &[&str]) {
+    let (code, stderr) = run_text(&scene.to_string());
+    assert_eq!(code, 2, "stderr: {stderr}");
+    for n in needles {
+        assert!(stderr.contains(n), "expected '{n}' in: {stderr}");
+    }
+    assert!(!stderr.contains("panicked"), "{stderr}");
+}
+
+#[test]
+fn unknown_field_is_named() {
+    let mut s = base();
+    s["particles"][1]["colour"] = json!("red");
+    expect_input_error(s, &["particles[1]", "unknown field `colour`"]);
+}
+
+#[test]
+fn missing_field_is_named() {
+    let mut s = base();
+    s["particles"][1].as_object_mut().unwrap().remove("radius");
+    expect_input_error(s, &["particles[1]", "missing field `radius`"]);
+}
+
+#[test]
+fn negative_radius_is_named() {
+    let mut s = base();
+    s["particles"][1]["radius"] = json!(-1e-6);
+    expect_input_error(s, &["particles[1].radius: must be > 0", "-1e-6"]);
+}
+
+#[test]
+fn poisson_ratio_of_one_half_is_rejected() {
+    let mut s = base();
+    s["materials"][0]["poisson_ratio"] = json!(0.5);
+    expect_input_error(
+        s,
+        &["materials[0].poisson_ratio: must be > -1 and < 0.5, got 0.5"],
+    );
+}
+
+#[test]
+fn overlapping_initial_particles_are_rejected() {
+    let mut s = base();
+    s["particles"][1]["position"] = json!([0.0, 0.0, 0.0035]);
+    expect_input_error(
+        s,
+        &[
+            "particles[1].position: overlaps particles[0]",
+            "initial_overlap_tolerance",
+        ],
+    );
+}
+
+#[test]
+fn zero_length_wall_normal_is_rejected() {
+    let mut s = base();
+    s["walls"][0]["normal"] = json!([0, 0, 0]);
+    expect_input_error(s, &["walls[0].normal: must have non-zero finite length"]);
+}
+
+#[test]
+fn malformed_json_is_reported() {
+    let (code, stderr) = run_text("{\"materials\": [");
+    assert_eq!(code, 2, "{stderr}");
+    assert!(stderr.contains("malformed JSON"), "{stderr}");
+}
+
+#[test]
+fn unknown_material_and_law_are_named() {
+    let mut s = base();
+    s["particles"][0]["material"] = json!("steel");
+    expect_input_error(s, &["particles[0].material: unknown material 'steel'"]);
+    let mut s = base();
+    s["contact"]["normal"]["law"] = json!("hooke");
+    expect_input_error(s, &["contact.normal", "unknown variant `hooke`"]);
+}
+
+#[test]
+fn hertz_without_characteristic_velocity_or_fixed_step_is_rejected() {
+    let mut s = base();
+    s["time_step"] = json!({"alpha": 0.2});
+    expect_input_error(s, &["time_step.characteristic_velocity: is required"]);
+}
+
+#[test]
+fn several_errors_are_all_listed() {
+    let mut s = base();
+    s["particles"][0]["radius"] = json!(0);
+    s["materials"][0]["density"] = json!(-1);
+    expect_input_error(s, &["particles[0].radius", "materials[0].density"]);
+}
