@@ -4,7 +4,9 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
-use tamp::contact::{ContactGeometry, ContactLaw, damping::Damping, normal::NormalLaw, tangential::TangentialLaw};
+use tamp::contact::{
+    ContactGeometry, ContactLaw, damping::Damping, normal::NormalLaw, tangential::TangentialLaw,
+};
 use tamp::material::PairProperties;
 use tamp::particles::Vec3;
 
@@ -16,11 +18,20 @@ fn bench(c: &mut Criterion) {
         effective_mass: 1e-4,
         relative_velocity: Vec3::new(0.01, -0.02, 0.005),
     };
-    let pair = PairProperties { effective_modulus: Some(1e9), effective_shear_modulus: Some(4e8), friction: 0.5 };
+    let pair = PairProperties {
+        effective_modulus: Some(1e9),
+        effective_shear_modulus: Some(4e8),
+        friction: 0.5,
+    };
     let laws = [
         ("linear", NormalLaw::Linear { stiffness: 1e5 }, None, None),
         ("hertz", NormalLaw::Hertz, None, None),
-        ("hertz+critical_fraction", NormalLaw::Hertz, Some(Damping::CriticalFraction { xi: 0.3 }), None),
+        (
+            "hertz+critical_fraction",
+            NormalLaw::Hertz,
+            Some(Damping::CriticalFraction { xi: 0.3 }),
+            None,
+        ),
         (
             "hertz+critical_fraction+cundall_strack",
             NormalLaw::Hertz,
@@ -30,7 +41,11 @@ fn bench(c: &mut Criterion) {
     ];
     let mut group = c.benchmark_group("contact_evaluation");
     for (name, normal, damping, tangential) in laws {
-        let law = ContactLaw { normal, damping, tangential };
+        let law = ContactLaw {
+            normal,
+            damping,
+            tangential,
+        };
         let mut spring = Vec3::zeros();
         group.bench_function(name, |b| {
             b.iter(|| {

@@ -291,4 +291,3 @@ pub struct OutputSpec {
     #[serde(default)]
     pub vtk_every: u64,
 }
-
