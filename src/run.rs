@@ -25,6 +25,7 @@ pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool) -> Result<Summa
     let vtk_dir = out_dir.join("vtk");
     if scene.output.vtk_every > 0 {
         output::create_dir(&vtk_dir)?;
+        output::vtk::remove_frames(&vtk_dir)?;
     }
     let mut frames = 0usize;
     let mut write_frame = |sim: &crate::simulation::Simulation| -> Result<()> {

@@ -119,3 +119,33 @@ fn several_errors_are_all_listed() {
     s["materials"][0]["density"] = json!(-1);
     expect_input_error(s, &["particles[0].radius", "materials[0].density"]);
 }
+
+#[test]
+fn spin_without_rotation_is_rejected() {
+    let mut s = base();
+    s.as_object_mut().unwrap().remove("rotation");
+    s["particles"][0]["omega"] = json!([0, 0, 10]);
+    expect_input_error(s, &["particles[0].omega: needs \"rotation\""]);
+}
+
+#[test]
+fn uniform_radius_rejects_unknown_keys_and_narrow_regions_work() {
+    let mut s = base();
+    s["insert"] = json!([{"count": 1, "radius": {"min": 1e-3, "max": 1e-3, "typo": 1}, "material": "glass",
+                          "region": {"lower": [0.01, 0, 0], "upper": [0.012, 0.002, 0.002]}}]);
+    let (code, stderr) = run_text(&s.to_string());
+    assert_eq!(code, 2, "{stderr}");
+    // A region exactly one diameter wide holds exactly one sphere: no panic.
+    s["insert"][0]["radius"] = json!({"min": 1e-3, "max": 1e-3});
+    s["run"] = json!({"steps": 10});
+    let (code, stderr) = run_text(&s.to_string());
+    assert_eq!(code, 0, "{stderr}");
+}
+
+#[test]
+fn duplicate_wall_names_are_rejected() {
+    let mut s = base();
+    let w = s["walls"][0].clone();
+    s["walls"].as_array_mut().unwrap().push(w);
+    expect_input_error(s, &["walls[1].name: must be unique"]);
+}

@@ -53,3 +53,17 @@ pub fn to_ascii(sim: &Simulation) -> Result<String> {
         .map_err(|e| TampError::Other(format!("writing VTK frame: {e}")))?;
     Ok(s)
 }
+
+/// Delete `frame_*.vtk` left in `dir` by an earlier run, so a directory never mixes runs.
+pub fn remove_frames(dir: &std::path::Path) -> Result<()> {
+    let entries = std::fs::read_dir(dir)
+        .map_err(|e| TampError::io(format!("reading {}", dir.display()), e))?;
+    for entry in entries.flatten() {
+        let name = entry.file_name().to_string_lossy().to_string();
+        if name.starts_with("frame_") && name.ends_with(".vtk") {
+            std::fs::remove_file(entry.path())
+                .map_err(|e| TampError::io(format!("removing {name}"), e))?;
+        }
+    }
+    Ok(())
+}

@@ -266,7 +266,7 @@ fn insert_random(
     for placed in 0..ins.count {
         let r = match ins.radius {
             RadiusSpec::Fixed(r) => r,
-            RadiusSpec::Uniform { min, max } => {
+            RadiusSpec::Uniform(UniformRadius { min, max }) => {
                 if max > min {
                     rng.random_range(min..max)
                 } else {
@@ -286,7 +286,7 @@ fn insert_random(
                     ),
                 ));
             }
-            let x = Vec3::from_fn(|a, _| rng.random_range(lo[a] + r..hi[a] - r));
+            let x = Vec3::from_fn(|a, _| rng.random_range(lo[a] + r..=hi[a] - r));
             let free = particles
                 .position
                 .iter()

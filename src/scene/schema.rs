@@ -139,7 +139,15 @@ fn default_attempts() -> usize {
 #[serde(untagged)]
 pub enum RadiusSpec {
     Fixed(f64),
-    Uniform { min: f64, max: f64 },
+    Uniform(UniformRadius),
+}
+
+/// Radii uniformly distributed in [min, max], m.
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct UniformRadius {
+    pub min: f64,
+    pub max: f64,
 }
 
 #[derive(Clone, Debug, Deserialize, Serialize)]

@@ -129,6 +129,12 @@ pub fn validate(scene: &Scene) -> Result<()> {
                 format!("unknown material '{}'", p.material),
             );
         }
+        if p.omega.is_some() && scene.rotation.is_none() {
+            e.push(
+                format!("particles[{k}].omega"),
+                "needs \"rotation\" in the scene: without it spins never change",
+            );
+        }
         for (field, v) in [
             ("velocity", &p.velocity),
             ("omega", &p.omega),
@@ -152,7 +158,7 @@ pub fn validate(scene: &Scene) -> Result<()> {
                 e.positive(format!("{path}.radius"), r);
                 r
             }
-            RadiusSpec::Uniform { min, max } => {
+            RadiusSpec::Uniform(UniformRadius { min, max }) => {
                 e.positive(format!("{path}.radius.min"), min);
                 if !(max >= min && max.is_finite()) {
                     e.push(
@@ -176,6 +182,15 @@ pub fn validate(scene: &Scene) -> Result<()> {
         }
         e.non_negative(format!("{path}.speed"), ins.speed);
         e.non_negative(format!("{path}.spin"), ins.spin);
+        if ins.spin > 0.0 && scene.rotation.is_none() {
+            e.push(
+                format!("{path}.spin"),
+                "needs \"rotation\" in the scene: without it spins never change",
+            );
+        }
+        if ins.max_attempts == 0 {
+            e.push(format!("{path}.max_attempts"), "must be >= 1, got 0");
+        }
     }
     if scene.particles.is_empty() && scene.insert.iter().all(|i| i.count == 0) {
         e.push(
@@ -183,14 +198,22 @@ pub fn validate(scene: &Scene) -> Result<()> {
             "the scene must contain at least one particle (particles or insert)",
         );
     }
+    let mut wall_names = HashSet::new();
     for (k, w) in scene.walls.iter().enumerate() {
         let WallSpec::Plane {
+            name,
             point,
             normal,
             material,
             velocity,
-            ..
         } = w;
+        let name = name.clone().unwrap_or_else(|| format!("wall{k}"));
+        if !wall_names.insert(name.clone()) {
+            e.push(
+                format!("walls[{k}].name"),
+                format!("must be unique, '{name}' is repeated"),
+            );
+        }
         e.finite3(format!("walls[{k}].point"), point);
         let len = normal.iter().map(|c| c * c).sum::<f64>().sqrt();
         if !(len > 0.0 && len.is_finite()) {
@@ -246,6 +269,12 @@ pub fn validate(scene: &Scene) -> Result<()> {
         "stability.initial_overlap_tolerance",
         scene.stability.initial_overlap_tolerance,
     );
+    if scene.stability.check_every == 0 {
+        e.push(
+            "stability.check_every",
+            "must be >= 1, got 0 (it would switch the energy check off)",
+        );
+    }
     for (k, c) in scene.output.series.iter().enumerate() {
         if !SERIES_COLUMNS.contains(&c.as_str()) {
             e.push(

@@ -27,11 +27,6 @@ impl NormalLaw {
         }
     }
 
-    /// Whether the law needs E and ν of every material (checked at build time).
-    pub fn needs_elastic_constants(&self) -> bool {
-        matches!(self, NormalLaw::Hertz)
-    }
-
     #[inline]
     pub fn response(
         &self,
