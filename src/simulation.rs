@@ -10,7 +10,7 @@
 //! walls, driven particles). Dissipation D = E_mech(0) + W − E_mech ≥ 0 for every law
 //! tamp has; a clearly negative D means the integration is adding energy (unstable).
 
-use crate::contact::{ContactGeometry, ContactLaw};
+use crate::contact::{ContactGeometry, ContactLaw, normal::NormalLaw};
 use crate::detect::NeighborList;
 use crate::error::{Result, TampError};
 use crate::integrate;
@@ -18,6 +18,17 @@ use crate::material::{Material, PairTable, effective_mass, effective_radius};
 use crate::particles::{Motion, Particles, Vec3};
 use crate::timestep::critical_time_step;
 use crate::walls::PlaneWall;
+
+/// Effective mass of a pair; a prescribed particle moves whatever the force, so it
+/// counts as infinitely heavy, like a wall.
+#[inline]
+fn contact_mass(p: &Particles, i: usize, j: usize) -> f64 {
+    match (p.motion[i], p.motion[j]) {
+        (Motion::Free, Motion::Prescribed(_)) => p.mass[i],
+        (Motion::Prescribed(_), Motion::Free) => p.mass[j],
+        _ => effective_mass(p.mass[i], p.mass[j]),
+    }
+}
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StabilityLimits {
@@ -108,7 +119,11 @@ impl Simulation {
             initial_mechanical_energy: 0.0,
             max_overlap_ratio: 0.0,
         };
+        // Forces at t = 0 with a zero step, so no tangential spring is advanced before
+        // the first real step.
+        sim.dt = 0.0;
         sim.compute_forces()?;
+        sim.dt = dt;
         sim.external_power = sim.prescribed_power();
         sim.initial_mechanical_energy = sim.mechanical_energy();
         Ok(sim)
@@ -235,7 +250,7 @@ impl Simulation {
                 normal,
                 overlap,
                 effective_radius: effective_radius(p.radius[i], p.radius[j]),
-                effective_mass: effective_mass(p.mass[i], p.mass[j]),
+                effective_mass: contact_mass(p, i, j),
                 relative_velocity,
             };
             let pair = self.pair_table.get(p.material[i], p.material[j]);
@@ -439,9 +454,15 @@ impl Simulation {
         p.radius[i] + p.radius[j] - (p.position[i] - p.position[j]).norm()
     }
 
-    /// Critical time step estimate, Rojek eqs 26–29 without the safety factor.
-    /// `characteristic_velocity` sets the impact stiffness of nonlinear laws; `None`
-    /// when a nonlinear law has neither that velocity nor any current contact.
+    /// Critical time step estimate, Rojek eqs 26–29 without the safety factor α.
+    ///
+    /// k_i is the largest of: the sum of the particle's current normal contact
+    /// stiffnesses; the impact stiffness against a much larger body of any material
+    /// (R* = R_i, m* = m_i: walls, and an upper bound on any finite partner); and,
+    /// with friction, the tangential spring k_s — times (1 + m R²/I) when rotation is
+    /// on, because the spring then also drives the spin of the contact point.
+    /// Returns `None` when a nonlinear law has neither a characteristic velocity nor
+    /// any current contact to take a stiffness from.
     pub fn critical_time_step(&self, characteristic_velocity: Option<f64>) -> Option<f64> {
         let p = &self.particles;
         let mut contact_stiffness = vec![0.0; p.len()];
@@ -450,48 +471,43 @@ impl Simulation {
             let overlap = self.overlap(i, j);
             if overlap > 0.0 {
                 let pair = self.pair_table.get(p.material[i], p.material[j]);
-                let k = self
-                    .law
-                    .normal
-                    .response(overlap, effective_radius(p.radius[i], p.radius[j]), pair)
-                    .stiffness;
+                let r_eff = effective_radius(p.radius[i], p.radius[j]);
+                let k = self.law.normal.response(overlap, r_eff, pair).stiffness;
                 contact_stiffness[i] += k;
                 contact_stiffness[j] += k;
             }
         }
         let mut best: Option<f64> = None;
         for (i, &in_contact) in contact_stiffness.iter().enumerate() {
-            let mut k = in_contact;
-            let twin = self.pair_table.get(p.material[i], p.material[i]);
-            let mut partners = vec![(0.5 * p.mass[i], 0.5 * p.radius[i], twin)];
-            partners.extend(self.walls.iter().map(|w| {
-                (
-                    p.mass[i],
-                    p.radius[i],
-                    self.pair_table.get(p.material[i], w.material),
-                )
-            }));
-            for (m_eff, r_eff, pair) in partners {
-                let impact = match (&self.law.normal, characteristic_velocity) {
-                    (crate::contact::normal::NormalLaw::Linear { stiffness }, _) => {
-                        Some(*stiffness)
-                    }
-                    (law, Some(v)) => Some(law.impact_stiffness(m_eff, v, r_eff, pair)),
-                    (_, None) => None,
+            let impact = match (&self.law.normal, characteristic_velocity) {
+                (NormalLaw::Linear { stiffness }, _) => *stiffness,
+                (law, Some(v)) => (0..self.materials.len())
+                    .map(|b| {
+                        let pair = self.pair_table.get(p.material[i], b);
+                        law.impact_stiffness(p.mass[i], v, p.radius[i], pair)
+                    })
+                    .fold(0.0, f64::max),
+                (_, None) => 0.0,
+            };
+            let mut k = in_contact.max(impact);
+            if k <= 0.0 {
+                continue;
+            }
+            if let Some(t) = &self.law.tangential {
+                let lever = if self.rotation {
+                    1.0 + p.mass[i] * p.radius[i].powi(2) / p.inertia[i]
+                } else {
+                    1.0
                 };
-                if let Some(ki) = impact {
-                    k = k.max(ki);
-                }
+                k = k.max(t.stiffness() * lever);
             }
-            if k > 0.0 {
-                let xi = self
-                    .law
-                    .damping
-                    .map(|d| d.ratio(0.5 * p.mass[i], k))
-                    .unwrap_or(0.0);
-                let dt = critical_time_step(k, p.mass[i], xi);
-                best = Some(best.map_or(dt, |b: f64| b.min(dt)));
-            }
+            let xi = self
+                .law
+                .damping
+                .map(|d| d.ratio(p.mass[i], k))
+                .unwrap_or(0.0);
+            let dt = critical_time_step(k, p.mass[i], xi);
+            best = Some(best.map_or(dt, |b: f64| b.min(dt)));
         }
         best
     }

@@ -149,3 +149,28 @@ fn duplicate_wall_names_are_rejected() {
     s["walls"].as_array_mut().unwrap().push(w);
     expect_input_error(s, &["walls[1].name: must be unique"]);
 }
+
+#[test]
+fn particle_inside_a_wall_is_rejected() {
+    let mut s = base();
+    s["particles"][0]["position"] = json!([0.0, 0.0, 0.0005]);
+    expect_input_error(s, &["particles[0].position: penetrates walls[0] ('floor')"]);
+}
+
+#[test]
+fn prescribed_particle_cannot_also_have_velocity_or_spin() {
+    let mut s = base();
+    s["particles"][0]["prescribed_velocity"] = json!([0, 0, 0]);
+    s["particles"][0]["omega"] = json!([0, 0, 1]);
+    expect_input_error(s, &["particles[0].prescribed_velocity: cannot be combined"]);
+}
+
+#[test]
+fn duplicate_friction_pairs_are_rejected() {
+    let mut s = base();
+    s["contact"]["tangential"]["friction_pairs"] = json!([{"materials": ["glass", "glass"], "friction": 0.1}, {"materials": ["glass", "glass"], "friction": 0.2}]);
+    expect_input_error(
+        s,
+        &["contact.tangential.friction_pairs[1].materials: the pair"],
+    );
+}

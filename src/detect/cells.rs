@@ -24,7 +24,7 @@ pub fn candidate_pairs(position: &[Vec3], radius: &[f64], margin: f64) -> Vec<(u
     let extent = hi - lo;
     let mut cell = (2.0 * r_max + margin).max(f64::MIN_POSITIVE);
     let dims = |cell: f64| -> [usize; 3] {
-        [0, 1, 2].map(|k| ((extent[k] / cell).floor() as usize + 1).max(1))
+        [0, 1, 2].map(|k| ((extent[k] / cell).floor() as usize).saturating_add(1))
     };
     let mut d = dims(cell);
     while d[0].saturating_mul(d[1]).saturating_mul(d[2]) > MAX_CELLS {

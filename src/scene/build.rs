@@ -102,39 +102,6 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
             .map_or(default_friction, |o| o.2)
     });
 
-    let inertia_scale = scene.rotation.as_ref().map_or(1.0, |r| r.inertia_scale);
-    let mut particles = Particles::default();
-    for p in &scene.particles {
-        let m = material_id(&p.material);
-        let motion = p
-            .prescribed_velocity
-            .map_or(Motion::Free, |v| Motion::Prescribed(v3(&v)));
-        particles.push(
-            v3(&p.position),
-            p.velocity.map_or(Vec3::zeros(), |v| v3(&v)),
-            p.omega.map_or(Vec3::zeros(), |v| v3(&v)),
-            p.radius,
-            materials[m].density,
-            m,
-            inertia_scale,
-            motion,
-        );
-    }
-    check_initial_overlaps(&particles, scene.stability.initial_overlap_tolerance)?;
-
-    let mut rng = ChaCha8Rng::seed_from_u64(scene.seed);
-    for (k, ins) in scene.insert.iter().enumerate() {
-        insert_random(
-            &mut particles,
-            ins,
-            k,
-            material_id(&ins.material),
-            &materials,
-            inertia_scale,
-            &mut rng,
-        )?;
-    }
-
     let walls: Vec<PlaneWall> = scene
         .walls
         .iter()
@@ -156,6 +123,44 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
             }
         })
         .collect();
+
+    let inertia_scale = scene.rotation.as_ref().map_or(1.0, |r| r.inertia_scale);
+    let mut particles = Particles::default();
+    for p in &scene.particles {
+        let m = material_id(&p.material);
+        let motion = p
+            .prescribed_velocity
+            .map_or(Motion::Free, |v| Motion::Prescribed(v3(&v)));
+        particles.push(
+            v3(&p.position),
+            p.velocity.map_or(Vec3::zeros(), |v| v3(&v)),
+            p.omega.map_or(Vec3::zeros(), |v| v3(&v)),
+            p.radius,
+            materials[m].density,
+            m,
+            inertia_scale,
+            motion,
+        );
+    }
+    check_initial_overlaps(
+        &particles,
+        &walls,
+        scene.stability.initial_overlap_tolerance,
+    )?;
+
+    let mut rng = ChaCha8Rng::seed_from_u64(scene.seed);
+    for (k, ins) in scene.insert.iter().enumerate() {
+        insert_random(
+            &mut particles,
+            &walls,
+            ins,
+            k,
+            material_id(&ins.material),
+            &materials,
+            inertia_scale,
+            &mut rng,
+        )?;
+    }
 
     let law = contact_law(&scene.contact);
     let r_min = particles
@@ -227,7 +232,7 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
     })
 }
 
-fn check_initial_overlaps(p: &Particles, tolerance: f64) -> Result<()> {
+fn check_initial_overlaps(p: &Particles, walls: &[PlaneWall], tolerance: f64) -> Result<()> {
     let pairs = crate::detect::cells::candidate_pairs(&p.position, &p.radius, 0.0);
     let mut errors = Vec::new();
     for (i, j) in pairs {
@@ -244,6 +249,20 @@ fn check_initial_overlaps(p: &Particles, tolerance: f64) -> Result<()> {
             ));
         }
     }
+    for (k, wall) in walls.iter().enumerate() {
+        for i in 0..p.len() {
+            let overlap = p.radius[i] - wall.distance(&p.position[i]);
+            if overlap / p.radius[i] > tolerance {
+                errors.push(TampError::input(
+                    format!("particles[{i}].position"),
+                    format!(
+                        "penetrates walls[{k}] ('{}') by {overlap:.4e} m; stability.initial_overlap_tolerance allows {tolerance:e} of the radius",
+                        wall.name
+                    ),
+                ));
+            }
+        }
+    }
     match errors.len() {
         0 => Ok(()),
         1 => Err(errors.pop().unwrap()),
@@ -253,8 +272,10 @@ fn check_initial_overlaps(p: &Particles, tolerance: f64) -> Result<()> {
 
 /// Random sequential insertion: each new sphere is placed uniformly in the region
 /// and kept if it overlaps no earlier sphere (brute-force check per trial).
+#[allow(clippy::too_many_arguments)]
 fn insert_random(
     particles: &mut Particles,
+    walls: &[PlaneWall],
     ins: &InsertSpec,
     index: usize,
     material: usize,
@@ -286,12 +307,20 @@ fn insert_random(
                     ),
                 ));
             }
-            let x = Vec3::from_fn(|a, _| rng.random_range(lo[a] + r..=hi[a] - r));
+            let x = Vec3::from_fn(|a, _| {
+                let (from, to) = (lo[a] + r, hi[a] - r);
+                if from < to {
+                    rng.random_range(from..=to)
+                } else {
+                    0.5 * (lo[a] + hi[a])
+                }
+            });
             let free = particles
                 .position
                 .iter()
                 .zip(&particles.radius)
-                .all(|(q, rq)| (x - q).norm() >= r + rq);
+                .all(|(q, rq)| (x - q).norm() >= r + rq)
+                && walls.iter().all(|w| w.distance(&x) >= r);
             if free {
                 break x;
             }

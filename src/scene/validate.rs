@@ -105,6 +105,21 @@ pub fn validate(scene: &Scene) -> Result<()> {
         e.positive("contact.tangential.stiffness", *stiffness);
         e.non_negative("contact.tangential.friction", *friction);
         for (k, fp) in friction_pairs.iter().enumerate() {
+            let key = {
+                let mut key = fp.materials.clone();
+                key.sort();
+                key
+            };
+            if friction_pairs[..k].iter().any(|other| {
+                let mut o = other.materials.clone();
+                o.sort();
+                o == key
+            }) {
+                e.push(
+                    format!("contact.tangential.friction_pairs[{k}].materials"),
+                    format!("the pair {key:?} is listed twice"),
+                );
+            }
             e.non_negative(
                 format!("contact.tangential.friction_pairs[{k}].friction"),
                 fp.friction,
@@ -127,6 +142,12 @@ pub fn validate(scene: &Scene) -> Result<()> {
             e.push(
                 format!("particles[{k}].material"),
                 format!("unknown material '{}'", p.material),
+            );
+        }
+        if p.prescribed_velocity.is_some() && (p.velocity.is_some() || p.omega.is_some()) {
+            e.push(
+                format!("particles[{k}].prescribed_velocity"),
+                "cannot be combined with velocity or omega: a prescribed particle moves at exactly this velocity and does not spin",
             );
         }
         if p.omega.is_some() && scene.rotation.is_none() {

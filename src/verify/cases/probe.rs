@@ -1,4 +1,5 @@
-//! Probes shared by the cases: measurements that read a simulation, never advance it.
+//! Probes shared by the cases. `binary_collision` steps the simulation it is given;
+//! the measurements themselves never change the state.
 
 use crate::error::{Result, TampError};
 use crate::simulation::Simulation;
