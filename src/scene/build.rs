@@ -108,14 +108,14 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
         .enumerate()
         .map(|(k, w)| {
             let WallSpec::Plane {
-                name,
                 point,
                 normal,
                 material,
                 velocity,
+                ..
             } = w;
             PlaneWall {
-                name: name.clone().unwrap_or_else(|| format!("wall{k}")),
+                name: w.name(k),
                 point: v3(point),
                 normal: v3(normal).normalize(),
                 material: material_id(material),

@@ -174,6 +174,14 @@ pub enum WallSpec {
     },
 }
 
+impl WallSpec {
+    /// The wall's name, `wall<k>` when the scene gives none (`k` is its index).
+    pub fn name(&self, k: usize) -> String {
+        let WallSpec::Plane { name, .. } = self;
+        name.clone().unwrap_or_else(|| format!("wall{k}"))
+    }
+}
+
 #[derive(Clone, Debug, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct RotationSpec {

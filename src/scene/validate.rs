@@ -222,13 +222,13 @@ pub fn validate(scene: &Scene) -> Result<()> {
     let mut wall_names = HashSet::new();
     for (k, w) in scene.walls.iter().enumerate() {
         let WallSpec::Plane {
-            name,
             point,
             normal,
             material,
             velocity,
+            ..
         } = w;
-        let name = name.clone().unwrap_or_else(|| format!("wall{k}"));
+        let name = w.name(k);
         if !wall_names.insert(name.clone()) {
             e.push(
                 format!("walls[{k}].name"),
