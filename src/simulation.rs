@@ -357,36 +357,52 @@ impl Simulation {
         driven + walls
     }
 
+    /// Particle pairs touching now: (neighbour-list index, i, j, overlap).
+    fn touching_pairs(&self) -> impl Iterator<Item = (usize, usize, usize, f64)> + '_ {
+        self.neighbors
+            .pairs
+            .iter()
+            .enumerate()
+            .filter_map(|(k, &(i, j))| {
+                let (i, j) = (i as usize, j as usize);
+                let overlap = self.overlap(i, j);
+                (overlap > 0.0).then_some((k, i, j, overlap))
+            })
+    }
+
+    /// Particle–wall contacts now: (wall, particle, overlap).
+    fn touching_walls(&self) -> impl Iterator<Item = (usize, usize, f64)> + '_ {
+        let p = &self.particles;
+        self.walls.iter().enumerate().flat_map(move |(w, wall)| {
+            (0..p.len()).filter_map(move |i| {
+                let overlap = p.radius[i] - wall.distance(&p.position[i]);
+                (overlap > 0.0).then_some((w, i, overlap))
+            })
+        })
+    }
+
     /// Energy stored in all contact springs (pairs and walls), J.
     pub fn stored_energy(&self) -> f64 {
         let p = &self.particles;
         let hist = self.law.has_history();
-        let mut energy = 0.0;
-        for (k, &(i, j)) in self.neighbors.pairs.iter().enumerate() {
-            let (i, j) = (i as usize, j as usize);
-            let overlap = p.radius[i] + p.radius[j] - (p.position[i] - p.position[j]).norm();
-            if overlap > 0.0 {
+        let pairs: f64 = self
+            .touching_pairs()
+            .map(|(k, i, j, overlap)| {
                 let pair = self.pair_table.get(p.material[i], p.material[j]);
                 let spring = hist.then(|| &self.neighbors.history[k]);
-                energy += self.law.stored_energy(
-                    overlap,
-                    effective_radius(p.radius[i], p.radius[j]),
-                    pair,
-                    spring,
-                );
-            }
-        }
-        for (w, wall) in self.walls.iter().enumerate() {
-            for i in 0..p.len() {
-                let overlap = p.radius[i] - wall.distance(&p.position[i]);
-                if overlap > 0.0 {
-                    let pair = self.pair_table.get(p.material[i], wall.material);
-                    let spring = hist.then(|| &self.wall_history[w][i]);
-                    energy += self.law.stored_energy(overlap, p.radius[i], pair, spring);
-                }
-            }
-        }
-        energy
+                let r_eff = effective_radius(p.radius[i], p.radius[j]);
+                self.law.stored_energy(overlap, r_eff, pair, spring)
+            })
+            .sum();
+        let walls: f64 = self
+            .touching_walls()
+            .map(|(w, i, overlap)| {
+                let pair = self.pair_table.get(p.material[i], self.walls[w].material);
+                let spring = hist.then(|| &self.wall_history[w][i]);
+                self.law.stored_energy(overlap, p.radius[i], pair, spring)
+            })
+            .sum();
+        pairs + walls
     }
 
     pub fn kinetic_energy(&self) -> f64 {
@@ -426,26 +442,7 @@ impl Simulation {
 
     /// Number of particle–particle and particle–wall contacts at the current positions.
     pub fn contact_count(&self) -> usize {
-        let p = &self.particles;
-        let pairs = self
-            .neighbors
-            .pairs
-            .iter()
-            .filter(|&&(i, j)| {
-                let (i, j) = (i as usize, j as usize);
-                (p.position[i] - p.position[j]).norm() < p.radius[i] + p.radius[j]
-            })
-            .count();
-        let walls: usize = self
-            .walls
-            .iter()
-            .map(|w| {
-                (0..p.len())
-                    .filter(|&i| w.distance(&p.position[i]) < p.radius[i])
-                    .count()
-            })
-            .sum();
-        pairs + walls
+        self.touching_pairs().count() + self.touching_walls().count()
     }
 
     /// Overlap of two particles (negative when apart), m.
@@ -466,16 +463,12 @@ impl Simulation {
     pub fn critical_time_step(&self, characteristic_velocity: Option<f64>) -> Option<f64> {
         let p = &self.particles;
         let mut contact_stiffness = vec![0.0; p.len()];
-        for &(i, j) in &self.neighbors.pairs {
-            let (i, j) = (i as usize, j as usize);
-            let overlap = self.overlap(i, j);
-            if overlap > 0.0 {
-                let pair = self.pair_table.get(p.material[i], p.material[j]);
-                let r_eff = effective_radius(p.radius[i], p.radius[j]);
-                let k = self.law.normal.response(overlap, r_eff, pair).stiffness;
-                contact_stiffness[i] += k;
-                contact_stiffness[j] += k;
-            }
+        for (_, i, j, overlap) in self.touching_pairs() {
+            let pair = self.pair_table.get(p.material[i], p.material[j]);
+            let r_eff = effective_radius(p.radius[i], p.radius[j]);
+            let k = self.law.normal.response(overlap, r_eff, pair).stiffness;
+            contact_stiffness[i] += k;
+            contact_stiffness[j] += k;
         }
         let mut best: Option<f64> = None;
         for (i, &in_contact) in contact_stiffness.iter().enumerate() {

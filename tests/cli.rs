@@ -15,12 +15,18 @@ fn base() -> Value {
     serde_json::from_str(include_str!("scenes/base.json")).unwrap()
 }
 
+/// Write `scene` into a fresh temporary directory; return it, the scene path and the output path.
+fn scene_in_tempdir(scene: &Value) -> (tempfile::TempDir, std::path::PathBuf, std::path::PathBuf) {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("scene.json");
+    std::fs::write(&path, scene.to_string()).unwrap();
+    let out = dir.path().join("out");
+    (dir, path, out)
+}
+
 #[test]
 fn run_writes_summary_series_and_vtk_with_provenance() {
-    let dir = tempfile::tempdir().unwrap();
-    let scene = dir.path().join("scene.json");
-    std::fs::write(&scene, base().to_string()).unwrap();
-    let out = dir.path().join("out");
+    let (_dir, scene, out) = scene_in_tempdir(&base());
     let o = tamp(&[
         "run",
         scene.to_str().unwrap(),
@@ -84,15 +90,12 @@ fn run_writes_summary_series_and_vtk_with_provenance() {
 
 #[test]
 fn ten_times_the_critical_step_stops_with_exit_3_and_a_diagnostic() {
-    let dir = tempfile::tempdir().unwrap();
     let mut s = base();
     s["contact"]["damping"] = Value::Null;
     s["particles"][0]["velocity"] = json!([0, 0, -1.0]);
     // Δt_cr for this scene is about 1.1e-5 s at 1 m/s (α = 1); ten times that:
     s["time_step"] = json!({"fixed": 1.1e-4, "characteristic_velocity": 1.0, "alpha": 1.0});
-    let scene = dir.path().join("scene.json");
-    std::fs::write(&scene, s.to_string()).unwrap();
-    let out = dir.path().join("out");
+    let (_dir, scene, out) = scene_in_tempdir(&s);
     let o = tamp(&[
         "run",
         scene.to_str().unwrap(),

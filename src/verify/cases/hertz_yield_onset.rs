@@ -6,7 +6,7 @@
 
 use crate::contact::normal::hertz::hertz_overlap_at_force;
 use crate::error::{Result, TampError};
-use crate::material::{Material, effective_modulus, hertz_yield_onset_force};
+use crate::material::hertz_yield_onset_force;
 use crate::scene;
 use crate::verify::{CaseContext, Measured};
 
@@ -20,23 +20,17 @@ const H_Y_PYTHON: f64 = 1.975_144_465_328_611e-9;
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let scene = ctx.scene()?;
     let m = &scene.materials[0];
-    let material = Material {
-        name: m.name.clone(),
-        density: m.density,
-        youngs_modulus: m.youngs_modulus,
-        poisson_ratio: m.poisson_ratio,
-    };
     let (e, nu) = (
         m.youngs_modulus.unwrap_or(0.0),
         m.poisson_ratio.unwrap_or(0.0),
     );
     let radius = scene.particles[0].radius;
     let f_y = hertz_yield_onset_force(radius, e, nu, YIELD_STRESS);
-    let e_eff = effective_modulus(&material, &material).unwrap_or(0.0);
-    let h_y = hertz_overlap_at_force(f_y, 0.5 * radius, e_eff);
 
     // Displacement-driven compression: both centres prescribed, read F(h) at h_Y.
     let mut sim = scene::build(&scene)?.sim;
+    let e_eff = sim.pair_table.get(0, 0).effective_modulus.unwrap_or(0.0);
+    let h_y = hertz_overlap_at_force(f_y, 0.5 * radius, e_eff);
     let mut prev = (sim.overlap(0, 1), sim.particles.force[0].norm());
     let mut f_at_h_y = None;
     for _ in 0..1_000_000 {
