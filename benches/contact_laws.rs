@@ -4,6 +4,7 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
+use tamp::contact::history::ContactHistory;
 use tamp::contact::{
     ContactGeometry, ContactLaw, damping::Damping, normal::NormalLaw, tangential::TangentialLaw,
 };
@@ -21,6 +22,7 @@ fn bench(c: &mut Criterion) {
     let pair = PairProperties {
         effective_modulus: Some(1e9),
         effective_shear_modulus: Some(4e8),
+        hollomon: None,
         friction: 0.5,
     };
     let laws = [
@@ -45,8 +47,9 @@ fn bench(c: &mut Criterion) {
             normal,
             damping,
             tangential,
+            cohesion: None,
         };
-        let mut spring = Vec3::zeros();
+        let mut spring = ContactHistory::default();
         group.bench_function(name, |b| {
             b.iter(|| {
                 let s = law.has_history().then_some(&mut spring);

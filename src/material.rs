@@ -6,6 +6,8 @@
 //!   1/G* = (2 − ν_i)/G_i + (2 − ν_j)/G_j
 //! Effective radius (Rojek eq 4): 1/R* = 1/R_i + 1/R_j; a plane wall has R = ∞.
 //! Effective mass: m* = m_i m_j / (m_i + m_j); a wall or an immovable body has m = ∞.
+//! Effective Hollomon constant (Rojek eq 18): (σ0*)^{−1/m} = (σ0_i)^{−1/m} + (σ0_j)^{−1/m};
+//! a partner without Hollomon constants (a rigid wall) does not yield, so σ0* = σ0_i.
 
 #[derive(Clone, Debug, PartialEq)]
 pub struct Material {
@@ -13,6 +15,51 @@ pub struct Material {
     pub density: f64,
     pub youngs_modulus: Option<f64>,
     pub poisson_ratio: Option<f64>,
+    /// Rigid-plastic hardening curve σ = σ0 ε^m (Rojek eq 15); needed by Storåkers.
+    pub hollomon: Option<Hollomon>,
+}
+
+/// Hollomon stress–strain curve σ = σ0 ε^m (Rojek 2016 eq 15).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Hollomon {
+    /// σ0, Pa.
+    pub strength: f64,
+    /// m, the hardening exponent (0 = perfectly plastic).
+    pub exponent: f64,
+}
+
+impl Hollomon {
+    /// The curve through the elastic yield point (σ_Y/E, σ_Y), as Rojek §4 chooses
+    /// its constants: σ0 = σ_Y (σ_Y/E)^{−m} = σ_Y^{1−m} E^m.
+    pub fn through_yield_point(yield_stress: f64, youngs_modulus: f64, exponent: f64) -> Self {
+        Hollomon {
+            strength: yield_stress * (youngs_modulus / yield_stress).powf(exponent),
+            exponent,
+        }
+    }
+}
+
+/// Rojek eq 18 for two materials with the same exponent m, evaluated in logarithms so
+/// that small m does not overflow: ln σ0* = min ln σ0 − m ln(1 + e^{−|Δ ln σ0|/m}).
+/// At m = 0 this is the limit, the smaller σ0.
+pub fn effective_hollomon(a: Option<Hollomon>, b: Option<Hollomon>) -> Option<Hollomon> {
+    match (a, b) {
+        (Some(a), Some(b)) => {
+            let m = a.exponent;
+            let (la, lb) = (a.strength.ln(), b.strength.ln());
+            let tail = if m > 0.0 {
+                m * (-(la - lb).abs() / m).exp().ln_1p()
+            } else {
+                0.0
+            };
+            Some(Hollomon {
+                strength: (la.min(lb) - tail).exp(),
+                exponent: m,
+            })
+        }
+        (Some(h), None) | (None, Some(h)) => Some(h),
+        (None, None) => None,
+    }
 }
 
 impl Material {
@@ -27,6 +74,8 @@ pub struct PairProperties {
     /// E* (Pa); `None` when either material has no elastic constants (linear laws need none).
     pub effective_modulus: Option<f64>,
     pub effective_shear_modulus: Option<f64>,
+    /// σ0* and m (Rojek eq 18); `None` unless a material of the pair has Hollomon constants.
+    pub hollomon: Option<Hollomon>,
     /// Coulomb friction coefficient μ of this pair.
     pub friction: f64,
 }
@@ -65,6 +114,7 @@ impl PairTable {
                 entries.push(PairProperties {
                     effective_modulus: effective_modulus(&materials[a], &materials[b]),
                     effective_shear_modulus: effective_shear_modulus(&materials[a], &materials[b]),
+                    hollomon: effective_hollomon(materials[a].hollomon, materials[b].hollomon),
                     friction: friction(a, b),
                 });
             }
@@ -106,6 +156,7 @@ mod tests {
             density: 7800.0,
             youngs_modulus: Some(2e11),
             poisson_ratio: Some(0.3),
+            hollomon: None,
         }
     }
 
@@ -120,6 +171,46 @@ mod tests {
         let g = 2e11 / 2.6;
         let gs = effective_shear_modulus(&steel(), &steel()).unwrap();
         approx::assert_relative_eq!(gs, g / (2.0 * 1.7), max_relative = 1e-14);
+    }
+
+    #[test]
+    fn equal_hollomon_materials_mix_to_two_to_minus_m() {
+        for m in [0.0, 0.05, 0.1, 0.2] {
+            let h = Hollomon {
+                strength: 1e9,
+                exponent: m,
+            };
+            let mixed = effective_hollomon(Some(h), Some(h)).unwrap();
+            approx::assert_relative_eq!(mixed.strength, 1e9 * 2f64.powf(-m), max_relative = 1e-13);
+        }
+    }
+
+    #[test]
+    fn unequal_hollomon_mixing_matches_eq18_directly() {
+        let (a, b) = (
+            Hollomon {
+                strength: 8e8,
+                exponent: 0.2,
+            },
+            Hollomon {
+                strength: 2.4e9,
+                exponent: 0.2,
+            },
+        );
+        let direct = (8e8f64.powf(-5.0) + 2.4e9f64.powf(-5.0)).powf(-0.2);
+        let mixed = effective_hollomon(Some(a), Some(b)).unwrap();
+        approx::assert_relative_eq!(mixed.strength, direct, max_relative = 1e-13);
+        assert_eq!(effective_hollomon(Some(a), None), Some(a));
+    }
+
+    #[test]
+    fn hollomon_through_yield_point_recovers_sigma_y_at_yield_strain() {
+        let h = Hollomon::through_yield_point(800e6, 183e9, 0.1);
+        approx::assert_relative_eq!(
+            h.strength * (800e6f64 / 183e9).powf(0.1),
+            800e6,
+            max_relative = 1e-14
+        );
     }
 
     #[test]

@@ -10,7 +10,10 @@
 //! walls, driven particles). Dissipation D = E_mech(0) + W − E_mech ≥ 0 for every law
 //! tamp has; a clearly negative D means the integration is adding energy (unstable).
 
-use crate::contact::{ContactGeometry, ContactLaw, normal::NormalLaw};
+use crate::contact::{
+    ContactGeometry, ContactLaw, history::ContactHistory, normal::NormalLaw,
+    tangential::TangentialLaw,
+};
 use crate::detect::NeighborList;
 use crate::error::{Result, TampError};
 use crate::integrate;
@@ -63,8 +66,8 @@ pub struct Simulation {
     pub step: u64,
     pub time: f64,
     pub neighbors: NeighborList,
-    /// Tangential springs of particle–wall contacts, `[wall][particle]`; empty without friction.
-    wall_history: Vec<Vec<Vec3>>,
+    /// History of particle–wall contacts, `[wall][particle]`; empty when the law keeps none.
+    wall_history: Vec<Vec<ContactHistory>>,
     /// Force the particles exert on each wall at the current step, N.
     pub wall_force: Vec<Vec3>,
     pub limits: StabilityLimits,
@@ -93,7 +96,7 @@ impl Simulation {
     ) -> Result<Self> {
         let n = particles.len();
         let wall_history = if law.has_history() {
-            vec![vec![Vec3::zeros(); n]; walls.len()]
+            vec![vec![ContactHistory::default(); n]; walls.len()]
         } else {
             Vec::new()
         };
@@ -192,8 +195,8 @@ impl Simulation {
     }
 
     /// Contact, wall and body forces at the current positions. `ROT`: spins enter
-    /// contact velocities and torques are accumulated. `HIST`: contacts carry a
-    /// tangential spring.
+    /// contact velocities and torques are accumulated. `HIST`: contacts carry
+    /// history (a tangential state or the normal law's δ_max).
     fn compute_forces_with<const ROT: bool, const HIST: bool>(&mut self) -> Result<()> {
         let p = &mut self.particles;
         let n = p.len();
@@ -211,15 +214,17 @@ impl Simulation {
         let dt = self.dt;
         let max_fraction = self.limits.max_overlap_fraction;
         let mut worst = self.max_overlap_ratio;
+        let torques = ROT && self.law.tangential.is_some();
+        let law_reach = self.law.reach();
 
         for (k, &(i, j)) in self.neighbors.pairs.iter().enumerate() {
             let (i, j) = (i as usize, j as usize);
             let d = p.position[i] - p.position[j];
             let reach = p.radius[i] + p.radius[j];
             let dist2 = d.norm_squared();
-            if dist2 >= reach * reach {
+            if dist2 >= (reach + law_reach).powi(2) {
                 if HIST {
-                    self.neighbors.history[k] = Vec3::zeros();
+                    self.neighbors.history[k] = ContactHistory::default();
                 }
                 continue;
             }
@@ -254,12 +259,12 @@ impl Simulation {
                 relative_velocity,
             };
             let pair = self.pair_table.get(p.material[i], p.material[j]);
-            let spring = if HIST {
+            let history = if HIST {
                 Some(&mut self.neighbors.history[k])
             } else {
                 None
             };
-            let f = self.law.evaluate(&g, pair, spring, dt);
+            let f = self.law.evaluate(&g, pair, history, dt);
             let total = normal * f.normal + f.tangential;
             if !total.iter().all(|c| c.is_finite()) {
                 return Err(TampError::Unstable {
@@ -272,7 +277,7 @@ impl Simulation {
             }
             p.force[i] += total;
             p.force[j] -= total;
-            if ROT && HIST {
+            if torques {
                 let t = -normal.cross(&f.tangential);
                 p.torque[i] += t * lever_i;
                 p.torque[j] += t * lever_j;
@@ -283,9 +288,9 @@ impl Simulation {
             let mut on_wall = Vec3::zeros();
             for i in 0..n {
                 let overlap = p.radius[i] - wall.distance(&p.position[i]);
-                if overlap <= 0.0 {
+                if overlap <= -law_reach {
                     if HIST {
-                        self.wall_history[w][i] = Vec3::zeros();
+                        self.wall_history[w][i] = ContactHistory::default();
                     }
                     continue;
                 }
@@ -315,12 +320,12 @@ impl Simulation {
                     relative_velocity,
                 };
                 let pair = self.pair_table.get(p.material[i], wall.material);
-                let spring = if HIST {
+                let history = if HIST {
                     Some(&mut self.wall_history[w][i])
                 } else {
                     None
                 };
-                let f = self.law.evaluate(&g, pair, spring, dt);
+                let f = self.law.evaluate(&g, pair, history, dt);
                 let total = normal * f.normal + f.tangential;
                 if !total.iter().all(|c| c.is_finite()) {
                     return Err(TampError::Unstable {
@@ -331,7 +336,7 @@ impl Simulation {
                 }
                 p.force[i] += total;
                 on_wall -= total;
-                if ROT && HIST {
+                if torques {
                     p.torque[i] += -normal.cross(&f.tangential) * lever;
                 }
             }
@@ -357,49 +362,58 @@ impl Simulation {
         driven + walls
     }
 
-    /// Particle pairs touching now: (neighbour-list index, i, j, overlap).
-    fn touching_pairs(&self) -> impl Iterator<Item = (usize, usize, usize, f64)> + '_ {
+    /// Particle pairs closer than `beyond` to touching (overlap > −beyond):
+    /// (neighbour-list index, i, j, overlap).
+    fn touching_pairs(&self, beyond: f64) -> impl Iterator<Item = (usize, usize, usize, f64)> + '_ {
         self.neighbors
             .pairs
             .iter()
             .enumerate()
-            .filter_map(|(k, &(i, j))| {
+            .filter_map(move |(k, &(i, j))| {
                 let (i, j) = (i as usize, j as usize);
                 let overlap = self.overlap(i, j);
-                (overlap > 0.0).then_some((k, i, j, overlap))
+                (overlap > -beyond).then_some((k, i, j, overlap))
             })
     }
 
-    /// Particle–wall contacts now: (wall, particle, overlap).
-    fn touching_walls(&self) -> impl Iterator<Item = (usize, usize, f64)> + '_ {
+    /// Particle–wall contacts closer than `beyond` to touching: (wall, particle, overlap).
+    fn touching_walls(&self, beyond: f64) -> impl Iterator<Item = (usize, usize, f64)> + '_ {
         let p = &self.particles;
         self.walls.iter().enumerate().flat_map(move |(w, wall)| {
             (0..p.len()).filter_map(move |i| {
                 let overlap = p.radius[i] - wall.distance(&p.position[i]);
-                (overlap > 0.0).then_some((w, i, overlap))
+                (overlap > -beyond).then_some((w, i, overlap))
             })
         })
     }
 
-    /// Energy stored in all contact springs (pairs and walls), J.
+    fn pair_history(&self, k: usize) -> Option<&ContactHistory> {
+        self.neighbors.history.get(k)
+    }
+
+    fn wall_contact_history(&self, w: usize, i: usize) -> Option<&ContactHistory> {
+        self.wall_history.get(w).and_then(|h| h.get(i))
+    }
+
+    /// Energy stored in all contacts (pairs and walls) and in cohesion, J.
     pub fn stored_energy(&self) -> f64 {
         let p = &self.particles;
-        let hist = self.law.has_history();
+        let reach = self.law.reach();
         let pairs: f64 = self
-            .touching_pairs()
+            .touching_pairs(reach)
             .map(|(k, i, j, overlap)| {
                 let pair = self.pair_table.get(p.material[i], p.material[j]);
-                let spring = hist.then(|| &self.neighbors.history[k]);
                 let r_eff = effective_radius(p.radius[i], p.radius[j]);
-                self.law.stored_energy(overlap, r_eff, pair, spring)
+                self.law
+                    .stored_energy(overlap, r_eff, pair, self.pair_history(k))
             })
             .sum();
         let walls: f64 = self
-            .touching_walls()
+            .touching_walls(reach)
             .map(|(w, i, overlap)| {
                 let pair = self.pair_table.get(p.material[i], self.walls[w].material);
-                let spring = hist.then(|| &self.wall_history[w][i]);
-                self.law.stored_energy(overlap, p.radius[i], pair, spring)
+                self.law
+                    .stored_energy(overlap, p.radius[i], pair, self.wall_contact_history(w, i))
             })
             .sum();
         pairs + walls
@@ -442,7 +456,7 @@ impl Simulation {
 
     /// Number of particle–particle and particle–wall contacts at the current positions.
     pub fn contact_count(&self) -> usize {
-        self.touching_pairs().count() + self.touching_walls().count()
+        self.touching_pairs(0.0).count() + self.touching_walls(0.0).count()
     }
 
     /// Overlap of two particles (negative when apart), m.
@@ -454,52 +468,85 @@ impl Simulation {
     /// Critical time step estimate, Rojek eqs 26–29 without the safety factor α.
     ///
     /// k_i is the largest of: the sum of the particle's current normal contact
-    /// stiffnesses; the impact stiffness against a much larger body of any material
-    /// (R* = R_i, m* = m_i: walls, and an upper bound on any finite partner); and,
-    /// with friction, the tangential spring k_s — times (1 + m R²/I) when rotation is
-    /// on, because the spring then also drives the spin of the contact point.
+    /// stiffnesses (for laws with memory, the stiffness of the current branch, Rojek
+    /// §3.4); the impact stiffness against a much larger body of any material
+    /// (R* = R_i, m* = m_i: walls, and an upper bound on any finite partner); and the
+    /// largest tangential stiffness of its contacts (or the Cundall–Strack k_s) —
+    /// times (1 + m R²/I) when rotation is on, because the tangential force then also
+    /// drives the spin of the contact point. Viscous Haff–Werner friction adds the
+    /// explicit limit Δt < 2m/(γ_s (1 + m R²/I)).
     /// Returns `None` when a nonlinear law has neither a characteristic velocity nor
     /// any current contact to take a stiffness from.
     pub fn critical_time_step(&self, characteristic_velocity: Option<f64>) -> Option<f64> {
         let p = &self.particles;
-        let mut contact_stiffness = vec![0.0; p.len()];
-        for (_, i, j, overlap) in self.touching_pairs() {
+        let mut normal_sum = vec![0.0; p.len()];
+        let mut tangential_max = vec![0.0f64; p.len()];
+        for (k, i, j, overlap) in self.touching_pairs(0.0) {
             let pair = self.pair_table.get(p.material[i], p.material[j]);
             let r_eff = effective_radius(p.radius[i], p.radius[j]);
-            let k = self.law.normal.response(overlap, r_eff, pair).stiffness;
-            contact_stiffness[i] += k;
-            contact_stiffness[j] += k;
+            let (k_n, k_t) = self
+                .law
+                .stiffness(overlap, r_eff, pair, self.pair_history(k));
+            for b in [i, j] {
+                normal_sum[b] += k_n;
+                tangential_max[b] = tangential_max[b].max(k_t);
+            }
+        }
+        for (w, i, overlap) in self.touching_walls(0.0) {
+            let pair = self.pair_table.get(p.material[i], self.walls[w].material);
+            let history = self.wall_contact_history(w, i);
+            let (k_n, k_t) = self.law.stiffness(overlap, p.radius[i], pair, history);
+            normal_sum[i] += k_n;
+            tangential_max[i] = tangential_max[i].max(k_t);
         }
         let mut best: Option<f64> = None;
-        for (i, &in_contact) in contact_stiffness.iter().enumerate() {
+        for i in 0..p.len() {
             let impact = match (&self.law.normal, characteristic_velocity) {
-                (NormalLaw::Linear { stiffness }, _) => *stiffness,
-                (law, Some(v)) => (0..self.materials.len())
+                (NormalLaw::Linear { .. }, _)
+                | (NormalLaw::Hysteretic { .. }, _)
+                | (NormalLaw::WaltonBraun { .. }, _)
+                | (_, Some(_)) => (0..self.materials.len())
                     .map(|b| {
                         let pair = self.pair_table.get(p.material[i], b);
-                        law.impact_stiffness(p.mass[i], v, p.radius[i], pair)
+                        let v = characteristic_velocity.unwrap_or(0.0);
+                        self.law
+                            .normal
+                            .impact_stiffness(p.mass[i], v, p.radius[i], pair)
                     })
                     .fold(0.0, f64::max),
                 (_, None) => 0.0,
             };
-            let mut k = in_contact.max(impact);
+            let lever = if self.rotation {
+                1.0 + p.mass[i] * p.radius[i].powi(2) / p.inertia[i]
+            } else {
+                1.0
+            };
+            let mut k = normal_sum[i].max(impact);
             if k <= 0.0 {
+                // No normal stiffness known: the estimate is undefined for this particle.
                 continue;
             }
-            if let Some(t) = &self.law.tangential {
-                let lever = if self.rotation {
-                    1.0 + p.mass[i] * p.radius[i].powi(2) / p.inertia[i]
-                } else {
-                    1.0
-                };
-                k = k.max(t.stiffness() * lever);
+            if let Some(
+                TangentialLaw::CundallStrack { stiffness }
+                | TangentialLaw::WaltonBraun { stiffness },
+            ) = self.law.tangential
+            {
+                k = k.max(stiffness * lever);
             }
+            k = k.max(tangential_max[i] * lever);
+            let viscous = match self.law.tangential {
+                Some(TangentialLaw::HaffWerner { damping }) if damping > 0.0 => {
+                    Some(2.0 * p.mass[i] / (damping * lever))
+                }
+                _ => None,
+            };
             let xi = self
                 .law
                 .damping
                 .map(|d| d.ratio(p.mass[i], k))
                 .unwrap_or(0.0);
-            let dt = critical_time_step(k, p.mass[i], xi);
+            let elastic = critical_time_step(k, p.mass[i], xi);
+            let dt = viscous.map_or(elastic, |v| v.min(elastic));
             best = Some(best.map_or(dt, |b: f64| b.min(dt)));
         }
         best

@@ -7,19 +7,24 @@
 //! (Rojek's h = −δ); a positive normal force pushes i away from the partner.
 
 pub mod damping;
+pub mod history;
 pub mod normal;
 pub mod tangential;
+pub mod van_der_waals;
 
 use crate::material::PairProperties;
 use crate::particles::Vec3;
 use damping::Damping;
+use history::ContactHistory;
 use normal::NormalLaw;
-use tangential::{TangentialLaw, cundall_strack::cundall_strack_force};
+use tangential::{TangentialInput, TangentialLaw};
+use van_der_waals::VanDerWaals;
 
 /// Geometry of one contact, computed once and shared by all roles.
 #[derive(Clone, Copy, Debug)]
 pub struct ContactGeometry {
     pub normal: Vec3,
+    /// δ > 0 in contact; −δ is the surface gap when apart (cohesion acts across it).
     pub overlap: f64,
     pub effective_radius: f64,
     pub effective_mass: f64,
@@ -33,12 +38,17 @@ impl ContactGeometry {
     pub fn overlap_rate(&self) -> f64 {
         -self.relative_velocity.dot(&self.normal)
     }
+
+    #[inline]
+    pub fn tangential_velocity(&self) -> Vec3 {
+        self.relative_velocity - self.normal * self.normal.dot(&self.relative_velocity)
+    }
 }
 
 /// Force on particle i (the partner receives the opposite).
 #[derive(Clone, Copy, Debug, Default)]
 pub struct ContactForce {
-    /// Total normal force along `normal` (elastic + damping), N.
+    /// Total normal force along `normal` (elastic + damping − cohesion), N.
     pub normal: f64,
     pub tangential: Vec3,
 }
@@ -48,60 +58,141 @@ pub struct ContactLaw {
     pub normal: NormalLaw,
     pub damping: Option<Damping>,
     pub tangential: Option<TangentialLaw>,
+    pub cohesion: Option<VanDerWaals>,
 }
 
 impl ContactLaw {
-    /// Whether contacts carry history (the tangential spring).
+    /// Whether contacts carry history (a tangential state or the normal law's δ_max).
     pub fn has_history(&self) -> bool {
-        self.tangential.is_some()
+        self.normal.has_memory() || self.tangential.is_some_and(|t| t.has_history())
     }
 
-    /// Evaluate the enabled roles in their fixed order. `spring` is the contact's
-    /// tangential history; it is `None` exactly when friction is off.
+    /// How far beyond touching the law acts (the cohesion cut-off), m.
+    pub fn reach(&self) -> f64 {
+        self.cohesion.map_or(0.0, |c| c.cutoff)
+    }
+
+    fn tangential_input(
+        &self,
+        g: &ContactGeometry,
+        pair: &PairProperties,
+        normal_force: f64,
+        normal_stiffness: f64,
+        dt: f64,
+    ) -> TangentialInput {
+        TangentialInput {
+            normal: g.normal,
+            tangential_velocity: g.tangential_velocity(),
+            dt,
+            friction: pair.friction,
+            normal_force,
+            normal_stiffness,
+            overlap: g.overlap,
+            effective_radius: g.effective_radius,
+            effective_shear_modulus: pair.effective_shear_modulus.unwrap_or(0.0),
+        }
+    }
+
+    /// Evaluate the enabled roles in their fixed order: normal, damping, tangential
+    /// (limited by the contact's normal force), cohesion. `history` is `None` exactly
+    /// when the law has none; it is reset while the bodies are apart.
     #[inline]
     pub fn evaluate(
         &self,
         g: &ContactGeometry,
         pair: &PairProperties,
-        spring: Option<&mut Vec3>,
+        history: Option<&mut ContactHistory>,
         dt: f64,
     ) -> ContactForce {
-        let elastic = self.normal.response(g.overlap, g.effective_radius, pair);
-        let mut normal = elastic.force;
-        if let Some(d) = &self.damping {
-            normal += d.coefficient(g.effective_mass, elastic.stiffness) * g.overlap_rate();
-        }
-        let tangential = match (&self.tangential, spring) {
-            (Some(TangentialLaw::CundallStrack { stiffness }), Some(spring)) => {
-                let v_t = g.relative_velocity - g.normal * g.normal.dot(&g.relative_velocity);
-                cundall_strack_force(
-                    spring,
-                    &g.normal,
-                    &v_t,
-                    dt,
-                    *stiffness,
-                    pair.friction,
-                    normal,
-                )
+        let mut scratch = ContactHistory::default();
+        let history = history.unwrap_or(&mut scratch);
+        let mut force = ContactForce::default();
+        if g.overlap > 0.0 {
+            let rate = g.overlap_rate();
+            let elastic = self.normal.response(
+                g.overlap,
+                rate,
+                g.effective_radius,
+                pair,
+                &mut history.max_overlap,
+            );
+            force.normal = elastic.force;
+            if let Some(d) = &self.damping {
+                force.normal += d.coefficient(g.effective_mass, elastic.stiffness) * rate;
             }
-            _ => Vec3::zeros(),
-        };
-        ContactForce { normal, tangential }
+            if let Some(t) = &self.tangential {
+                let input = self.tangential_input(g, pair, force.normal, elastic.stiffness, dt);
+                force.tangential = t.force(&input, history);
+            }
+        } else {
+            *history = ContactHistory::default();
+        }
+        if let Some(c) = &self.cohesion {
+            force.normal -= c.force(-g.overlap, g.effective_radius);
+        }
+        force
     }
 
-    /// Energy stored in the contact's springs (normal and tangential), J.
+    /// Energy stored in the contact (recoverable normal and tangential energy, and
+    /// the cohesive potential), J.
     pub fn stored_energy(
         &self,
         overlap: f64,
         effective_radius: f64,
         pair: &PairProperties,
-        spring: Option<&Vec3>,
+        history: Option<&ContactHistory>,
     ) -> f64 {
-        let tangential = match (&self.tangential, spring) {
-            (Some(t), Some(s)) => 0.5 * t.stiffness() * s.norm_squared(),
-            _ => 0.0,
-        };
-        self.normal.energy(overlap, effective_radius, pair) + tangential
+        let cohesion = self
+            .cohesion
+            .map_or(0.0, |c| c.energy(-overlap, effective_radius));
+        if overlap <= 0.0 {
+            return cohesion;
+        }
+        let none = ContactHistory::default();
+        let history = history.unwrap_or(&none);
+        let normal = self
+            .normal
+            .energy(overlap, effective_radius, pair, history.max_overlap);
+        let tangential = self.tangential.map_or(0.0, |t| {
+            let g = ContactGeometry {
+                normal: Vec3::z(),
+                overlap,
+                effective_radius,
+                effective_mass: 0.0,
+                relative_velocity: Vec3::zeros(),
+            };
+            let k_n = self
+                .normal
+                .stiffness(overlap, effective_radius, pair, history.max_overlap);
+            t.energy(&self.tangential_input(&g, pair, 0.0, k_n, 0.0), history)
+        });
+        normal + tangential + cohesion
+    }
+
+    /// Largest tangent stiffness (normal, and tangential with θ = 1) of a stored
+    /// contact state, N/m, for the critical time step (Rojek §3.4).
+    pub fn stiffness(
+        &self,
+        overlap: f64,
+        effective_radius: f64,
+        pair: &PairProperties,
+        history: Option<&ContactHistory>,
+    ) -> (f64, f64) {
+        let max_overlap = history.map_or(0.0, |h| h.max_overlap);
+        let k_n = self
+            .normal
+            .stiffness(overlap, effective_radius, pair, max_overlap);
+        let k_t = self.tangential.map_or(0.0, |t| {
+            let g = ContactGeometry {
+                normal: Vec3::z(),
+                overlap,
+                effective_radius,
+                effective_mass: 0.0,
+                relative_velocity: Vec3::zeros(),
+            };
+            t.stiffness(&self.tangential_input(&g, pair, 0.0, k_n, 0.0))
+        });
+        (k_n, k_t)
     }
 }
 
@@ -114,6 +205,7 @@ mod tests {
             normal: NormalLaw::Hertz,
             damping: Some(Damping::CriticalFraction { xi: 0.3 }),
             tangential: Some(TangentialLaw::CundallStrack { stiffness: 1e5 }),
+            cohesion: None,
         }
     }
 
@@ -121,6 +213,7 @@ mod tests {
         PairProperties {
             effective_modulus: Some(1e9),
             effective_shear_modulus: Some(4e8),
+            hollomon: None,
             friction: 0.5,
         }
     }
@@ -139,7 +232,7 @@ mod tests {
             relative_velocity: -g.relative_velocity,
             ..g
         };
-        let (mut s1, mut s2) = (Vec3::zeros(), Vec3::zeros());
+        let (mut s1, mut s2) = (ContactHistory::default(), ContactHistory::default());
         let f1 = law().evaluate(&g, &pair(), Some(&mut s1), 1e-6);
         let f2 = law().evaluate(&swapped, &pair(), Some(&mut s2), 1e-6);
         let total1 = g.normal * f1.normal + f1.tangential;
@@ -156,7 +249,7 @@ mod tests {
             effective_mass: 1e-3,
             relative_velocity: Vec3::zeros(),
         };
-        let f = law().evaluate(&g, &pair(), Some(&mut Vec3::zeros()), 1e-6);
+        let f = law().evaluate(&g, &pair(), Some(&mut ContactHistory::default()), 1e-6);
         assert!(f.normal.abs() < 1e-300 && f.tangential.norm() == 0.0);
     }
 }

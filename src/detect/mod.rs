@@ -7,6 +7,7 @@
 pub mod brute;
 pub mod cells;
 
+use crate::contact::history::ContactHistory;
 use crate::particles::Vec3;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -29,25 +30,29 @@ impl Detector {
     }
 }
 
-/// Candidate pairs with a per-pair history slot (the tangential spring), carried
-/// across rebuilds by merging the two sorted lists.
+/// Candidate pairs with a per-pair history slot, carried across rebuilds by merging
+/// the two sorted lists. Pairs are found within touching + `reach` (the range of
+/// cohesion) + `skin`.
 #[derive(Clone, Debug)]
 pub struct NeighborList {
     pub detector: Detector,
     pub skin: f64,
+    /// Range beyond touching at which the contact law still acts, m.
+    pub reach: f64,
     pub pairs: Vec<(u32, u32)>,
     /// One slot per pair when contacts have history, otherwise empty.
-    pub history: Vec<Vec3>,
+    pub history: Vec<ContactHistory>,
     keeps_history: bool,
     reference_position: Vec<Vec3>,
     pub builds: u64,
 }
 
 impl NeighborList {
-    pub fn new(detector: Detector, skin: f64, keeps_history: bool) -> Self {
+    pub fn new(detector: Detector, skin: f64, reach: f64, keeps_history: bool) -> Self {
         NeighborList {
             detector,
             skin,
+            reach,
             pairs: Vec::new(),
             history: Vec::new(),
             keeps_history,
@@ -70,9 +75,11 @@ impl NeighborList {
     }
 
     pub fn rebuild(&mut self, position: &[Vec3], radius: &[f64]) {
-        let pairs = self.detector.candidate_pairs(position, radius, self.skin);
+        let pairs = self
+            .detector
+            .candidate_pairs(position, radius, self.skin + self.reach);
         if self.keeps_history {
-            let mut history = vec![Vec3::zeros(); pairs.len()];
+            let mut history = vec![ContactHistory::default(); pairs.len()];
             let mut old = 0;
             for (k, pair) in pairs.iter().enumerate() {
                 while old < self.pairs.len() && self.pairs[old] < *pair {

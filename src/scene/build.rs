@@ -2,10 +2,13 @@
 //! are built; random insertion uses the scene's seed.
 
 use super::schema::*;
-use crate::contact::{ContactLaw, damping::Damping, normal::NormalLaw, tangential::TangentialLaw};
+use crate::contact::{
+    ContactLaw, damping::Damping, normal::NormalLaw, tangential::TangentialLaw,
+    van_der_waals::VanDerWaals,
+};
 use crate::detect::{Detector, NeighborList};
 use crate::error::{Result, TampError};
-use crate::material::{Material, PairTable};
+use crate::material::{Hollomon, Material, PairTable};
 use crate::particles::{Motion, Particles, Vec3};
 use crate::simulation::{Simulation, StabilityLimits};
 use crate::walls::PlaneWall;
@@ -29,14 +32,54 @@ pub fn contact_law(spec: &ContactSpec) -> ContactLaw {
         normal: match spec.normal {
             NormalSpec::Linear { stiffness } => NormalLaw::Linear { stiffness },
             NormalSpec::Hertz {} => NormalLaw::Hertz,
+            NormalSpec::KuwabaraKono { dissipation_time } => {
+                NormalLaw::KuwabaraKono { dissipation_time }
+            }
+            NormalSpec::WaltonBraun {
+                loading_stiffness,
+                unloading_stiffness,
+            } => NormalLaw::WaltonBraun {
+                loading_stiffness,
+                unloading_stiffness,
+            },
+            NormalSpec::Hysteretic {
+                stiffness,
+                hysteresis,
+            } => NormalLaw::Hysteretic {
+                stiffness,
+                hysteresis,
+            },
+            NormalSpec::Storakers { min_with_hertz } => NormalLaw::Storakers { min_with_hertz },
         },
         damping: spec.damping.as_ref().map(|d| match *d {
             DampingSpec::CriticalFraction { xi } => Damping::CriticalFraction { xi },
             DampingSpec::Constant { gamma_n } => Damping::Constant { gamma_n },
         }),
-        tangential: spec.tangential.as_ref().map(|t| match t {
-            TangentialSpec::CundallStrack { stiffness, .. } => TangentialLaw::CundallStrack {
-                stiffness: *stiffness,
+        tangential: spec.tangential.as_ref().map(|t| {
+            let parameter = t.stiffness.or(t.damping).or(t.beta).unwrap_or(0.0);
+            match t.law {
+                TangentialLawName::MindlinDeresiewicz => TangentialLaw::MindlinDeresiewicz,
+                TangentialLawName::Coulomb => TangentialLaw::Coulomb,
+                TangentialLawName::HaffWerner => TangentialLaw::HaffWerner { damping: parameter },
+                TangentialLawName::CundallStrack => TangentialLaw::CundallStrack {
+                    stiffness: parameter,
+                },
+                TangentialLawName::WaltonBraun => TangentialLaw::WaltonBraun {
+                    stiffness: parameter,
+                },
+                TangentialLawName::MindlinNoSlip => TangentialLaw::MindlinNoSlip,
+                TangentialLawName::Storakers => TangentialLaw::Storakers { beta: parameter },
+            }
+        }),
+        cohesion: spec.cohesion.as_ref().map(|c| match *c {
+            CohesionSpec::VanDerWaals {
+                hamaker,
+                min_separation,
+                cutoff,
+            } => VanDerWaals {
+                hamaker,
+                min_separation,
+                cutoff,
             },
         }),
     }
@@ -65,6 +108,17 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
             density: m.density,
             youngs_modulus: m.youngs_modulus,
             poisson_ratio: m.poisson_ratio,
+            hollomon: m.hollomon.as_ref().map(|h| match h.strength {
+                Some(strength) => Hollomon {
+                    strength,
+                    exponent: h.exponent,
+                },
+                None => Hollomon::through_yield_point(
+                    h.yield_stress.unwrap_or(0.0),
+                    m.youngs_modulus.unwrap_or(0.0),
+                    h.exponent,
+                ),
+            }),
         })
         .collect();
     let material_id = |name: &str| {
@@ -76,7 +130,7 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
 
     let (default_friction, overrides): (f64, Vec<(usize, usize, f64)>) =
         match &scene.contact.tangential {
-            Some(TangentialSpec::CundallStrack {
+            Some(TangentialSpec {
                 friction,
                 friction_pairs,
                 ..
@@ -175,6 +229,7 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
     let neighbors = NeighborList::new(
         detector,
         scene.broad_phase.skin_fraction * r_min,
+        law.reach(),
         law.has_history(),
     );
     let limits = StabilityLimits {

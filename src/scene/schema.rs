@@ -46,6 +46,21 @@ pub struct MaterialSpec {
     pub youngs_modulus: Option<f64>,
     #[serde(default)]
     pub poisson_ratio: Option<f64>,
+    /// Hollomon hardening σ = σ0 ε^m (Rojek eq 15); required by the Storåkers law.
+    #[serde(default)]
+    pub hollomon: Option<HollomonSpec>,
+}
+
+/// Give `exponent` and exactly one of `strength` (σ0, Pa) or `yield_stress` (σ_Y,
+/// Pa: the curve then passes through (σ_Y/E, σ_Y), as in Rojek §4).
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct HollomonSpec {
+    pub exponent: f64,
+    #[serde(default)]
+    pub strength: Option<f64>,
+    #[serde(default)]
+    pub yield_stress: Option<f64>,
 }
 
 #[derive(Clone, Debug, Deserialize, Serialize)]
@@ -56,6 +71,8 @@ pub struct ContactSpec {
     pub damping: Option<DampingSpec>,
     #[serde(default)]
     pub tangential: Option<TangentialSpec>,
+    #[serde(default)]
+    pub cohesion: Option<CohesionSpec>,
 }
 
 #[derive(Clone, Debug, Deserialize, Serialize)]
@@ -65,6 +82,20 @@ pub enum NormalSpec {
     Linear { stiffness: f64 },
     /// Rojek eq 2 / Zhong model II.
     Hertz {},
+    /// Zhong model III, eq 15; A in s.
+    KuwabaraKono { dissipation_time: f64 },
+    /// Zhong model IV, eq 16; N/m.
+    WaltonBraun {
+        loading_stiffness: f64,
+        unloading_stiffness: f64,
+    },
+    /// Zhong model V, eqs 17–18; γ dimensionless in [0, 1).
+    Hysteretic { stiffness: f64, hysteresis: f64 },
+    /// Rojek eqs 15–20; `min_with_hertz` caps the plastic force by Hertz (Martin et al. 2003).
+    Storakers {
+        #[serde(default)]
+        min_with_hertz: bool,
+    },
 }
 
 #[derive(Clone, Debug, Deserialize, Serialize)]
@@ -76,16 +107,81 @@ pub enum DampingSpec {
     Constant { gamma_n: f64 },
 }
 
+#[derive(Clone, Copy, Debug, Deserialize, Serialize, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum TangentialLawName {
+    /// Zhong model VI, eqs 19–21.
+    MindlinDeresiewicz,
+    /// Zhong model VII, eq 22.
+    Coulomb,
+    /// Zhong model VIII, eq 23; needs `damping`.
+    HaffWerner,
+    /// Zhong model IX, eqs 24–25; needs `stiffness`.
+    CundallStrack,
+    /// Zhong model X, eqs 26–27; needs `stiffness` (k₀).
+    WaltonBraun,
+    /// Rojek eqs 11–14 (H-MDNs).
+    MindlinNoSlip,
+    /// Rojek eq 21, k_t = β k_n; needs `beta`.
+    Storakers,
+}
+
+impl TangentialLawName {
+    pub fn name(&self) -> &'static str {
+        match self {
+            TangentialLawName::MindlinDeresiewicz => "mindlin_deresiewicz",
+            TangentialLawName::Coulomb => "coulomb",
+            TangentialLawName::HaffWerner => "haff_werner",
+            TangentialLawName::CundallStrack => "cundall_strack",
+            TangentialLawName::WaltonBraun => "walton_braun",
+            TangentialLawName::MindlinNoSlip => "mindlin_no_slip",
+            TangentialLawName::Storakers => "storakers",
+        }
+    }
+
+    /// The law's own parameter, if it has one: (field, required).
+    pub fn parameter(&self) -> Option<&'static str> {
+        match self {
+            TangentialLawName::CundallStrack | TangentialLawName::WaltonBraun => Some("stiffness"),
+            TangentialLawName::HaffWerner => Some("damping"),
+            TangentialLawName::Storakers => Some("beta"),
+            _ => None,
+        }
+    }
+}
+
+/// Friction: the law plus μ (and per-pair overrides). Only the parameter the law
+/// names may be given (validation says which).
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct TangentialSpec {
+    pub law: TangentialLawName,
+    pub friction: f64,
+    /// Per-material-pair friction overrides.
+    #[serde(default)]
+    pub friction_pairs: Vec<FrictionPair>,
+    /// k_s or k₀, N/m (cundall_strack, walton_braun).
+    #[serde(default)]
+    pub stiffness: Option<f64>,
+    /// γ_s, N·s/m (haff_werner).
+    #[serde(default)]
+    pub damping: Option<f64>,
+    /// β (storakers).
+    #[serde(default)]
+    pub beta: Option<f64>,
+}
+
 #[derive(Clone, Debug, Deserialize, Serialize)]
 #[serde(tag = "law", rename_all = "snake_case", deny_unknown_fields)]
-pub enum TangentialSpec {
-    /// Zhong model IX, eqs 24–25.
-    CundallStrack {
-        stiffness: f64,
-        friction: f64,
-        /// Per-material-pair friction overrides.
-        #[serde(default)]
-        friction_pairs: Vec<FrictionPair>,
+pub enum CohesionSpec {
+    /// Zhong eq 28: F = A R*/(6 h²) for h_min ≤ h ≤ h_c, constant below h_min.
+    VanDerWaals {
+        /// Hamaker constant A, J.
+        hamaker: f64,
+        /// h_min, m.
+        min_separation: f64,
+        /// h_c, m.
+        cutoff: f64,
     },
 }
 

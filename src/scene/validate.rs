@@ -70,40 +70,180 @@ pub fn validate(scene: &Scene) -> Result<()> {
     }
     let known = |name: &str| names.contains(name);
 
-    match &scene.contact.normal {
+    let contact = &scene.contact;
+    let law_name = |n: &NormalSpec| match n {
+        NormalSpec::Linear { .. } => "linear",
+        NormalSpec::Hertz {} => "hertz",
+        NormalSpec::KuwabaraKono { .. } => "kuwabara_kono",
+        NormalSpec::WaltonBraun { .. } => "walton_braun",
+        NormalSpec::Hysteretic { .. } => "hysteretic",
+        NormalSpec::Storakers { .. } => "storakers",
+    };
+    let normal_name = law_name(&contact.normal);
+    let require_elastic = |e: &mut Errors, why: &str| {
+        for (k, m) in scene.materials.iter().enumerate() {
+            if m.youngs_modulus.is_none() {
+                e.push(
+                    format!("materials[{k}].youngs_modulus"),
+                    format!("is required by {why}"),
+                );
+            }
+            if m.poisson_ratio.is_none() {
+                e.push(
+                    format!("materials[{k}].poisson_ratio"),
+                    format!("is required by {why}"),
+                );
+            }
+        }
+    };
+    match &contact.normal {
         NormalSpec::Linear { stiffness } => e.positive("contact.normal.stiffness", *stiffness),
-        NormalSpec::Hertz {} => {
+        NormalSpec::Hertz {} => require_elastic(&mut e, "contact.normal.law 'hertz'"),
+        NormalSpec::KuwabaraKono { dissipation_time } => {
+            require_elastic(&mut e, "contact.normal.law 'kuwabara_kono'");
+            e.non_negative("contact.normal.dissipation_time", *dissipation_time);
+        }
+        NormalSpec::WaltonBraun {
+            loading_stiffness,
+            unloading_stiffness,
+        } => {
+            e.positive("contact.normal.loading_stiffness", *loading_stiffness);
+            if !(unloading_stiffness >= loading_stiffness && unloading_stiffness.is_finite()) {
+                e.push(
+                    "contact.normal.unloading_stiffness",
+                    format!(
+                        "must be >= loading_stiffness ({loading_stiffness:e}) and finite: unloading is the stiffer branch, got {unloading_stiffness:e}"
+                    ),
+                );
+            }
+        }
+        NormalSpec::Hysteretic {
+            stiffness,
+            hysteresis,
+        } => {
+            e.positive("contact.normal.stiffness", *stiffness);
+            if !(*hysteresis >= 0.0 && *hysteresis < 1.0) {
+                e.push(
+                    "contact.normal.hysteresis",
+                    format!("must be in [0, 1), got {hysteresis}"),
+                );
+            }
+        }
+        NormalSpec::Storakers { .. } => {
+            require_elastic(
+                &mut e,
+                "contact.normal.law 'storakers' (elastic unloading, Rojek eq 20)",
+            );
+            let particle_materials: HashSet<&str> = scene
+                .particles
+                .iter()
+                .map(|p| p.material.as_str())
+                .chain(scene.insert.iter().map(|i| i.material.as_str()))
+                .collect();
             for (k, m) in scene.materials.iter().enumerate() {
-                if m.youngs_modulus.is_none() {
+                if m.hollomon.is_none() && particle_materials.contains(m.name.as_str()) {
                     e.push(
-                        format!("materials[{k}].youngs_modulus"),
-                        "is required by contact.normal.law 'hertz'",
+                        format!("materials[{k}].hollomon"),
+                        "is required by contact.normal.law 'storakers' for every particle material",
                     );
                 }
-                if m.poisson_ratio.is_none() {
-                    e.push(
-                        format!("materials[{k}].poisson_ratio"),
-                        "is required by contact.normal.law 'hertz'",
-                    );
+            }
+            let exponents: Vec<(usize, f64)> = scene
+                .materials
+                .iter()
+                .enumerate()
+                .filter_map(|(k, m)| m.hollomon.as_ref().map(|h| (k, h.exponent)))
+                .collect();
+            if let Some(&(first, m0)) = exponents.first() {
+                for &(k, m) in &exponents[1..] {
+                    if m != m0 {
+                        e.push(
+                            format!("materials[{k}].hollomon.exponent"),
+                            format!("must equal materials[{first}].hollomon.exponent ({m0}): Rojek eq 18 mixes one exponent, got {m}"),
+                        );
+                    }
                 }
             }
         }
     }
-    match &scene.contact.damping {
+    for (k, m) in scene.materials.iter().enumerate() {
+        let Some(h) = &m.hollomon else { continue };
+        let path = format!("materials[{k}].hollomon");
+        if !(h.exponent >= 0.0 && h.exponent < 1.0) {
+            e.push(
+                format!("{path}.exponent"),
+                format!("must be in [0, 1), got {}", h.exponent),
+            );
+        }
+        match (h.strength, h.yield_stress) {
+            (Some(s), None) => e.positive(format!("{path}.strength"), s),
+            (None, Some(y)) => {
+                e.positive(format!("{path}.yield_stress"), y);
+                if m.youngs_modulus.is_none() {
+                    e.push(
+                        format!("materials[{k}].youngs_modulus"),
+                        "is required by hollomon.yield_stress (the curve passes through (σ_Y/E, σ_Y))",
+                    );
+                }
+            }
+            _ => e.push(
+                path,
+                "give exactly one of 'strength' (σ0, Pa) or 'yield_stress' (σ_Y, Pa)",
+            ),
+        }
+    }
+    match &contact.damping {
         Some(DampingSpec::CriticalFraction { xi }) => e.non_negative("contact.damping.xi", *xi),
         Some(DampingSpec::Constant { gamma_n }) => {
             e.non_negative("contact.damping.gamma_n", *gamma_n)
         }
         None => {}
     }
-    if let Some(TangentialSpec::CundallStrack {
-        stiffness,
-        friction,
-        friction_pairs,
-    }) = &scene.contact.tangential
+    if contact.damping.is_some()
+        && matches!(
+            contact.normal,
+            NormalSpec::KuwabaraKono { .. } | NormalSpec::Hysteretic { .. }
+        )
     {
-        e.positive("contact.tangential.stiffness", *stiffness);
-        e.non_negative("contact.tangential.friction", *friction);
+        e.push(
+            "contact.damping",
+            format!(
+                "must be absent with contact.normal.law '{normal_name}', which dissipates by itself"
+            ),
+        );
+    }
+    if let Some(t) = &contact.tangential {
+        let law = t.law.name();
+        for (field, value) in [
+            ("stiffness", t.stiffness),
+            ("damping", t.damping),
+            ("beta", t.beta),
+        ] {
+            let path = format!("contact.tangential.{field}");
+            match (t.law.parameter() == Some(field), value) {
+                (true, Some(v)) => e.positive(path, v),
+                (true, None) => e.push(
+                    path,
+                    format!("is required by contact.tangential.law '{law}'"),
+                ),
+                (false, Some(_)) => e.push(
+                    path,
+                    format!("is not a parameter of contact.tangential.law '{law}'"),
+                ),
+                (false, None) => {}
+            }
+        }
+        if matches!(
+            t.law,
+            TangentialLawName::MindlinDeresiewicz | TangentialLawName::MindlinNoSlip
+        ) {
+            require_elastic(
+                &mut e,
+                &format!("contact.tangential.law '{law}' (G*, Rojek eq 13)"),
+            );
+        }
+        e.non_negative("contact.tangential.friction", t.friction);
+        let friction_pairs = &t.friction_pairs;
         for (k, fp) in friction_pairs.iter().enumerate() {
             let key = {
                 let mut key = fp.materials.clone();
@@ -132,6 +272,21 @@ pub fn validate(scene: &Scene) -> Result<()> {
                     );
                 }
             }
+        }
+    }
+    if let Some(CohesionSpec::VanDerWaals {
+        hamaker,
+        min_separation,
+        cutoff,
+    }) = &contact.cohesion
+    {
+        e.positive("contact.cohesion.hamaker", *hamaker);
+        e.positive("contact.cohesion.min_separation", *min_separation);
+        if !(cutoff > min_separation && cutoff.is_finite()) {
+            e.push(
+                "contact.cohesion.cutoff",
+                format!("must be > min_separation ({min_separation:e}) and finite, got {cutoff:e}"),
+            );
         }
     }
 

@@ -1,0 +1,31 @@
+//! Coulomb sliding friction (Zhong 2009 model VII, eq 22).
+//!
+//!   F_t = −μ F_n v_t/|v_t|,  and 0 when v_t = 0
+//!
+//! Pure kinetic friction, no spring: the force always opposes the slip velocity,
+//! so it dissipates at every instant and cannot hold a contact at rest against a
+//! tangential load (it chatters about v_t = 0 instead). Use it for flows that slide,
+//! not for static packings. No history. No stiffness enters the time step.
+
+use crate::particles::Vec3;
+
+#[inline]
+pub fn coulomb_force(tangential_velocity: &Vec3, friction: f64, normal_force: f64) -> Vec3 {
+    let speed = tangential_velocity.norm();
+    if speed == 0.0 {
+        return Vec3::zeros();
+    }
+    -tangential_velocity * (friction * normal_force.max(0.0) / speed)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn opposes_slip_with_magnitude_mu_fn() {
+        let f = coulomb_force(&Vec3::new(3.0, 4.0, 0.0), 0.5, 10.0);
+        assert!((f - Vec3::new(-3.0, -4.0, 0.0)).norm() < 1e-14);
+        assert_eq!(coulomb_force(&Vec3::zeros(), 0.5, 10.0), Vec3::zeros());
+    }
+}

@@ -1,0 +1,39 @@
+//! Haff–Werner viscous friction capped by Coulomb (Zhong 2009 model VIII, eq 23;
+//! Haff & Werner 1986, Powder Technol. 48, 239).
+//!
+//!   F_t = −min(γ_s |v_t|, μ F_n) v_t/|v_t|
+//!
+//! γ_s (N·s/m) is the tangential damping coefficient. Viscous below the Coulomb
+//! limit, so slow slip is resisted in proportion to its speed and a contact cannot
+//! stick. No history. Explicit stability of the viscous part needs
+//! Δt < 2 m/γ_s (per particle, with the rotational lever when spin is on).
+
+use crate::particles::Vec3;
+
+#[inline]
+pub fn haff_werner_force(
+    tangential_velocity: &Vec3,
+    damping: f64,
+    friction: f64,
+    normal_force: f64,
+) -> Vec3 {
+    let speed = tangential_velocity.norm();
+    if speed == 0.0 {
+        return Vec3::zeros();
+    }
+    let magnitude = (damping * speed).min(friction * normal_force.max(0.0));
+    -tangential_velocity * (magnitude / speed)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn viscous_below_the_cone_coulomb_above() {
+        let slow = haff_werner_force(&Vec3::new(1e-3, 0.0, 0.0), 100.0, 0.5, 10.0);
+        assert!((slow.x + 0.1).abs() < 1e-14);
+        let fast = haff_werner_force(&Vec3::new(1.0, 0.0, 0.0), 100.0, 0.5, 10.0);
+        assert!((fast.x + 5.0).abs() < 1e-14);
+    }
+}

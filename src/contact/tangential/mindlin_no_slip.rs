@@ -1,0 +1,36 @@
+//! Mindlin–Deresiewicz no-slip tangential law, "H-MDNs" (Rojek 2016 eqs 11–14; Di
+//! Renzo & Di Maio 2004). Incremental (`incremental.rs`) with the tangent stiffness
+//! of the no-slip solution,
+//!
+//!   k_t = 8 G* √(R* δ) = 8 G* a          (eq 12; a = √(R* δ) the contact radius)
+//!   1/G* = (2 − ν_i)/G_i + (2 − ν_j)/G_j  (eq 13)
+//!   |F_t| ≤ μ |F_n|                      (eq 14)
+//!
+//! Micro-slip inside the contact is ignored (that is the full Mindlin–Deresiewicz
+//! law, `mindlin_deresiewicz.rs`). History: the tangential force vector (N).
+//! Stiffness for the time step: k_t at the current overlap.
+
+pub fn mindlin_no_slip_stiffness(
+    overlap: f64,
+    effective_radius: f64,
+    effective_shear_modulus: f64,
+) -> f64 {
+    8.0 * effective_shear_modulus * (effective_radius * overlap).sqrt()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ratio_to_hertz_normal_stiffness_is_4g_over_e() {
+        // k_t/k_n = 8G*a/(2E*a) = 4G*/E*; for equal materials with ν = 0.3 this is
+        // 4·(E/(2·2.6·1.7))/(E/(2·0.91)) = 0.8235 (the familiar 2(1−ν)/(2−ν)).
+        let (r, d, nu): (f64, f64, f64) = (1e-3, 1e-6, 0.3);
+        let e_star = 1.0 / (2.0 * (1.0 - nu * nu));
+        let g_star = 1.0 / (2.0 * 2.0 * (1.0 + nu) * (2.0 - nu));
+        let k_n = 2.0 * e_star * (r * d).sqrt();
+        let ratio = mindlin_no_slip_stiffness(d, r, g_star) / k_n;
+        assert!((ratio - 2.0 * (1.0 - nu) / (2.0 - nu)).abs() < 1e-12);
+    }
+}

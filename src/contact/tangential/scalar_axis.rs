@@ -1,0 +1,53 @@
+//! The loading axis of the two scalar tangential laws with loading/unloading memory
+//! (Mindlin–Deresiewicz, Walton–Braun). Both were derived for a tangential load
+//! along one line; tamp applies their scalar rule along a loading axis ê:
+//!
+//! - during virgin loading ê follows the force; once the load reverses ê is frozen
+//!   (rotated with the contact plane), so unloading may take the force through zero
+//!   to the other side, as the 1D laws require;
+//! - the displacement increment along ê drives the scalar law; its component across
+//!   ê turns the force with the same current tangent stiffness.
+//!
+//! For collinear loading (every closed form, the oblique impact) this is exactly the
+//! published law; for loading that changes direction it is one reasonable extension
+//! among several (Thornton & Yin 1991 discuss the non-uniqueness).
+
+use super::cundall_strack::rotate_into_plane;
+use crate::contact::history::ContactHistory;
+use crate::particles::Vec3;
+
+/// Displacement increment split on the axis: (ê, along, across).
+pub struct AxisIncrement {
+    pub axis: Vec3,
+    pub force_along: f64,
+    pub along: f64,
+    pub across: Vec3,
+}
+
+/// Rotate the stored force and axis into the current plane and split the increment
+/// the force follows (−v_t Δt). Returns `None` when there is neither a force nor a
+/// displacement to define an axis.
+pub fn split(
+    history: &mut ContactHistory,
+    normal: &Vec3,
+    tangential_velocity: &Vec3,
+    dt: f64,
+) -> Option<AxisIncrement> {
+    history.tangential = rotate_into_plane(history.tangential, normal);
+    let increment = -tangential_velocity * dt;
+    let mut axis = rotate_into_plane(history.axis, normal);
+    if axis.norm_squared() == 0.0 {
+        let n = increment.norm();
+        if n == 0.0 {
+            return None;
+        }
+        axis = increment / n;
+    }
+    let along = increment.dot(&axis);
+    Some(AxisIncrement {
+        axis,
+        force_along: history.tangential.dot(&axis),
+        along,
+        across: increment - axis * along,
+    })
+}
