@@ -21,7 +21,7 @@
 //! the contact opens with a residual force, which is then lost: a property of the
 //! law as published, which `min_with_hertz` avoids.
 //! History: δ_max (m). Stiffness for the time step (Rojek §3.4): k_p while loading,
-//! k_unl otherwise. Recoverable (stored) energy: 2/5 K (δ − δ_res)^{5/2}.
+//! k_unl otherwise. Recoverable (stored) energy: 2/5 K [(δ − δ_res)^{5/2} − (−δ_res)₊^{5/2}].
 
 use super::hertz::{hertz_force, hertz_stiffness};
 use crate::material::Hollomon;
@@ -101,14 +101,17 @@ impl Storakers {
         (k * elastic.powf(1.5), 1.5 * k * elastic.sqrt())
     }
 
-    /// Energy recoverable by elastic unloading from the current state.
+    /// Energy recoverable by elastic unloading from the current state: the Hertz
+    /// branch integrated down to where the force vanishes or the contact opens
+    /// (δ = 0, when δ_res < 0; the energy below is lost at separation).
     pub fn energy(&self, overlap: f64, max_overlap: f64) -> f64 {
-        let elastic = overlap - self.residual_overlap(max_overlap.max(overlap));
+        let residual = self.residual_overlap(max_overlap.max(overlap));
+        let elastic = overlap - residual;
         if elastic <= 0.0 {
-            0.0
-        } else {
-            0.4 * self.hertz_constant() * elastic.powf(2.5)
+            return 0.0;
         }
+        let lost = (-residual).max(0.0);
+        0.4 * self.hertz_constant() * (elastic.powf(2.5) - lost.powf(2.5))
     }
 }
 
@@ -166,6 +169,19 @@ mod tests {
             max_relative = 1e-9
         );
         assert_eq!(s.response(s.residual_overlap(dm) * 0.999, dm).0, 0.0);
+    }
+
+    #[test]
+    fn recoverable_energy_never_exceeds_the_work_of_loading() {
+        for m in [0.0, 0.1, 0.2] {
+            let s = nial(m, false);
+            for dm in [1e-9, 5e-8, 1.3e-7, 3e-7] {
+                // Work of plastic loading: ∫ C δ^{1+m/2} dδ = C δ^{2+m/2}/(2+m/2).
+                let c = storakers_prefactor(s.effective_radius, s.hollomon);
+                let work = c * dm.powf(2.0 + 0.5 * m) / (2.0 + 0.5 * m);
+                assert!(s.energy(dm, dm) <= work, "m {m} dm {dm}");
+            }
+        }
     }
 
     #[test]

@@ -4,9 +4,13 @@
 mod energy_conservation_elastic;
 mod hertz_collision_time;
 mod hertz_yield_onset;
+mod hollomon_constants;
 mod linear_restitution;
 mod momentum_conservation;
 pub mod probe;
+mod rojek_models;
+mod three_sphere_compression;
+mod two_sphere_compression;
 
 use super::CaseFn;
 
@@ -19,6 +23,9 @@ pub const CASES: &[(&str, CaseFn)] = &[
         energy_conservation_elastic::run,
     ),
     ("momentum_conservation", momentum_conservation::run),
+    ("two_sphere_compression", two_sphere_compression::run),
+    ("three_sphere_compression", three_sphere_compression::run),
+    ("hollomon_constants", hollomon_constants::run),
 ];
 
 pub fn find(name: &str) -> Option<CaseFn> {

@@ -1,0 +1,105 @@
+//! Line plots as SVG (plotters), for curves people compare with the papers'
+//! figures. Rendered to a string and written atomically like every output.
+
+use crate::error::{Result, TampError};
+use plotters::prelude::*;
+use std::path::Path;
+
+pub struct Series {
+    pub name: String,
+    pub points: Vec<(f64, f64)>,
+}
+
+pub struct Panel<'a> {
+    pub title: &'a str,
+    pub x_label: &'a str,
+    pub y_label: &'a str,
+    pub log_y: bool,
+    pub series: &'a [Series],
+}
+
+fn bounds(series: &[Series], log_y: bool) -> (f64, f64, f64, f64) {
+    let pts = series.iter().flat_map(|s| s.points.iter());
+    let pts: Vec<&(f64, f64)> = pts
+        .filter(|p| p.0.is_finite() && p.1.is_finite() && (!log_y || p.1 > 0.0))
+        .collect();
+    let fold = |f: fn(&(f64, f64)) -> f64| {
+        pts.iter()
+            .map(|p| f(p))
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+                (lo.min(v), hi.max(v))
+            })
+    };
+    let (x0, x1) = fold(|p| p.0);
+    let (y0, y1) = fold(|p| p.1);
+    (x0, x1, y0, y1)
+}
+
+fn draw_err<E: std::fmt::Debug>(e: E) -> TampError {
+    TampError::Other(format!("plotting failed: {e:?}"))
+}
+
+/// Panels side by side in one SVG file.
+pub fn write_svg(path: &Path, panels: &[Panel]) -> Result<()> {
+    let mut svg = String::new();
+    {
+        let width = 640 * panels.len() as u32;
+        let root = SVGBackend::with_string(&mut svg, (width, 480)).into_drawing_area();
+        root.fill(&WHITE).map_err(draw_err)?;
+        let areas = root.split_evenly((1, panels.len()));
+        for (area, panel) in areas.iter().zip(panels) {
+            let (x0, x1, y0, y1) = bounds(panel.series, panel.log_y);
+            let mut builder = ChartBuilder::on(area);
+            builder
+                .caption(panel.title, ("sans-serif", 18))
+                .margin(12)
+                .x_label_area_size(40)
+                .y_label_area_size(70);
+            let colors = [&BLUE, &RED, &GREEN, &MAGENTA, &BLACK, &CYAN];
+            macro_rules! draw {
+                ($chart:expr) => {{
+                    let mut chart = $chart;
+                    chart
+                        .configure_mesh()
+                        .x_desc(panel.x_label)
+                        .y_desc(panel.y_label)
+                        .draw()
+                        .map_err(draw_err)?;
+                    for (k, s) in panel.series.iter().enumerate() {
+                        let color = colors[k % colors.len()];
+                        chart
+                            .draw_series(LineSeries::new(
+                                s.points
+                                    .iter()
+                                    .cloned()
+                                    .filter(|p| !panel.log_y || p.1 > 0.0),
+                                color,
+                            ))
+                            .map_err(draw_err)?
+                            .label(s.name.as_str())
+                            .legend(move |(x, y)| {
+                                PathElement::new(vec![(x, y), (x + 20, y)], color)
+                            });
+                    }
+                    chart
+                        .configure_series_labels()
+                        .background_style(WHITE.mix(0.8))
+                        .border_style(BLACK)
+                        .draw()
+                        .map_err(draw_err)?;
+                }};
+            }
+            if panel.log_y {
+                draw!(
+                    builder
+                        .build_cartesian_2d(x0..x1, (y0..y1).log_scale())
+                        .map_err(draw_err)?
+                );
+            } else {
+                draw!(builder.build_cartesian_2d(x0..x1, y0..y1).map_err(draw_err)?);
+            }
+        }
+        root.present().map_err(draw_err)?;
+    }
+    super::write_atomic(path, svg.as_bytes())
+}

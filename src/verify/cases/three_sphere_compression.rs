@@ -1,0 +1,42 @@
+//! Three NiAl spheres in a line, R = 10, 2, 10 µm, the outer two driven towards the
+//! middle one (Rojek 2016 §4, Fig 8b, Fig 11): the overlap of a small contact when
+//! its force reaches 0.02 N, for Hertz and Storåkers m = 0, 0.1, 0.2. The middle
+//! sphere is held still: driven symmetrically it would stay put anyway, and holding
+//! it lets the step follow the stiff small contact without resolving its
+//! oscillation. Reference: eq 2 (Hertz) or eq 16 (Storåkers) with
+//! R* = 10·2/12 µm, inverted at 0.02 N. The paper reads 0.4–0.5 µm for Storåkers.
+
+use super::probe::compress_to_force;
+use super::rojek_models::{MODELS, overlap_at_force, with_model};
+use crate::error::{Result, TampError};
+use crate::material::effective_radius;
+use crate::scene;
+use crate::verify::{CaseContext, Measured};
+
+const FORCE: f64 = 0.02;
+
+pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
+    let base = ctx.scene()?;
+    let mat = &base.materials[0];
+    let (e, nu) = (
+        mat.youngs_modulus.unwrap_or(0.0),
+        mat.poisson_ratio.unwrap_or(0.0),
+    );
+    let yield_stress = mat
+        .hollomon
+        .as_ref()
+        .and_then(|h| h.yield_stress)
+        .ok_or_else(|| TampError::Other("the material needs hollomon.yield_stress".into()))?;
+    let r_eff = effective_radius(base.particles[0].radius, base.particles[1].radius);
+    let mut out = Vec::new();
+    for (name, exponent) in MODELS {
+        let mut sim = scene::build(&with_model(&base, exponent))?.sim;
+        let (h, _) = compress_to_force(&mut sim, 0, 1, FORCE, 100_000_000, u64::MAX)?;
+        out.push(Measured::new(
+            &format!("small_contact_overlap_at_0.02N_{name}"),
+            h,
+            overlap_at_force(FORCE, r_eff, e, nu, yield_stress, exponent),
+        ));
+    }
+    Ok(out)
+}
