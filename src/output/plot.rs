@@ -96,7 +96,11 @@ pub fn write_svg(path: &Path, panels: &[Panel]) -> Result<()> {
                         .map_err(draw_err)?
                 );
             } else {
-                draw!(builder.build_cartesian_2d(x0..x1, y0..y1).map_err(draw_err)?);
+                draw!(
+                    builder
+                        .build_cartesian_2d(x0..x1, y0..y1)
+                        .map_err(draw_err)?
+                );
             }
         }
         root.present().map_err(draw_err)?;

@@ -5,12 +5,17 @@ mod energy_conservation_elastic;
 mod hertz_collision_time;
 mod hertz_yield_onset;
 mod hollomon_constants;
+mod kuwabara_kono_restitution;
 mod linear_restitution;
 mod momentum_conservation;
 pub mod probe;
+mod restitution_laws;
 mod rojek_models;
+mod sliding_oblique_impact;
+mod storakers_unloading;
 mod three_sphere_compression;
 mod two_sphere_compression;
+mod van_der_waals_force;
 
 use super::CaseFn;
 
@@ -26,6 +31,12 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("two_sphere_compression", two_sphere_compression::run),
     ("three_sphere_compression", three_sphere_compression::run),
     ("hollomon_constants", hollomon_constants::run),
+    ("storakers_unloading", storakers_unloading::run),
+    ("walton_braun_restitution", restitution_laws::walton_braun),
+    ("hysteretic_restitution", restitution_laws::hysteretic),
+    ("kuwabara_kono_restitution", kuwabara_kono_restitution::run),
+    ("sliding_oblique_impact", sliding_oblique_impact::run),
+    ("van_der_waals_force", van_der_waals_force::run),
 ];
 
 pub fn find(name: &str) -> Option<CaseFn> {

@@ -33,9 +33,8 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let target = PRESSURE * 4.0 * radius * radius;
 
     let mut out = Vec::new();
-    let mut csv = String::from(
-        "model,h_over_2R,F_over_4R2_Pa,overlap_m,force_N,critical_time_step_s\n",
-    );
+    let mut csv =
+        String::from("model,h_over_2R,F_over_4R2_Pa,overlap_m,force_N,critical_time_step_s\n");
     let (mut force_curves, mut dt_curves) = (Vec::new(), Vec::new());
     for (name, exponent) in MODELS {
         let mut sim = scene::build(&with_model(&base, exponent))?.sim;
@@ -55,7 +54,8 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
                 s.force / (4.0 * radius * radius),
                 s.overlap,
                 s.force,
-                s.critical_time_step.map_or(String::new(), |d| format!("{d:e}"))
+                s.critical_time_step
+                    .map_or(String::new(), |d| format!("{d:e}"))
             );
         }
         force_curves.push(Series {

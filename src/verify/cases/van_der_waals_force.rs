@@ -1,0 +1,63 @@
+//! Van der Waals attraction (Zhong 2009 eq 28): two steel spheres R = 1 µm held at
+//! three surface gaps inside the cut-off, force against A R*/(6 h²); the broad-phase
+//! skin is made negligible so the pair is found only through the cohesion reach.
+//! Then two touching spheres, free, with cohesion, Hertz repulsion and damping and
+//! no other load: they must stay in contact at every step and settle where the
+//! Hertz force balances the saturated attraction,
+//!   4/3 E* √R* δ_eq^{3/2} = A R*/(6 h_min²).
+
+use crate::contact::normal::hertz::hertz_overlap_at_force;
+use crate::error::{Result, TampError};
+use crate::scene::{self, schema::CohesionSpec};
+use crate::verify::{CaseContext, Measured};
+
+const GAPS: [(&str, f64); 3] = [("1nm", 1e-9), ("10nm", 1e-8), ("50nm", 5e-8)];
+
+pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
+    let base = ctx.scene()?;
+    let Some(CohesionSpec::VanDerWaals {
+        hamaker,
+        min_separation,
+        ..
+    }) = base.contact.cohesion
+    else {
+        return Err(TampError::Other("the scene must enable cohesion".into()));
+    };
+    let radius = base.particles[0].radius;
+    let r_eff = 0.5 * radius;
+    let mut out = Vec::new();
+    for (name, gap) in GAPS {
+        let mut s = base.clone();
+        for (p, sign) in s.particles.iter_mut().zip([-1.0, 1.0]) {
+            p.position = [sign * (radius + 0.5 * gap), 0.0, 0.0];
+            p.velocity = None;
+            p.prescribed_velocity = Some([0.0; 3]);
+        }
+        s.broad_phase.skin_fraction = 1e-6;
+        let sim = scene::build(&s)?.sim;
+        out.push(Measured::new(
+            &format!("force_at_separation_{name}"),
+            sim.particles.force[0].x,
+            hamaker * r_eff / (6.0 * gap * gap),
+        ));
+    }
+
+    let mut sim = scene::build(&base)?.sim;
+    let steps = base.run.steps.unwrap_or(0);
+    let mut apart = 0u64;
+    for _ in 0..steps {
+        sim.step()?;
+        if sim.overlap(0, 1) <= 0.0 {
+            apart += 1;
+        }
+    }
+    let e_star = sim.pair_table.get(0, 0).effective_modulus.unwrap_or(0.0);
+    let pull = hamaker * r_eff / (6.0 * min_separation * min_separation);
+    out.push(Measured::new("steps_apart", apart as f64, 0.0));
+    out.push(Measured::new(
+        "equilibrium_overlap",
+        sim.overlap(0, 1),
+        hertz_overlap_at_force(pull, r_eff, e_star),
+    ));
+    Ok(out)
+}
