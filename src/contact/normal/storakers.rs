@@ -175,7 +175,7 @@ mod tests {
     fn recoverable_energy_never_exceeds_the_work_of_loading() {
         for m in [0.0, 0.1, 0.2] {
             let s = nial(m, false);
-            for dm in [1e-9, 5e-8, 1.3e-7, 3e-7] {
+            for dm in [1e-9f64, 5e-8, 1.3e-7, 3e-7] {
                 // Work of plastic loading: ∫ C δ^{1+m/2} dδ = C δ^{2+m/2}/(2+m/2).
                 let c = storakers_prefactor(s.effective_radius, s.hollomon);
                 let work = c * dm.powf(2.0 + 0.5 * m) / (2.0 + 0.5 * m);
