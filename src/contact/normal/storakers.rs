@@ -171,16 +171,37 @@ mod tests {
         assert_eq!(s.response(s.residual_overlap(dm) * 0.999, dm).0, 0.0);
     }
 
+    /// Work of loading along the virgin branch, by the trapezoidal rule.
+    fn loading_work(s: &Storakers, dm: f64) -> f64 {
+        let n = 100_000;
+        let h = dm / n as f64;
+        (0..n)
+            .map(|k| 0.5 * h * (s.loading(k as f64 * h).0 + s.loading((k + 1) as f64 * h).0))
+            .sum()
+    }
+
     #[test]
-    fn recoverable_energy_never_exceeds_the_work_of_loading() {
+    fn unloading_returns_less_than_loading_took_beyond_the_passivity_threshold() {
+        // For NiAl pairs (R* = 5 µm) the threshold is 6.0e-8 to 8.0e-8 m for m = 0 to
+        // 0.2 (docs/models/storakers.md); above it the law dissipates.
         for m in [0.0, 0.1, 0.2] {
             let s = nial(m, false);
-            for dm in [1e-9f64, 5e-8, 1.3e-7, 3e-7] {
-                // Work of plastic loading: ∫ C δ^{1+m/2} dδ = C δ^{2+m/2}/(2+m/2).
-                let c = storakers_prefactor(s.effective_radius, s.hollomon);
-                let work = c * dm.powf(2.0 + 0.5 * m) / (2.0 + 0.5 * m);
-                assert!(s.energy(dm, dm) <= work, "m {m} dm {dm}");
+            for dm in [1.0e-7f64, 1.3e-7, 3e-7] {
+                assert!(s.energy(dm, dm) <= loading_work(&s, dm), "m {m} dm {dm}");
             }
+        }
+    }
+
+    #[test]
+    fn pure_storakers_gives_back_more_than_it_took_at_small_overlaps() {
+        // The published law (plastic loading above Hertz, Hertz unloading) is not
+        // passive at small overlaps; capping by Hertz restores passivity.
+        for m in [0.0, 0.1, 0.2] {
+            let dm = 1e-8;
+            let pure = nial(m, false);
+            assert!(pure.energy(dm, dm) > 1.3 * loading_work(&pure, dm), "m {m}");
+            let capped = nial(m, true);
+            assert!(capped.energy(dm, dm) <= loading_work(&capped, dm) * (1.0 + 1e-9));
         }
     }
 
