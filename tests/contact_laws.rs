@@ -1,0 +1,344 @@
+//! Properties every contact law must have, checked over the whole library (issue 3):
+//! force against its closed form at several overlaps, continuity at first touch,
+//! symmetry under swapping the bodies, Newton's third law in a running simulation,
+//! non-positive work of the contact over closed cycles for the dissipative laws, and
+//! the friction cone.
+
+use tamp::contact::history::ContactHistory;
+use tamp::contact::normal::NormalLaw;
+use tamp::contact::tangential::TangentialLaw;
+use tamp::contact::{ContactGeometry, ContactLaw};
+use tamp::material::{Hollomon, PairProperties};
+use tamp::particles::Vec3;
+
+const R_EFF: f64 = 5e-4;
+const E_STAR: f64 = 1.1e11;
+const G_STAR: f64 = 2.1e10;
+const MU: f64 = 0.4;
+
+fn pair() -> PairProperties {
+    PairProperties {
+        effective_modulus: Some(E_STAR),
+        effective_shear_modulus: Some(G_STAR),
+        hollomon: Some(Hollomon {
+            strength: 1e9,
+            exponent: 0.15,
+        }),
+        friction: MU,
+    }
+}
+
+fn normal_laws() -> Vec<NormalLaw> {
+    vec![
+        NormalLaw::Linear { stiffness: 1e7 },
+        NormalLaw::Hertz,
+        NormalLaw::KuwabaraKono {
+            dissipation_time: 1e-7,
+        },
+        NormalLaw::WaltonBraun {
+            loading_stiffness: 1e7,
+            unloading_stiffness: 3e7,
+        },
+        NormalLaw::Hysteretic {
+            stiffness: 1e7,
+            hysteresis: 0.5,
+        },
+        NormalLaw::Storakers {
+            min_with_hertz: false,
+        },
+        NormalLaw::Storakers {
+            min_with_hertz: true,
+        },
+    ]
+}
+
+fn tangential_laws() -> Vec<Option<TangentialLaw>> {
+    vec![
+        None,
+        Some(TangentialLaw::MindlinDeresiewicz),
+        Some(TangentialLaw::Coulomb),
+        Some(TangentialLaw::HaffWerner { damping: 50.0 }),
+        Some(TangentialLaw::CundallStrack { stiffness: 1e6 }),
+        Some(TangentialLaw::WaltonBraun { stiffness: 1e6 }),
+        Some(TangentialLaw::MindlinNoSlip),
+        Some(TangentialLaw::Storakers { beta: 1.0 }),
+    ]
+}
+
+fn every_law() -> Vec<ContactLaw> {
+    let mut out = Vec::new();
+    for n in normal_laws() {
+        for t in tangential_laws() {
+            out.push(ContactLaw {
+                normal: n.clone(),
+                damping: None,
+                tangential: t,
+                cohesion: None,
+            });
+        }
+    }
+    out
+}
+
+fn geometry(normal: Vec3, overlap: f64, relative_velocity: Vec3) -> ContactGeometry {
+    ContactGeometry {
+        normal,
+        overlap,
+        effective_radius: R_EFF,
+        effective_mass: 1e-4,
+        relative_velocity,
+    }
+}
+
+#[test]
+fn normal_force_matches_closed_forms_at_several_overlaps() {
+    let k_hertz = 4.0 / 3.0 * E_STAR * R_EFF.sqrt();
+    let m: f64 = 0.15;
+    // Rojek eq 16 with c^{2+m} = 1.43 e^{-0.97 m} (eq 17).
+    let c_storakers = 2f64.powf(1.0 - m / 2.0)
+        * 3f64.powf(1.0 - m)
+        * std::f64::consts::PI
+        * 1.43
+        * (-0.97 * m).exp()
+        * 1e9
+        * R_EFF.powf(1.0 - m / 2.0);
+    for overlap in [1e-8f64, 1e-7, 1e-6, 5e-6] {
+        let approach = 0.01; // loading: dδ/dt > 0
+        let expected = [
+            1e7 * overlap,
+            k_hertz * overlap.powf(1.5),
+            k_hertz * (overlap.powf(1.5) + 1.5 * 1e-7 * overlap.sqrt() * approach),
+            1e7 * overlap,
+            1e7 * overlap * 1.5,
+            c_storakers * overlap.powf(1.0 + m / 2.0),
+            (c_storakers * overlap.powf(1.0 + m / 2.0)).min(k_hertz * overlap.powf(1.5)),
+        ];
+        for (law, want) in normal_laws().iter().zip(expected) {
+            let mut max_overlap = 0.0;
+            let got = law
+                .response(overlap, approach, R_EFF, &pair(), &mut max_overlap)
+                .force;
+            assert!(
+                (got - want).abs() <= 1e-12 * want,
+                "{} at {overlap:e}: {got:e} vs {want:e}",
+                law.name()
+            );
+        }
+    }
+}
+
+#[test]
+fn force_is_continuous_at_first_touch() {
+    for law in every_law() {
+        let g = geometry(Vec3::z(), 1e-300, Vec3::new(0.0, 0.0, -1e-3));
+        let mut h = ContactHistory::default();
+        let f = law.evaluate(&g, &pair(), Some(&mut h), 1e-7);
+        assert!(
+            f.normal.abs() < 1e-100 && f.tangential.norm() < 1e-100,
+            "{} + {:?}",
+            law.normal.name(),
+            law.tangential.map(|t| t.name())
+        );
+    }
+}
+
+#[test]
+fn swapping_the_bodies_reverses_the_force() {
+    let n = Vec3::new(0.0, 0.6, 0.8);
+    let v = Vec3::new(0.02, -0.01, -0.015);
+    for law in every_law() {
+        let (mut h1, mut h2) = (ContactHistory::default(), ContactHistory::default());
+        let mut totals = (Vec3::zeros(), Vec3::zeros());
+        // A few steps so that history laws leave their first branch.
+        for k in 0..5 {
+            let overlap = 1e-6 * (1.0 + k as f64);
+            let g = geometry(n, overlap, v);
+            let swapped = geometry(-n, overlap, -v);
+            let f1 = law.evaluate(&g, &pair(), Some(&mut h1), 1e-5);
+            let f2 = law.evaluate(&swapped, &pair(), Some(&mut h2), 1e-5);
+            totals = (
+                n * f1.normal + f1.tangential,
+                -n * f2.normal + f2.tangential,
+            );
+        }
+        let (a, b) = totals;
+        assert!(
+            (a + b).norm() <= 1e-12 * a.norm(),
+            "{} + {:?}",
+            law.normal.name(),
+            law.tangential.map(|t| t.name())
+        );
+    }
+}
+
+#[test]
+fn friction_never_leaves_the_cone() {
+    let n = Vec3::z();
+    for law in every_law().into_iter().filter(|l| l.tangential.is_some()) {
+        let mut h = ContactHistory::default();
+        for k in 0..400 {
+            let t = k as f64 * 0.05;
+            let overlap = 1e-6 * (1.5 + t.sin());
+            let v = Vec3::new((3.0 * t).cos(), (1.7 * t).sin(), 0.0) * 0.05;
+            let g = geometry(n, overlap, v + n * (-1e-3 * t.cos()));
+            let f = law.evaluate(&g, &pair(), Some(&mut h), 1e-5);
+            assert!(
+                f.tangential.norm() <= MU * f.normal.max(0.0) * (1.0 + 1e-12) + 1e-300,
+                "{} + {:?} at step {k}",
+                law.normal.name(),
+                law.tangential.map(|t| t.name())
+            );
+            assert!(f.tangential.dot(&n).abs() <= 1e-12 * f.tangential.norm() + 1e-300);
+        }
+    }
+}
+
+/// Work done on the contact (by the bodies) over a closed cycle: overlap 0 → δ_m → 0
+/// and a tangential excursion out and back, integrated with the midpoint rule.
+fn work_absorbed(law: &ContactLaw, max_overlap: f64) -> f64 {
+    let n = Vec3::z();
+    let steps = 20_000;
+    let period = 1e-3;
+    let dt = period / steps as f64;
+    let mut h = ContactHistory::default();
+    let mut work = 0.0;
+    let position = |t: f64| {
+        let phase = std::f64::consts::PI * t / period;
+        (
+            max_overlap * phase.sin(),
+            0.3 * max_overlap * (2.0 * phase).sin(),
+        )
+    };
+    for k in 0..steps {
+        let t = (k as f64 + 0.5) * dt;
+        let (d0, s0) = position(t - 0.5 * dt);
+        let (d1, s1) = position(t + 0.5 * dt);
+        let overlap = 0.5 * (d0 + d1);
+        // Relative velocity of i: approach means −n; the tangential slip along x.
+        let v = Vec3::new((s1 - s0) / dt, 0.0, -(d1 - d0) / dt);
+        let g = geometry(n, overlap, v);
+        let f = law.evaluate(&g, &pair(), Some(&mut h), dt);
+        let force = n * f.normal + f.tangential;
+        // The contact force on i does work force·v dt on i; the contact absorbs minus that.
+        work -= force.dot(&v) * dt;
+    }
+    work
+}
+
+#[test]
+fn dissipative_laws_absorb_work_over_closed_cycles() {
+    for law in every_law() {
+        // Pure Storåkers is not passive below its threshold (see its unit tests);
+        // cycle it beyond, at 1e-5 m for this pair.
+        let max_overlap = 1e-5;
+        let absorbed = work_absorbed(&law, max_overlap);
+        let scale = law
+            .normal
+            .response(max_overlap, 0.0, R_EFF, &pair(), &mut max_overlap.clone())
+            .force
+            * max_overlap;
+        let name = format!(
+            "{} + {:?}",
+            law.normal.name(),
+            law.tangential.map(|t| t.name())
+        );
+        assert!(
+            absorbed >= -1e-6 * scale,
+            "{name}: absorbed {absorbed:e} J of scale {scale:e} J"
+        );
+        let dissipative =
+            law.normal.has_memory() || law.normal.has_own_dissipation() || law.tangential.is_some();
+        if dissipative {
+            assert!(
+                absorbed > 1e-6 * scale,
+                "{name}: a dissipative law absorbed {absorbed:e} J"
+            );
+        } else {
+            assert!(
+                absorbed.abs() <= 1e-6 * scale,
+                "{name}: an elastic law absorbed {absorbed:e} J"
+            );
+        }
+    }
+}
+
+#[test]
+fn newtons_third_law_holds_in_a_simulation() {
+    use tamp::scene::{self, schema::Scene};
+    let text = r#"{
+      "materials": [{"name": "s", "density": 7800, "youngs_modulus": 2e11, "poisson_ratio": 0.3,
+                     "hollomon": {"exponent": 0.1, "strength": 1e9}}],
+      "contact": {"normal": {"law": "hertz"}},
+      "particles": [
+        {"position": [-0.001, 0, 0], "radius": 0.001, "material": "s", "velocity": [0.1, 0.05, 0]},
+        {"position": [0.001, 0, 0], "radius": 0.001, "material": "s", "velocity": [-0.1, 0, 0.02]}
+      ],
+      "rotation": {},
+      "time_step": {"fixed": 1e-8},
+      "run": {"steps": 10}
+    }"#;
+    let base: Scene = serde_json::from_str(text).unwrap();
+    for law in every_law() {
+        let mut s = base.clone();
+        s.contact = tamp::scene::schema::ContactSpec {
+            normal: spec_of(&law.normal),
+            damping: None,
+            tangential: law.tangential.map(tangential_spec_of),
+            cohesion: None,
+        };
+        let mut sim = scene::build(&s).unwrap().sim;
+        for _ in 0..50 {
+            sim.step().unwrap();
+            let p = &sim.particles;
+            assert!(p.force[0].norm() > 0.0, "{}: no contact", law.normal.name());
+            assert!((p.force[0] + p.force[1]).norm() <= 1e-12 * p.force[0].norm());
+        }
+    }
+}
+
+fn spec_of(n: &NormalLaw) -> tamp::scene::schema::NormalSpec {
+    use tamp::scene::schema::NormalSpec as S;
+    match *n {
+        NormalLaw::Linear { stiffness } => S::Linear { stiffness },
+        NormalLaw::Hertz => S::Hertz {},
+        NormalLaw::KuwabaraKono { dissipation_time } => S::KuwabaraKono { dissipation_time },
+        NormalLaw::WaltonBraun {
+            loading_stiffness,
+            unloading_stiffness,
+        } => S::WaltonBraun {
+            loading_stiffness,
+            unloading_stiffness,
+        },
+        NormalLaw::Hysteretic {
+            stiffness,
+            hysteresis,
+        } => S::Hysteretic {
+            stiffness,
+            hysteresis,
+        },
+        NormalLaw::Storakers { min_with_hertz } => S::Storakers { min_with_hertz },
+    }
+}
+
+fn tangential_spec_of(t: TangentialLaw) -> tamp::scene::schema::TangentialSpec {
+    use tamp::scene::schema::{TangentialLawName as N, TangentialSpec};
+    let (law, stiffness, damping, beta) = match t {
+        TangentialLaw::MindlinDeresiewicz => (N::MindlinDeresiewicz, None, None, None),
+        TangentialLaw::Coulomb => (N::Coulomb, None, None, None),
+        TangentialLaw::HaffWerner { damping } => (N::HaffWerner, None, Some(damping), None),
+        TangentialLaw::CundallStrack { stiffness } => {
+            (N::CundallStrack, Some(stiffness), None, None)
+        }
+        TangentialLaw::WaltonBraun { stiffness } => (N::WaltonBraun, Some(stiffness), None, None),
+        TangentialLaw::MindlinNoSlip => (N::MindlinNoSlip, None, None, None),
+        TangentialLaw::Storakers { beta } => (N::Storakers, None, None, Some(beta)),
+    };
+    TangentialSpec {
+        law,
+        friction: MU,
+        friction_pairs: Vec::new(),
+        stiffness,
+        damping,
+        beta,
+    }
+}
