@@ -174,3 +174,65 @@ fn duplicate_friction_pairs_are_rejected() {
         &["contact.tangential.friction_pairs[1].materials: the pair"],
     );
 }
+
+#[test]
+fn storakers_without_hollomon_constants_is_named() {
+    let mut s = base();
+    s["contact"]["normal"] = json!({"law": "storakers"});
+    expect_input_error(
+        s,
+        &["materials[0].hollomon: is required by contact.normal.law 'storakers'"],
+    );
+}
+
+#[test]
+fn hollomon_needs_exactly_one_constant() {
+    let mut s = base();
+    s["materials"][0]["hollomon"] = json!({"exponent": 0.1, "strength": 1e9, "yield_stress": 8e8});
+    expect_input_error(s, &["materials[0].hollomon: give exactly one of"]);
+}
+
+#[test]
+fn damping_with_a_self_dissipating_law_is_refused() {
+    let mut s = base();
+    s["contact"]["normal"] = json!({"law": "kuwabara_kono", "dissipation_time": 1e-6});
+    expect_input_error(
+        s,
+        &["contact.damping: must be absent with contact.normal.law 'kuwabara_kono'"],
+    );
+}
+
+#[test]
+fn walton_braun_unloading_must_be_stiffer() {
+    let mut s = base();
+    s["contact"]["normal"] =
+        json!({"law": "walton_braun", "loading_stiffness": 2e3, "unloading_stiffness": 1e3});
+    expect_input_error(
+        s,
+        &["contact.normal.unloading_stiffness: must be >= loading_stiffness"],
+    );
+}
+
+#[test]
+fn tangential_parameters_must_match_the_law() {
+    let mut s = base();
+    s["contact"]["tangential"] = json!({"law": "coulomb", "friction": 0.3, "stiffness": 1e3});
+    expect_input_error(
+        s,
+        &["contact.tangential.stiffness: is not a parameter of contact.tangential.law 'coulomb'"],
+    );
+    let mut s = base();
+    s["contact"]["tangential"] = json!({"law": "haff_werner", "friction": 0.3});
+    expect_input_error(
+        s,
+        &["contact.tangential.damping: is required by contact.tangential.law 'haff_werner'"],
+    );
+}
+
+#[test]
+fn cohesion_cutoff_must_exceed_min_separation() {
+    let mut s = base();
+    s["contact"]["cohesion"] =
+        json!({"law": "van_der_waals", "hamaker": 1e-19, "min_separation": 4e-10, "cutoff": 1e-10});
+    expect_input_error(s, &["contact.cohesion.cutoff: must be > min_separation"]);
+}
