@@ -342,3 +342,45 @@ fn tangential_spec_of(t: TangentialLaw) -> tamp::scene::schema::TangentialSpec {
         beta,
     }
 }
+
+#[test]
+fn frictionless_tangential_laws_keep_the_normal_memory() {
+    // With μ = 0 the tangential laws reset their own state every step; the normal
+    // law's δ_max must survive, or Walton–Braun would never unload elastically.
+    let frictionless = PairProperties {
+        friction: 0.0,
+        ..pair()
+    };
+    for t in [
+        TangentialLaw::MindlinDeresiewicz,
+        TangentialLaw::WaltonBraun { stiffness: 1e6 },
+    ] {
+        let law = ContactLaw {
+            normal: NormalLaw::WaltonBraun {
+                loading_stiffness: 1e7,
+                unloading_stiffness: 2e7,
+            },
+            damping: None,
+            tangential: Some(t),
+            cohesion: None,
+        };
+        let mut h = ContactHistory::default();
+        let v = Vec3::new(1e-3, 0.0, 0.0);
+        for overlap in [1e-6, 2e-6] {
+            law.evaluate(
+                &geometry(Vec3::z(), overlap, v),
+                &frictionless,
+                Some(&mut h),
+                1e-6,
+            );
+        }
+        let f = law.evaluate(
+            &geometry(Vec3::z(), 1.5e-6, v),
+            &frictionless,
+            Some(&mut h),
+            1e-6,
+        );
+        // Unloading line: k2 (δ − δ_max (1 − k1/k2)) = 2e7 (1.5e-6 − 1e-6) = 10 N.
+        assert!((f.normal - 10.0).abs() < 1e-9, "{}: {}", t.name(), f.normal);
+    }
+}

@@ -254,7 +254,15 @@ impl NormalLaw {
                     ((p + 1.0) * 0.5 * effective_mass * speed * speed / c).powf(1.0 / (p + 1.0));
                 let (peak, k_plastic) = s.loading(d);
                 let k_unloading = (6.0 * effective_radius * e * e * peak).cbrt();
-                k_plastic.max(k_unloading)
+                // With the Hertz cap the contact may load elastically all the way: take
+                // the Hertz impact stiffness too, whichever is larger.
+                let k_hertz = if min_with_hertz {
+                    let d = hertz::hertz_max_overlap(effective_mass, speed, effective_radius, e);
+                    hertz::hertz_stiffness(d, effective_radius, e)
+                } else {
+                    0.0
+                };
+                k_plastic.max(k_unloading).max(k_hertz)
             }
         }
     }

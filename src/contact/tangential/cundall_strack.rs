@@ -8,7 +8,9 @@
 //! friction cone. Before each increment the stored spring is rotated into the current
 //! tangent plane with its length kept, so a rigid rotation of the contact pair
 //! produces no spurious force. F_n is the total normal force (elastic + damping),
-//! clamped at zero, as in LIGGGHTS's `tangential history`.
+//! clamped at zero: a damped contact pulling its bodies together near separation
+//! carries no friction (LIGGGHTS's `tangential history` uses |F_n| instead;
+//! docs/models/cundall_strack.md).
 //! History: the spring vector ξ_s (m). Parameters: k_s (N/m), μ from the material pair.
 
 use crate::particles::Vec3;

@@ -37,8 +37,10 @@ pub fn mindlin_deresiewicz_force(
     history.previous_normal_force = n;
     let mu_n = friction * n;
     if mu_n <= 0.0 {
+        // Forget the tangential state only; δ_max belongs to the normal law.
         *history = ContactHistory {
             previous_normal_force: n,
+            max_overlap: history.max_overlap,
             ..ContactHistory::default()
         };
         return Vec3::zeros();

@@ -29,15 +29,24 @@ pub fn walton_braun_tangential_force(
 ) -> Vec3 {
     let mu_n = friction * normal_force.max(0.0);
     if mu_n <= 0.0 {
-        *history = ContactHistory::default();
+        // Forget the tangential state only; δ_max belongs to the normal law.
+        *history = ContactHistory {
+            max_overlap: history.max_overlap,
+            ..ContactHistory::default()
+        };
         return Vec3::zeros();
     }
     let Some(step) = split(history, normal, tangential_velocity, dt) else {
         return cap_to_cone(history.tangential, friction, normal_force);
     };
     let f = step.force_along;
-    let increasing = step.along >= 0.0;
     let was_increasing = history.branch != TangentialBranch::Unloading;
+    // A zero increment keeps the current direction (and F*).
+    let increasing = if step.along == 0.0 {
+        was_increasing
+    } else {
+        step.along > 0.0
+    };
     if increasing != was_increasing {
         history.turning_force = f;
         history.branch = if increasing {
