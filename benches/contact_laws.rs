@@ -87,7 +87,10 @@ fn law(
 /// rotate–increment–cap path that every sliding contact takes each step. That is
 /// acceptable and representative of sliding contacts in sheared packings; a
 /// sticking contact runs the same arithmetic except the final rescale onto the
-/// friction cone.
+/// friction cone. Because each call reads the state the previous call wrote, the
+/// history laws are timed latency-bound; in the simulation consecutive contacts
+/// have independent records and can overlap, so for them these figures are an
+/// upper bound.
 fn bench_group(c: &mut Criterion, group: &str, cases: Vec<(&str, ContactLaw, ContactGeometry)>) {
     let pair = pair_properties();
     let mut group = c.benchmark_group(group);
