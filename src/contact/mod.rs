@@ -93,6 +93,25 @@ impl ContactLaw {
         }
     }
 
+    /// The tangential input of a stored contact state at rest (for energies and
+    /// stiffnesses, which depend on the overlap but not on the motion).
+    fn resting_input(
+        &self,
+        overlap: f64,
+        effective_radius: f64,
+        pair: &PairProperties,
+        normal_stiffness: f64,
+    ) -> TangentialInput {
+        let g = ContactGeometry {
+            normal: Vec3::z(),
+            overlap,
+            effective_radius,
+            effective_mass: 0.0,
+            relative_velocity: Vec3::zeros(),
+        };
+        self.tangential_input(&g, pair, 0.0, normal_stiffness, 0.0)
+    }
+
     /// Evaluate the enabled roles in their fixed order: normal, damping, tangential
     /// (limited by the contact's normal force), cohesion. `history` is `None` exactly
     /// when the law has none; it is reset while the bodies are apart.
@@ -154,17 +173,13 @@ impl ContactLaw {
             .normal
             .energy(overlap, effective_radius, pair, history.max_overlap);
         let tangential = self.tangential.map_or(0.0, |t| {
-            let g = ContactGeometry {
-                normal: Vec3::z(),
-                overlap,
-                effective_radius,
-                effective_mass: 0.0,
-                relative_velocity: Vec3::zeros(),
-            };
             let k_n = self
                 .normal
                 .stiffness(overlap, effective_radius, pair, history.max_overlap);
-            t.energy(&self.tangential_input(&g, pair, 0.0, k_n, 0.0), history)
+            t.energy(
+                &self.resting_input(overlap, effective_radius, pair, k_n),
+                history,
+            )
         });
         normal + tangential + cohesion
     }
@@ -183,14 +198,7 @@ impl ContactLaw {
             .normal
             .stiffness(overlap, effective_radius, pair, max_overlap);
         let k_t = self.tangential.map_or(0.0, |t| {
-            let g = ContactGeometry {
-                normal: Vec3::z(),
-                overlap,
-                effective_radius,
-                effective_mass: 0.0,
-                relative_velocity: Vec3::zeros(),
-            };
-            t.stiffness(&self.tangential_input(&g, pair, 0.0, k_n, 0.0))
+            t.stiffness(&self.resting_input(overlap, effective_radius, pair, k_n))
         });
         (k_n, k_t)
     }

@@ -13,6 +13,7 @@
 //! docs/models/cundall_strack.md).
 //! History: the spring vector ξ_s (m). Parameters: k_s (N/m), μ from the material pair.
 
+use super::incremental::cap_to_cone;
 use crate::particles::Vec3;
 
 /// Rotate the stored spring into the plane normal to `normal`, keeping its length.
@@ -44,19 +45,12 @@ pub fn cundall_strack_force(
 ) -> Vec3 {
     *spring = rotate_into_plane(*spring, normal) + tangential_velocity * dt;
     let trial = -*spring * stiffness;
-    let limit = friction * normal_force.max(0.0);
-    let magnitude = trial.norm();
-    if magnitude > limit {
-        let force = if magnitude > 0.0 {
-            trial * (limit / magnitude)
-        } else {
-            trial
-        };
+    let force = cap_to_cone(trial, friction, normal_force);
+    if force != trial {
+        // Gross sliding: shorten the spring so that it sits on the cone.
         *spring = -force / stiffness;
-        force
-    } else {
-        trial
     }
+    force
 }
 
 #[cfg(test)]

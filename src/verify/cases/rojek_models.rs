@@ -4,6 +4,7 @@
 //! the closed forms the compression cases compare against, written out from the
 //! papers' equations independently of `crate::contact`.
 
+use crate::error::{Result, TampError};
 use crate::scene::schema::{HollomonSpec, NormalSpec, Scene};
 
 /// (quantity suffix, Hollomon exponent; `None` = Hertz).
@@ -32,6 +33,21 @@ pub fn with_model(base: &Scene, exponent: Option<f64>) -> Scene {
         }
     }
     s
+}
+
+/// (E, ν, σ_Y) of the scene's first material, which must give `hollomon.yield_stress`.
+pub fn material_constants(scene: &Scene) -> Result<(f64, f64, f64)> {
+    let mat = &scene.materials[0];
+    let yield_stress = mat
+        .hollomon
+        .as_ref()
+        .and_then(|h| h.yield_stress)
+        .ok_or_else(|| TampError::Other("the material needs hollomon.yield_stress".into()))?;
+    Ok((
+        mat.youngs_modulus.unwrap_or(0.0),
+        mat.poisson_ratio.unwrap_or(0.0),
+        yield_stress,
+    ))
 }
 
 /// E* of two spheres of one material (Rojek eq 3).

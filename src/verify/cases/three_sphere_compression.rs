@@ -7,8 +7,8 @@
 //! R* = 10·2/12 µm, inverted at 0.02 N. The paper reads 0.4–0.5 µm for Storåkers.
 
 use super::probe::compress_to_force;
-use super::rojek_models::{MODELS, overlap_at_force, with_model};
-use crate::error::{Result, TampError};
+use super::rojek_models::{MODELS, material_constants, overlap_at_force, with_model};
+use crate::error::Result;
 use crate::material::effective_radius;
 use crate::scene;
 use crate::verify::{CaseContext, Measured};
@@ -17,16 +17,7 @@ const FORCE: f64 = 0.02;
 
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let base = ctx.scene()?;
-    let mat = &base.materials[0];
-    let (e, nu) = (
-        mat.youngs_modulus.unwrap_or(0.0),
-        mat.poisson_ratio.unwrap_or(0.0),
-    );
-    let yield_stress = mat
-        .hollomon
-        .as_ref()
-        .and_then(|h| h.yield_stress)
-        .ok_or_else(|| TampError::Other("the material needs hollomon.yield_stress".into()))?;
+    let (e, nu, yield_stress) = material_constants(&base)?;
     let r_eff = effective_radius(base.particles[0].radius, base.particles[1].radius);
     let mut out = Vec::new();
     for (name, exponent) in MODELS {

@@ -8,8 +8,8 @@
 //! `two_sphere_compression.csv` and `.svg` in the report directory.
 
 use super::probe::{CompressionSample, compress_to_force};
-use super::rojek_models::{MODELS, overlap_at_force, with_model};
-use crate::error::{Result, TampError};
+use super::rojek_models::{MODELS, material_constants, overlap_at_force, with_model};
+use crate::error::Result;
 use crate::output::plot::{Panel, Series, write_svg};
 use crate::scene;
 use crate::verify::{CaseContext, Measured};
@@ -19,16 +19,7 @@ const PRESSURE: f64 = 50e6;
 
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let base = ctx.scene()?;
-    let mat = &base.materials[0];
-    let (e, nu) = (
-        mat.youngs_modulus.unwrap_or(0.0),
-        mat.poisson_ratio.unwrap_or(0.0),
-    );
-    let yield_stress = mat
-        .hollomon
-        .as_ref()
-        .and_then(|h| h.yield_stress)
-        .ok_or_else(|| TampError::Other("the material needs hollomon.yield_stress".into()))?;
+    let (e, nu, yield_stress) = material_constants(&base)?;
     let radius = base.particles[0].radius;
     let target = PRESSURE * 4.0 * radius * radius;
 
