@@ -32,3 +32,15 @@ pub struct ContactHistory {
     /// Unit loading axis of the scalar tangential laws (Mindlin–Deresiewicz, Walton–Braun).
     pub axis: Vec3,
 }
+
+impl ContactHistory {
+    /// Forget the tangential state (force, axis, branch, turning point) while the
+    /// bodies stay in contact; δ_max belongs to the normal law and is kept.
+    pub fn forget_tangential(&mut self, normal_force: f64) {
+        *self = ContactHistory {
+            max_overlap: self.max_overlap,
+            previous_normal_force: normal_force,
+            ..ContactHistory::default()
+        };
+    }
+}

@@ -139,7 +139,7 @@ impl TangentialLawName {
         }
     }
 
-    /// The law's own parameter, if it has one: (field, required).
+    /// The field of the law's own parameter (required exactly for this law), if any.
     pub fn parameter(&self) -> Option<&'static str> {
         match self {
             TangentialLawName::CundallStrack | TangentialLawName::WaltonBraun => Some("stiffness"),

@@ -18,7 +18,7 @@
 //! Stiffness for the time step: k₀ = 8 G* a (θ = 1, the largest).
 
 use super::incremental::cap_to_cone;
-use super::scalar_axis::split;
+use super::scalar_axis::{finish, split};
 use crate::contact::history::{ContactHistory, TangentialBranch};
 use crate::particles::Vec3;
 
@@ -37,12 +37,7 @@ pub fn mindlin_deresiewicz_force(
     history.previous_normal_force = n;
     let mu_n = friction * n;
     if mu_n <= 0.0 {
-        // Forget the tangential state only; δ_max belongs to the normal law.
-        *history = ContactHistory {
-            previous_normal_force: n,
-            max_overlap: history.max_overlap,
-            ..ContactHistory::default()
-        };
+        history.forget_tangential(n);
         return Vec3::zeros();
     }
     let Some(step) = split(history, normal, tangential_velocity, dt) else {
@@ -84,13 +79,7 @@ pub fn mindlin_deresiewicz_force(
         Loading => {}
     }
     let force = history.tangential + step.axis * along + step.across * (initial_stiffness * theta);
-    history.tangential = cap_to_cone(force, friction, n);
-    history.axis = if history.branch == Loading && history.tangential.norm_squared() > 0.0 {
-        history.tangential.normalize()
-    } else {
-        step.axis
-    };
-    history.tangential
+    finish(history, force, step.axis, mu_n)
 }
 
 #[cfg(test)]

@@ -13,7 +13,8 @@
 //! among several (Thornton & Yin 1991 discuss the non-uniqueness).
 
 use super::cundall_strack::rotate_into_plane;
-use crate::contact::history::ContactHistory;
+use super::incremental::cap_to_cone;
+use crate::contact::history::{ContactHistory, TangentialBranch};
 use crate::particles::Vec3;
 
 /// Displacement increment split on the axis: (ê, along, across).
@@ -50,4 +51,17 @@ pub fn split(
         along,
         across: increment - axis * along,
     })
+}
+
+/// Store the new force (capped to the cone) and the axis for the next step: the
+/// axis follows the force during first loading and stays frozen afterwards.
+pub fn finish(history: &mut ContactHistory, force: Vec3, axis: Vec3, limit: f64) -> Vec3 {
+    history.tangential = cap_to_cone(force, 1.0, limit);
+    history.axis =
+        if history.branch == TangentialBranch::Loading && history.tangential.norm_squared() > 0.0 {
+            history.tangential.normalize()
+        } else {
+            axis
+        };
+    history.tangential
 }

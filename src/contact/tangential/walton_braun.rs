@@ -13,7 +13,7 @@
 //! History: force vector, axis, direction, F*. Stiffness for the time step: k₀.
 
 use super::incremental::cap_to_cone;
-use super::scalar_axis::split;
+use super::scalar_axis::{finish, split};
 use crate::contact::history::{ContactHistory, TangentialBranch};
 use crate::particles::Vec3;
 
@@ -29,11 +29,7 @@ pub fn walton_braun_tangential_force(
 ) -> Vec3 {
     let mu_n = friction * normal_force.max(0.0);
     if mu_n <= 0.0 {
-        // Forget the tangential state only; δ_max belongs to the normal law.
-        *history = ContactHistory {
-            max_overlap: history.max_overlap,
-            ..ContactHistory::default()
-        };
+        history.forget_tangential(0.0);
         return Vec3::zeros();
     }
     let Some(step) = split(history, normal, tangential_velocity, dt) else {
@@ -63,14 +59,7 @@ pub fn walton_braun_tangential_force(
     };
     let stiffness = initial_stiffness * ratio.clamp(0.0, 1.0).cbrt();
     let force = history.tangential + (step.axis * step.along + step.across) * stiffness;
-    history.tangential = cap_to_cone(force, friction, normal_force);
-    history.axis =
-        if history.branch == TangentialBranch::Loading && history.tangential.norm_squared() > 0.0 {
-            history.tangential.normalize()
-        } else {
-            step.axis
-        };
-    history.tangential
+    finish(history, force, step.axis, mu_n)
 }
 
 #[cfg(test)]
