@@ -1,6 +1,7 @@
 //! tamp: a verification-first discrete element method reference implementation for
 //! powder packing and cold die compaction. See README.md and docs/architecture.md.
 
+pub mod boundary;
 pub mod contact;
 pub mod detect;
 pub mod error;
@@ -11,6 +12,7 @@ pub mod particles;
 pub mod run;
 pub mod scene;
 pub mod simulation;
+pub mod space;
 pub mod timestep;
 pub mod verify;
 pub mod walls;

@@ -4,6 +4,7 @@
 use proptest::prelude::*;
 use tamp::detect::{brute, cells};
 use tamp::particles::Vec3;
+use tamp::space::Space;
 
 fn cloud() -> impl Strategy<Value = (Vec<Vec3>, Vec<f64>, f64)> {
     (2usize..300, 1.0f64..20.0, 0.5f64..30.0, 0.0f64..0.5).prop_flat_map(
@@ -25,7 +26,7 @@ proptest! {
     #![proptest_config(ProptestConfig::with_cases(200))]
     #[test]
     fn cells_match_brute_force((positions, radii, margin) in cloud()) {
-        let a = brute::candidate_pairs(&positions, &radii, margin);
+        let a = brute::candidate_pairs(&positions, &radii, margin, &Space::open());
         let b = cells::candidate_pairs(&positions, &radii, margin);
         prop_assert_eq!(a, b);
     }

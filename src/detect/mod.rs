@@ -9,6 +9,7 @@ pub mod cells;
 
 use crate::contact::history::ContactHistory;
 use crate::particles::Vec3;
+use crate::space::Space;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Detector {
@@ -22,9 +23,14 @@ impl Detector {
         position: &[Vec3],
         radius: &[f64],
         margin: f64,
+        space: &Space,
     ) -> Vec<(u32, u32)> {
         match self {
-            Detector::Brute => brute::candidate_pairs(position, radius, margin),
+            Detector::Brute => brute::candidate_pairs(position, radius, margin, space),
+            // Periodic cells are not written yet: fall back to the exact O(N²) search.
+            Detector::Cells if space.is_periodic() => {
+                brute::candidate_pairs(position, radius, margin, space)
+            }
             Detector::Cells => cells::candidate_pairs(position, radius, margin),
         }
     }
@@ -42,14 +48,22 @@ pub struct NeighborList {
     pub pairs: Vec<(u32, u32)>,
     /// One slot per pair when contacts have history, otherwise empty.
     pub history: Vec<ContactHistory>,
+    pub space: Space,
     keeps_history: bool,
     reference_position: Vec<Vec3>,
     pub builds: u64,
 }
 
 impl NeighborList {
-    pub fn new(detector: Detector, skin: f64, reach: f64, keeps_history: bool) -> Self {
+    pub fn new(
+        detector: Detector,
+        skin: f64,
+        reach: f64,
+        keeps_history: bool,
+        space: Space,
+    ) -> Self {
         NeighborList {
+            space,
             detector,
             skin,
             reach,
@@ -75,9 +89,9 @@ impl NeighborList {
     }
 
     pub fn rebuild(&mut self, position: &[Vec3], radius: &[f64]) {
-        let pairs = self
-            .detector
-            .candidate_pairs(position, radius, self.skin + self.reach);
+        let pairs =
+            self.detector
+                .candidate_pairs(position, radius, self.skin + self.reach, &self.space);
         if self.keeps_history {
             let mut history = vec![ContactHistory::default(); pairs.len()];
             let mut old = 0;

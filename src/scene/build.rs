@@ -231,6 +231,7 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
         scene.broad_phase.skin_fraction * r_min,
         law.reach(),
         law.has_history(),
+        crate::space::Space::open(),
     );
     let limits = StabilityLimits {
         max_overlap_fraction: scene.stability.max_overlap_fraction,
