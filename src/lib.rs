@@ -5,6 +5,8 @@ pub mod boundary;
 pub mod contact;
 pub mod detect;
 pub mod error;
+pub mod expression;
+pub mod growth;
 pub mod integrate;
 pub mod material;
 pub mod output;
@@ -15,7 +17,6 @@ pub mod simulation;
 pub mod space;
 pub mod timestep;
 pub mod verify;
-pub mod walls;
 
 pub use error::{Result, TampError};
 

@@ -10,17 +10,18 @@
 //! walls, driven particles). Dissipation D = E_mech(0) + W − E_mech ≥ 0 for every law
 //! tamp has; a clearly negative D means the integration is adding energy (unstable).
 
+use crate::boundary::{Boundary, shape::ShapeContact};
 use crate::contact::{
     ContactGeometry, ContactLaw, history::ContactHistory, normal::NormalLaw,
     tangential::TangentialLaw,
 };
 use crate::detect::NeighborList;
 use crate::error::{Result, TampError};
+use crate::growth::Growth;
 use crate::integrate;
 use crate::material::{Material, PairTable, effective_mass, effective_radius};
 use crate::particles::{Motion, Particles, Vec3};
 use crate::timestep::critical_time_step;
-use crate::walls::PlaneWall;
 
 /// Effective mass of a pair; a prescribed particle moves whatever the force, so it
 /// counts as infinitely heavy, like a wall.
@@ -56,7 +57,8 @@ impl Default for StabilityLimits {
 #[derive(Clone, Debug)]
 pub struct Simulation {
     pub particles: Particles,
-    pub walls: Vec<PlaneWall>,
+    /// Boundaries (walls, containers, meshes), each with its own shape, material and motion.
+    pub walls: Vec<Boundary>,
     pub materials: Vec<Material>,
     pub pair_table: PairTable,
     pub law: ContactLaw,
@@ -66,8 +68,11 @@ pub struct Simulation {
     pub step: u64,
     pub time: f64,
     pub neighbors: NeighborList,
-    /// History of particle–wall contacts, `[wall][particle]`; empty when the law keeps none.
-    wall_history: Vec<Vec<ContactHistory>>,
+    /// History of particle–boundary contacts, `[boundary][particle]` → (facet, history)
+    /// for each facet touched; empty when the law keeps none.
+    wall_history: Vec<Vec<Vec<(u32, ContactHistory)>>>,
+    /// Scratch list of the contacts of one particle with one boundary.
+    scratch: Vec<ShapeContact>,
     /// Force the particles exert on each wall at the current step, N.
     pub wall_force: Vec<Vec3>,
     pub limits: StabilityLimits,
@@ -78,13 +83,16 @@ pub struct Simulation {
     initial_mechanical_energy: f64,
     /// Largest overlap / smaller radius seen so far.
     pub max_overlap_ratio: f64,
+    /// Growth stage (Zhong 2009 §6.1): radii grow to `target_radius`, gravity off.
+    pub growth: Option<Growth>,
+    pub target_radius: Vec<f64>,
 }
 
 impl Simulation {
     #[allow(clippy::too_many_arguments)]
     pub fn new(
         particles: Particles,
-        walls: Vec<PlaneWall>,
+        walls: Vec<Boundary>,
         materials: Vec<Material>,
         pair_table: PairTable,
         law: ContactLaw,
@@ -96,7 +104,7 @@ impl Simulation {
     ) -> Result<Self> {
         let n = particles.len();
         let wall_history = if law.has_history() {
-            vec![vec![ContactHistory::default(); n]; walls.len()]
+            vec![vec![Vec::new(); n]; walls.len()]
         } else {
             Vec::new()
         };
@@ -115,12 +123,15 @@ impl Simulation {
             time: 0.0,
             neighbors,
             wall_history,
+            scratch: Vec::new(),
             limits,
             external_work: 0.0,
             external_work_scale: 0.0,
             external_power: 0.0,
             initial_mechanical_energy: 0.0,
             max_overlap_ratio: 0.0,
+            growth: None,
+            target_radius: Vec::new(),
         };
         // Forces at t = 0 with a zero step, so no tangential spring is advanced before
         // the first real step.
@@ -138,9 +149,24 @@ impl Simulation {
         if self.rotation {
             integrate::kick_spin(&mut self.particles, 0.5 * dt);
         }
-        let gravity_work = integrate::drift(&mut self.particles, dt, self.gravity.as_ref());
-        for wall in &mut self.walls {
-            wall.advance(dt);
+        let growing = self.is_growing();
+        let gravity = self.active_gravity();
+        let gravity_work = integrate::drift(&mut self.particles, dt, gravity.as_ref());
+        if let Some(growth) = self.growth.filter(|_| growing) {
+            let f = growth.fraction(self.time + dt);
+            for (r, target) in self.particles.radius.iter_mut().zip(&self.target_radius) {
+                *r = target * f;
+            }
+        }
+        let space = self.neighbors.space;
+        if space.is_periodic() {
+            self.particles
+                .position
+                .iter_mut()
+                .for_each(|x| space.wrap(x));
+        }
+        for (wall, force) in self.walls.iter_mut().zip(&self.wall_force) {
+            wall.advance(self.time, dt, force);
         }
         self.neighbors
             .update(&self.particles.position, &self.particles.radius);
@@ -151,6 +177,9 @@ impl Simulation {
         }
         self.step += 1;
         self.time += dt;
+        if growing && !self.is_growing() {
+            self.restart_energy_book();
+        }
         if let Some(i) = integrate::first_non_finite(&self.particles) {
             return Err(self.unstable(format!(
                 "particle {i} has a non-finite position, velocity or spin"
@@ -162,10 +191,50 @@ impl Simulation {
         self.external_power = power;
         self.external_work += step_work;
         self.external_work_scale += step_work.abs();
-        if self.limits.check_every > 0 && self.step.is_multiple_of(self.limits.check_every) {
+        if self.limits.check_every > 0
+            && self.step.is_multiple_of(self.limits.check_every)
+            && !self.is_growing()
+        {
             self.check_energy()?;
         }
         Ok(())
+    }
+
+    /// Attach a growth stage to a simulation built with its particles at the starting
+    /// size; `target_radius` are the final radii.
+    pub fn set_growth(&mut self, growth: Growth, target_radius: Vec<f64>) {
+        self.growth = Some(growth);
+        self.target_radius = target_radius;
+    }
+
+    /// Radius particle i has at the end of any growth stage.
+    fn final_radius(&self, i: usize) -> f64 {
+        if self.growth.is_some() {
+            self.target_radius[i]
+        } else {
+            self.particles.radius[i]
+        }
+    }
+
+    pub fn is_growing(&self) -> bool {
+        self.growth.is_some_and(|g| g.is_growing(self.time))
+    }
+
+    /// Gravity as it acts now: absent during a growth stage.
+    pub fn active_gravity(&self) -> Option<Vec3> {
+        if self.is_growing() {
+            None
+        } else {
+            self.gravity
+        }
+    }
+
+    /// Make the present state the reference of the energy book (W = 0, D = 0).
+    fn restart_energy_book(&mut self) {
+        self.external_work = 0.0;
+        self.external_work_scale = 0.0;
+        self.external_power = self.prescribed_power();
+        self.initial_mechanical_energy = self.mechanical_energy();
     }
 
     /// Run `steps` steps, calling `observe` after each.
@@ -198,13 +267,14 @@ impl Simulation {
     /// contact velocities and torques are accumulated. `HIST`: contacts carry
     /// history (a tangential state or the normal law's δ_max).
     fn compute_forces_with<const ROT: bool, const HIST: bool>(&mut self) -> Result<()> {
+        let gravity = self.active_gravity();
         let p = &mut self.particles;
         let n = p.len();
         p.force.iter_mut().for_each(|f| *f = Vec3::zeros());
         if ROT {
             p.torque.iter_mut().for_each(|t| *t = Vec3::zeros());
         }
-        if let Some(g) = self.gravity {
+        if let Some(g) = gravity {
             for i in 0..n {
                 if p.motion[i] == Motion::Free {
                     p.force[i] += g * p.mass[i];
@@ -216,10 +286,11 @@ impl Simulation {
         let mut worst = self.max_overlap_ratio;
         let torques = ROT && self.law.tangential.is_some();
         let law_reach = self.law.reach();
+        let space = self.neighbors.space;
 
         for (k, &(i, j)) in self.neighbors.pairs.iter().enumerate() {
             let (i, j) = (i as usize, j as usize);
-            let d = p.position[i] - p.position[j];
+            let d = space.displacement(&p.position[i], &p.position[j]);
             let reach = p.radius[i] + p.radius[j];
             let dist2 = d.norm_squared();
             if dist2 >= (reach + law_reach).powi(2) {
@@ -284,64 +355,88 @@ impl Simulation {
             }
         }
 
+        let mut found = std::mem::take(&mut self.scratch);
         for (w, wall) in self.walls.iter().enumerate() {
             let mut on_wall = Vec3::zeros();
             for i in 0..n {
-                let overlap = p.radius[i] - wall.distance(&p.position[i]);
-                if overlap <= -law_reach {
+                found.clear();
+                wall.contacts(&p.position[i], p.radius[i], law_reach, &mut found);
+                if found.is_empty() {
                     if HIST {
-                        self.wall_history[w][i] = ContactHistory::default();
+                        self.wall_history[w][i].clear();
                     }
                     continue;
                 }
-                let ratio = overlap / p.radius[i];
-                worst = worst.max(ratio);
-                if ratio > max_fraction {
-                    return Err(TampError::Unstable {
-                        step: self.step,
-                        time: self.time,
-                        what: format!(
-                            "contact {i}-wall '{}': overlap {overlap:.4e} m is {ratio:.3} of the radius (limit {max_fraction})",
-                            wall.name
-                        ),
-                    });
-                }
-                let normal = wall.normal;
-                let lever = p.radius[i] - 0.5 * overlap;
-                let mut relative_velocity = p.velocity[i] - wall.velocity;
-                if ROT {
-                    relative_velocity -= p.omega[i].cross(&normal) * lever;
-                }
-                let g = ContactGeometry {
-                    normal,
-                    overlap,
-                    effective_radius: p.radius[i],
-                    effective_mass: p.mass[i],
-                    relative_velocity,
-                };
-                let pair = self.pair_table.get(p.material[i], wall.material);
-                let history = if HIST {
-                    Some(&mut self.wall_history[w][i])
+                // Histories of the facets touched last step, carried to this step's contacts.
+                let previous = if HIST {
+                    std::mem::take(&mut self.wall_history[w][i])
                 } else {
-                    None
+                    Vec::new()
                 };
-                let f = self.law.evaluate(&g, pair, history, dt);
-                let total = normal * f.normal + f.tangential;
-                if !total.iter().all(|c| c.is_finite()) {
-                    return Err(TampError::Unstable {
-                        step: self.step,
-                        time: self.time,
-                        what: format!("contact {i}-wall '{}': non-finite contact force", wall.name),
-                    });
-                }
-                p.force[i] += total;
-                on_wall -= total;
-                if torques {
-                    p.torque[i] += -normal.cross(&f.tangential) * lever;
+                for c in &found {
+                    let overlap = c.overlap;
+                    let ratio = overlap / p.radius[i];
+                    worst = worst.max(ratio);
+                    if ratio > max_fraction {
+                        return Err(TampError::Unstable {
+                            step: self.step,
+                            time: self.time,
+                            what: format!(
+                                "contact {i}-wall '{}' (facet {}): overlap {overlap:.4e} m is {ratio:.3} of the radius (limit {max_fraction})",
+                                wall.name, c.facet
+                            ),
+                        });
+                    }
+                    let normal = c.normal;
+                    let lever = p.radius[i] - 0.5 * overlap;
+                    let mut relative_velocity = p.velocity[i] - wall.velocity;
+                    if ROT {
+                        relative_velocity -= p.omega[i].cross(&normal) * lever;
+                    }
+                    let g = ContactGeometry {
+                        normal,
+                        overlap,
+                        effective_radius: p.radius[i],
+                        effective_mass: p.mass[i],
+                        relative_velocity,
+                    };
+                    let pair = self.pair_table.get(p.material[i], wall.material);
+                    let mut history = if HIST {
+                        previous
+                            .iter()
+                            .find(|(f, _)| *f == c.facet)
+                            .map(|(_, h)| *h)
+                            .unwrap_or_default()
+                    } else {
+                        ContactHistory::default()
+                    };
+                    let f = self
+                        .law
+                        .evaluate(&g, pair, HIST.then_some(&mut history), dt);
+                    if HIST {
+                        self.wall_history[w][i].push((c.facet, history));
+                    }
+                    let total = normal * f.normal + f.tangential;
+                    if !total.iter().all(|c| c.is_finite()) {
+                        return Err(TampError::Unstable {
+                            step: self.step,
+                            time: self.time,
+                            what: format!(
+                                "contact {i}-wall '{}' (facet {}): non-finite contact force",
+                                wall.name, c.facet
+                            ),
+                        });
+                    }
+                    p.force[i] += total;
+                    on_wall -= total;
+                    if torques {
+                        p.torque[i] += -normal.cross(&f.tangential) * lever;
+                    }
                 }
             }
             self.wall_force[w] = on_wall;
         }
+        self.scratch = found;
         self.max_overlap_ratio = worst;
         Ok(())
     }
@@ -376,23 +471,31 @@ impl Simulation {
             })
     }
 
-    /// Particle–wall contacts closer than `beyond` to touching: (wall, particle, overlap).
-    fn touching_walls(&self, beyond: f64) -> impl Iterator<Item = (usize, usize, f64)> + '_ {
+    /// Particle–boundary contacts closer than `beyond` to touching:
+    /// (boundary, particle, facet, overlap).
+    fn touching_walls(&self, beyond: f64) -> Vec<(usize, usize, u32, f64)> {
         let p = &self.particles;
-        self.walls.iter().enumerate().flat_map(move |(w, wall)| {
-            (0..p.len()).filter_map(move |i| {
-                let overlap = p.radius[i] - wall.distance(&p.position[i]);
-                (overlap > -beyond).then_some((w, i, overlap))
-            })
-        })
+        let mut out = Vec::new();
+        let mut found = Vec::new();
+        for (w, wall) in self.walls.iter().enumerate() {
+            for i in 0..p.len() {
+                found.clear();
+                wall.contacts(&p.position[i], p.radius[i], beyond, &mut found);
+                out.extend(found.iter().map(|c| (w, i, c.facet, c.overlap)));
+            }
+        }
+        out
     }
 
     fn pair_history(&self, k: usize) -> Option<&ContactHistory> {
         self.neighbors.history.get(k)
     }
 
-    fn wall_contact_history(&self, w: usize, i: usize) -> Option<&ContactHistory> {
-        self.wall_history.get(w).and_then(|h| h.get(i))
+    fn wall_contact_history(&self, w: usize, i: usize, facet: u32) -> Option<&ContactHistory> {
+        self.wall_history
+            .get(w)
+            .and_then(|h| h.get(i))
+            .and_then(|list| list.iter().find(|(f, _)| *f == facet).map(|(_, h)| h))
     }
 
     /// Energy stored in all contacts (pairs and walls) and in cohesion, J.
@@ -410,10 +513,11 @@ impl Simulation {
             .sum();
         let walls: f64 = self
             .touching_walls(reach)
-            .map(|(w, i, overlap)| {
+            .into_iter()
+            .map(|(w, i, facet, overlap)| {
                 let pair = self.pair_table.get(p.material[i], self.walls[w].material);
-                self.law
-                    .stored_energy(overlap, p.radius[i], pair, self.wall_contact_history(w, i))
+                let history = self.wall_contact_history(w, i, facet);
+                self.law.stored_energy(overlap, p.radius[i], pair, history)
             })
             .sum();
         pairs + walls
@@ -456,13 +560,17 @@ impl Simulation {
 
     /// Number of particle–particle and particle–wall contacts at the current positions.
     pub fn contact_count(&self) -> usize {
-        self.touching_pairs(0.0).count() + self.touching_walls(0.0).count()
+        self.touching_pairs(0.0).count() + self.touching_walls(0.0).len()
     }
 
     /// Overlap of two particles (negative when apart), m.
     pub fn overlap(&self, i: usize, j: usize) -> f64 {
         let p = &self.particles;
-        p.radius[i] + p.radius[j] - (p.position[i] - p.position[j]).norm()
+        let d = self
+            .neighbors
+            .space
+            .displacement(&p.position[i], &p.position[j]);
+        p.radius[i] + p.radius[j] - d.norm()
     }
 
     /// Critical time step estimate, Rojek eqs 26–29 without the safety factor α.
@@ -492,9 +600,9 @@ impl Simulation {
                 tangential_max[b] = tangential_max[b].max(k_t);
             }
         }
-        for (w, i, overlap) in self.touching_walls(0.0) {
+        for (w, i, facet, overlap) in self.touching_walls(0.0) {
             let pair = self.pair_table.get(p.material[i], self.walls[w].material);
-            let history = self.wall_contact_history(w, i);
+            let history = self.wall_contact_history(w, i, facet);
             let (k_n, k_t) = self.law.stiffness(overlap, p.radius[i], pair, history);
             normal_sum[i] += k_n;
             tangential_max[i] = tangential_max[i].max(k_t);
@@ -511,13 +619,13 @@ impl Simulation {
                         let v = characteristic_velocity.unwrap_or(0.0);
                         self.law
                             .normal
-                            .impact_stiffness(p.mass[i], v, p.radius[i], pair)
+                            .impact_stiffness(p.mass[i], v, self.final_radius(i), pair)
                     })
                     .fold(0.0, f64::max),
                 (_, None) => 0.0,
             };
             let lever = if self.rotation {
-                1.0 + p.mass[i] * p.radius[i].powi(2) / p.inertia[i]
+                1.0 + p.mass[i] * self.final_radius(i).powi(2) / p.inertia[i]
             } else {
                 1.0
             };

@@ -17,7 +17,7 @@ fn initial_contact_starts_with_an_unloaded_spring() {
         "contact": {"normal": {"law": "hertz"},
                     "tangential": {"law": "cundall_strack", "stiffness": 100, "friction": 0.5}},
         "particles": [{"position": [0, 0, 0.000999], "radius": 0.001, "material": "m", "velocity": [0.1, 0, 0]}],
-        "walls": [{"kind": "plane", "point": [0, 0, 0], "normal": [0, 0, 1], "material": "m"}],
+        "walls": [{ "material": "m", "shape": {"kind": "plane", "point": [0, 0, 0], "normal": [0, 0, 1]}}],
         "stability": {"initial_overlap_tolerance": 0.01},
         "time_step": {"alpha": 0.1, "characteristic_velocity": 0.1},
         "run": {"steps": 1}
@@ -57,7 +57,7 @@ fn prescribed_partner_damps_like_a_wall() {
     };
     let against_wall = restitution(
         serde_json::Value::Null,
-        json!([{"kind": "plane", "point": [0, 0, 0], "normal": [0, 0, 1], "material": "m"}]),
+        json!([{ "material": "m", "shape": {"kind": "plane", "point": [0, 0, 0], "normal": [0, 0, 1]}}]),
     );
     let against_driven = restitution(
         json!({"position": [0, 0, -0.001], "radius": 0.001, "material": "m", "prescribed_velocity": [0, 0, 0]}),

@@ -84,8 +84,11 @@ fn overlapping_initial_particles_are_rejected() {
 #[test]
 fn zero_length_wall_normal_is_rejected() {
     let mut s = base();
-    s["walls"][0]["normal"] = json!([0, 0, 0]);
-    expect_input_error(s, &["walls[0].normal: must have non-zero finite length"]);
+    s["walls"][0]["shape"]["normal"] = json!([0, 0, 0]);
+    expect_input_error(
+        s,
+        &["walls[0].shape.normal: must have non-zero finite length"],
+    );
 }
 
 #[test]

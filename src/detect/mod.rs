@@ -51,6 +51,7 @@ pub struct NeighborList {
     pub space: Space,
     keeps_history: bool,
     reference_position: Vec<Vec3>,
+    reference_radius: Vec<f64>,
     pub builds: u64,
 }
 
@@ -71,18 +72,24 @@ impl NeighborList {
             history: Vec::new(),
             keeps_history,
             reference_position: Vec::new(),
+            reference_radius: Vec::new(),
             builds: 0,
         }
     }
 
-    /// Rebuild when the list is empty of reference or some particle moved > skin/2.
+    /// Rebuild when there is no reference yet or some particle's displacement plus
+    /// radius growth since the last build exceeds skin/2: then no pair outside the
+    /// list can have come within reach (|Δx_i| + Δr_i ≤ skin/2 for both partners).
     pub fn update(&mut self, position: &[Vec3], radius: &[f64]) {
-        let limit = 0.25 * self.skin * self.skin;
+        let half_skin = 0.5 * self.skin;
         let stale = self.reference_position.len() != position.len()
-            || position
-                .iter()
-                .zip(&self.reference_position)
-                .any(|(p, q)| (p - q).norm_squared() > limit);
+            || (0..position.len()).any(|i| {
+                let moved = self
+                    .space
+                    .displacement(&position[i], &self.reference_position[i])
+                    .norm();
+                moved + (radius[i] - self.reference_radius[i]).max(0.0) > half_skin
+            });
         if stale {
             self.rebuild(position, radius);
         }
@@ -107,6 +114,7 @@ impl NeighborList {
         }
         self.pairs = pairs;
         self.reference_position = position.to_vec();
+        self.reference_radius = radius.to_vec();
         self.builds += 1;
     }
 }

@@ -2,16 +2,18 @@
 //! are built; random insertion uses the scene's seed.
 
 use super::schema::*;
+use crate::boundary::Boundary;
 use crate::contact::{
     ContactLaw, damping::Damping, normal::NormalLaw, tangential::TangentialLaw,
     van_der_waals::VanDerWaals,
 };
 use crate::detect::{Detector, NeighborList};
 use crate::error::{Result, TampError};
+use crate::growth::Growth;
 use crate::material::{Hollomon, Material, PairTable};
 use crate::particles::{Motion, Particles, Vec3};
 use crate::simulation::{Simulation, StabilityLimits};
-use crate::walls::PlaneWall;
+use crate::space::Space;
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
@@ -156,27 +158,7 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
             .map_or(default_friction, |o| o.2)
     });
 
-    let walls: Vec<PlaneWall> = scene
-        .walls
-        .iter()
-        .enumerate()
-        .map(|(k, w)| {
-            let WallSpec::Plane {
-                point,
-                normal,
-                material,
-                velocity,
-                ..
-            } = w;
-            PlaneWall {
-                name: w.name(k),
-                point: v3(point),
-                normal: v3(normal).normalize(),
-                material: material_id(material),
-                velocity: velocity.map_or(Vec3::zeros(), |v| v3(&v)),
-            }
-        })
-        .collect();
+    let walls = super::walls::build(&scene.walls, &material_id, &scene.base_dir)?;
 
     let inertia_scale = scene.rotation.as_ref().map_or(1.0, |r| r.inertia_scale);
     let mut particles = Particles::default();
@@ -203,10 +185,22 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
     )?;
 
     let mut rng = ChaCha8Rng::seed_from_u64(scene.seed);
+    // Spheres placed before a growth stage only need to be apart at their starting size.
+    let placement_scale = scene.growth.as_ref().map_or(1.0, |g| g.initial_fraction);
+    let mut insertion_space = Space::open();
+    for (a, axis) in scene
+        .periodic
+        .iter()
+        .flat_map(|p| p.axes().into_iter().enumerate())
+    {
+        insertion_space.periodic[a] = axis.map(|[lo, hi]| (lo, hi - lo));
+    }
     for (k, ins) in scene.insert.iter().enumerate() {
         insert_random(
             &mut particles,
             &walls,
+            &insertion_space,
+            placement_scale,
             ins,
             k,
             material_id(&ins.material),
@@ -222,6 +216,12 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
         .iter()
         .cloned()
         .fold(f64::INFINITY, f64::min);
+    let space = periodic_space(
+        scene,
+        &particles,
+        &law,
+        scene.broad_phase.skin_fraction * r_min,
+    )?;
     let detector = match scene.broad_phase.kind {
         DetectorSpec::Brute => Detector::Brute,
         DetectorSpec::Cells => Detector::Cells,
@@ -231,13 +231,22 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
         scene.broad_phase.skin_fraction * r_min,
         law.reach(),
         law.has_history(),
-        crate::space::Space::open(),
+        space,
     );
     let limits = StabilityLimits {
         max_overlap_fraction: scene.stability.max_overlap_fraction,
         max_energy_growth: scene.stability.max_energy_growth,
         check_every: scene.stability.check_every,
     };
+    // A growth stage starts from the initial fraction of every radius; the
+    // simulation is built at that size so no force is ever computed at full size.
+    let target_radius = particles.radius.clone();
+    if let Some(g) = &scene.growth {
+        particles
+            .radius
+            .iter_mut()
+            .for_each(|r| *r *= g.initial_fraction);
+    }
     let mut sim = Simulation::new(
         particles,
         walls,
@@ -251,6 +260,13 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
         limits,
     )?;
 
+    if let Some(g) = &scene.growth {
+        let growth = Growth {
+            duration: g.duration,
+            initial_fraction: g.initial_fraction,
+        };
+        sim.set_growth(growth, target_radius);
+    }
     let ts = &scene.time_step;
     let dt_estimate = sim
         .critical_time_step(ts.characteristic_velocity)
@@ -288,7 +304,7 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
     })
 }
 
-fn check_initial_overlaps(p: &Particles, walls: &[PlaneWall], tolerance: f64) -> Result<()> {
+fn check_initial_overlaps(p: &Particles, walls: &[Boundary], tolerance: f64) -> Result<()> {
     let pairs = crate::detect::cells::candidate_pairs(&p.position, &p.radius, 0.0);
     let mut errors = Vec::new();
     for (i, j) in pairs {
@@ -307,7 +323,7 @@ fn check_initial_overlaps(p: &Particles, walls: &[PlaneWall], tolerance: f64) ->
     }
     for (k, wall) in walls.iter().enumerate() {
         for i in 0..p.len() {
-            let overlap = p.radius[i] - wall.distance(&p.position[i]);
+            let overlap = deepest_wall_overlap(wall, &p.position[i], p.radius[i]);
             if overlap / p.radius[i] > tolerance {
                 errors.push(TampError::input(
                     format!("particles[{i}].position"),
@@ -331,7 +347,9 @@ fn check_initial_overlaps(p: &Particles, walls: &[PlaneWall], tolerance: f64) ->
 #[allow(clippy::too_many_arguments)]
 fn insert_random(
     particles: &mut Particles,
-    walls: &[PlaneWall],
+    walls: &[Boundary],
+    space: &Space,
+    placement_scale: f64,
     ins: &InsertSpec,
     index: usize,
     material: usize,
@@ -375,8 +393,10 @@ fn insert_random(
                 .position
                 .iter()
                 .zip(&particles.radius)
-                .all(|(q, rq)| (x - q).norm() >= r + rq)
-                && walls.iter().all(|w| w.distance(&x) >= r);
+                .all(|(q, rq)| space.displacement(&x, q).norm() >= placement_scale * (r + rq))
+                && walls
+                    .iter()
+                    .all(|w| deepest_wall_overlap(w, &x, placement_scale * r) <= 0.0);
             if free {
                 break x;
             }
@@ -395,4 +415,51 @@ fn insert_random(
         );
     }
     Ok(())
+}
+
+/// Largest overlap of a sphere with any part of a boundary (−∞ when apart).
+fn deepest_wall_overlap(wall: &Boundary, centre: &Vec3, radius: f64) -> f64 {
+    let mut found = Vec::new();
+    wall.contacts(centre, radius, 0.0, &mut found);
+    found
+        .iter()
+        .map(|c| c.overlap)
+        .fold(f64::NEG_INFINITY, f64::max)
+}
+
+/// The periodic axes of the scene. The minimum-image convention needs every
+/// interaction range below half the period: L > 2 (2 R_max + skin + reach).
+/// Particles must start inside the periodic interval.
+fn periodic_space(scene: &Scene, p: &Particles, law: &ContactLaw, skin: f64) -> Result<Space> {
+    let Some(spec) = &scene.periodic else {
+        return Ok(Space::open());
+    };
+    let r_max = p.radius.iter().cloned().fold(0.0, f64::max);
+    let range = 2.0 * r_max + skin + law.reach();
+    let mut space = Space::open();
+    for (a, axis) in spec.axes().iter().enumerate() {
+        let Some([lo, hi]) = *axis else { continue };
+        let name = ["x", "y", "z"][a];
+        if hi - lo <= 2.0 * range {
+            return Err(TampError::input(
+                format!("periodic.{name}"),
+                format!(
+                    "the period {:e} m must exceed twice the interaction range 2·R_max + skin + cohesion reach = {range:e} m",
+                    hi - lo
+                ),
+            ));
+        }
+        if let Some(i) = (0..p.len()).find(|&i| !(p.position[i][a] >= lo && p.position[i][a] < hi))
+        {
+            return Err(TampError::input(
+                format!("periodic.{name}"),
+                format!(
+                    "particle {i} starts outside [{lo:e}, {hi:e}) at {name} = {:e}",
+                    p.position[i][a]
+                ),
+            ));
+        }
+        space.periodic[a] = Some((lo, hi - lo));
+    }
+    Ok(space)
 }

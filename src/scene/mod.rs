@@ -3,6 +3,7 @@
 pub mod build;
 pub mod schema;
 pub mod validate;
+pub mod walls;
 
 pub use build::{BuiltScene, build};
 pub use schema::Scene;
@@ -38,7 +39,11 @@ pub fn load(path: &std::path::Path) -> Result<(Scene, String)> {
         .map_err(|e| TampError::io(format!("reading scene {}", path.display()), e))?;
     let text = String::from_utf8(bytes.clone())
         .map_err(|_| TampError::input(path.display().to_string(), "must be UTF-8 text"))?;
-    let scene = parse(&text)?;
+    let mut scene = parse(&text)?;
+    scene.base_dir = path
+        .parent()
+        .map(std::path::Path::to_path_buf)
+        .unwrap_or_default();
     Ok((scene, sha256_hex(&bytes)))
 }
 

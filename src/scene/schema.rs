@@ -1,6 +1,7 @@
 //! The scene file schema (JSON). Every field, unit and default is documented in
 //! docs/scene-format.md; unknown fields are rejected.
 
+pub use super::walls::WallSpec;
 use serde::{Deserialize, Serialize};
 
 #[derive(Clone, Debug, Deserialize, Serialize)]
@@ -22,6 +23,12 @@ pub struct Scene {
     /// Gravitational acceleration, m/s²; absent means no gravity.
     #[serde(default)]
     pub gravity: Option<[f64; 3]>,
+    /// Periodic axes, each `[lo, hi]`; absent axes are open.
+    #[serde(default)]
+    pub periodic: Option<PeriodicSpec>,
+    /// Growth stage of Zhong 2009 §6.1 (radii grow, gravity off); absent means none.
+    #[serde(default)]
+    pub growth: Option<GrowthSpec>,
     /// Absent means particles do not rotate.
     #[serde(default)]
     pub rotation: Option<RotationSpec>,
@@ -33,6 +40,9 @@ pub struct Scene {
     pub stability: StabilitySpec,
     #[serde(default)]
     pub output: OutputSpec,
+    /// Directory of the scene file, for relative paths (STL meshes); not a JSON field.
+    #[serde(skip)]
+    pub base_dir: std::path::PathBuf,
 }
 
 #[derive(Clone, Debug, Deserialize, Serialize)]
@@ -253,29 +263,31 @@ pub struct BoxRegion {
     pub upper: [f64; 3],
 }
 
-#[derive(Clone, Debug, Deserialize, Serialize)]
-#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
-pub enum WallSpec {
-    Plane {
-        #[serde(default)]
-        name: Option<String>,
-        /// A point of the plane, m.
-        point: [f64; 3],
-        /// Points to the side where particles are; normalised on load.
-        normal: [f64; 3],
-        material: String,
-        /// Constant velocity of the plane, m/s.
-        #[serde(default)]
-        velocity: Option<[f64; 3]>,
-    },
+#[derive(Clone, Debug, Default, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct PeriodicSpec {
+    #[serde(default)]
+    pub x: Option<[f64; 2]>,
+    #[serde(default)]
+    pub y: Option<[f64; 2]>,
+    #[serde(default)]
+    pub z: Option<[f64; 2]>,
 }
 
-impl WallSpec {
-    /// The wall's name, `wall<k>` when the scene gives none (`k` is its index).
-    pub fn name(&self, k: usize) -> String {
-        let WallSpec::Plane { name, .. } = self;
-        name.clone().unwrap_or_else(|| format!("wall{k}"))
+impl PeriodicSpec {
+    pub fn axes(&self) -> [Option<[f64; 2]>; 3] {
+        [self.x, self.y, self.z]
     }
+}
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct GrowthSpec {
+    /// Time over which radii grow to their targets, s.
+    pub duration: f64,
+    /// Starting radius as a fraction of the target, in [0, 1).
+    #[serde(default)]
+    pub initial_fraction: f64,
 }
 
 #[derive(Clone, Debug, Deserialize, Serialize)]

@@ -16,26 +16,26 @@ pub const SERIES_COLUMNS: &[&str] = &[
     "wall_forces",
 ];
 
-struct Errors(Vec<TampError>);
+pub(super) struct Errors(pub(super) Vec<TampError>);
 
 impl Errors {
-    fn push(&mut self, path: impl Into<String>, rule: impl Into<String>) {
+    pub(super) fn push(&mut self, path: impl Into<String>, rule: impl Into<String>) {
         self.0.push(TampError::input(path, rule));
     }
 
-    fn positive(&mut self, path: impl Into<String>, value: f64) {
+    pub(super) fn positive(&mut self, path: impl Into<String>, value: f64) {
         if !(value > 0.0 && value.is_finite()) {
             self.push(path, format!("must be > 0 and finite, got {value:e}"));
         }
     }
 
-    fn non_negative(&mut self, path: impl Into<String>, value: f64) {
+    pub(super) fn non_negative(&mut self, path: impl Into<String>, value: f64) {
         if !(value >= 0.0 && value.is_finite()) {
             self.push(path, format!("must be >= 0 and finite, got {value:e}"));
         }
     }
 
-    fn finite3(&mut self, path: impl Into<String>, v: &[f64; 3]) {
+    pub(super) fn finite3(&mut self, path: impl Into<String>, v: &[f64; 3]) {
         if !v.iter().all(|c| c.is_finite()) {
             self.push(path, format!("must be finite, got {v:?}"));
         }
@@ -374,42 +374,34 @@ pub fn validate(scene: &Scene) -> Result<()> {
             "the scene must contain at least one particle (particles or insert)",
         );
     }
-    let mut wall_names = HashSet::new();
-    for (k, w) in scene.walls.iter().enumerate() {
-        let WallSpec::Plane {
-            point,
-            normal,
-            material,
-            velocity,
-            ..
-        } = w;
-        let name = w.name(k);
-        if !wall_names.insert(name.clone()) {
-            e.push(
-                format!("walls[{k}].name"),
-                format!("must be unique, '{name}' is repeated"),
-            );
-        }
-        e.finite3(format!("walls[{k}].point"), point);
-        let len = normal.iter().map(|c| c * c).sum::<f64>().sqrt();
-        if !(len > 0.0 && len.is_finite()) {
-            e.push(
-                format!("walls[{k}].normal"),
-                format!("must have non-zero finite length, got {normal:?}"),
-            );
-        }
-        if !known(material) {
-            e.push(
-                format!("walls[{k}].material"),
-                format!("unknown material '{material}'"),
-            );
-        }
-        if let Some(v) = velocity {
-            e.finite3(format!("walls[{k}].velocity"), v);
-        }
-    }
+    super::walls::validate(&scene.walls, &known, &mut e);
     if let Some(g) = &scene.gravity {
         e.finite3("gravity", g);
+    }
+    if let Some(per) = &scene.periodic {
+        for (a, axis) in per.axes().iter().enumerate() {
+            let name = ["x", "y", "z"][a];
+            if let Some([lo, hi]) = axis
+                && !(lo.is_finite() && hi.is_finite() && hi > lo)
+            {
+                e.push(
+                    format!("periodic.{name}"),
+                    format!("must be [lo, hi] with hi > lo, finite, got [{lo:e}, {hi:e}]"),
+                );
+            }
+        }
+        if per.axes().iter().all(Option::is_none) {
+            e.push("periodic", "must name at least one axis (x, y or z)");
+        }
+    }
+    if let Some(g) = &scene.growth {
+        e.positive("growth.duration", g.duration);
+        if !(g.initial_fraction >= 0.0 && g.initial_fraction < 1.0) {
+            e.push(
+                "growth.initial_fraction",
+                format!("must be in [0, 1), got {}", g.initial_fraction),
+            );
+        }
     }
     if let Some(r) = &scene.rotation {
         e.positive("rotation.inertia_scale", r.inertia_scale);

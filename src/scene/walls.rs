@@ -1,0 +1,396 @@
+//! The `walls` of a scene: each boundary is a shape, a material and a motion.
+//!
+//! ```json
+//! {"name": "lid", "material": "steel",
+//!  "shape": {"kind": "plane", "point": [0, 0, 0.1], "normal": [0, 0, -1]},
+//!  "motion": {"kind": "servo", "direction": [0, 0, -1], "force": 10, "gain": 1e-3, "max_speed": 0.1}}
+//! ```
+//! Shapes: plane, box (inside of), cylinder, cone, funnel (surfaces of revolution),
+//! height_field (z = f(x, y) as an expression or a grid), mesh (STL file or convex
+//! polygons). Motions: fixed, velocity, displacement (expressions of t), servo.
+
+use super::validate::Errors;
+use crate::boundary::shape::Shape;
+use crate::boundary::{Boundary, BoundaryMotion, Servo};
+use crate::error::{Result, TampError};
+use crate::expression::Expression;
+use crate::particles::Vec3;
+use serde::{Deserialize, Serialize};
+use std::collections::HashSet;
+use std::path::Path;
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct WallSpec {
+    /// Used in series columns, the summary and messages; `wall<k>` by default.
+    #[serde(default)]
+    pub name: Option<String>,
+    pub material: String,
+    pub shape: ShapeSpec,
+    #[serde(default)]
+    pub motion: MotionSpec,
+}
+
+impl WallSpec {
+    pub fn name(&self, k: usize) -> String {
+        self.name.clone().unwrap_or_else(|| format!("wall{k}"))
+    }
+}
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
+pub enum ShapeSpec {
+    /// Infinite one-sided plane; `normal` points to the particles.
+    Plane { point: [f64; 3], normal: [f64; 3] },
+    /// The inside of an axis-aligned box; `open` lists missing faces ("+z" for no lid).
+    Box {
+        lower: [f64; 3],
+        upper: [f64; 3],
+        #[serde(default)]
+        open: Vec<String>,
+    },
+    /// Lateral surface of a cylinder, between heights `bottom` and `top` along `axis`
+    /// measured from `origin`.
+    Cylinder {
+        origin: [f64; 3],
+        axis: [f64; 3],
+        radius: f64,
+        bottom: f64,
+        top: f64,
+    },
+    /// Lateral surface of a cone frustum.
+    Cone {
+        origin: [f64; 3],
+        axis: [f64; 3],
+        bottom: f64,
+        bottom_radius: f64,
+        top: f64,
+        top_radius: f64,
+    },
+    /// An outlet tube (from `outlet_bottom` to `outlet_top`) continued by a cone that
+    /// widens to `top_radius` at height `top`.
+    Funnel {
+        origin: [f64; 3],
+        axis: [f64; 3],
+        outlet_radius: f64,
+        outlet_bottom: f64,
+        outlet_top: f64,
+        top_radius: f64,
+        top: f64,
+    },
+    /// z = f(x, y) over a rectangle, as an `expression` of x and y sampled on `cells`,
+    /// or as a `grid` of heights. Give exactly one of the two.
+    HeightField {
+        x_range: [f64; 2],
+        y_range: [f64; 2],
+        #[serde(default)]
+        expression: Option<String>,
+        /// Cells along x and y used to sample the expression.
+        #[serde(default)]
+        cells: Option<[usize; 2]>,
+        /// Heights at (nx+1)×(ny+1) nodes, row by row: `grid[j][i]` is at x_i, y_j.
+        #[serde(default)]
+        grid: Option<Vec<Vec<f64>>>,
+    },
+    /// Triangles from an STL file (path relative to the scene file) or convex polygons.
+    Mesh {
+        #[serde(default)]
+        stl: Option<String>,
+        #[serde(default)]
+        polygons: Option<Vec<Vec<[f64; 3]>>>,
+    },
+}
+
+#[derive(Clone, Debug, Default, Deserialize, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
+pub enum MotionSpec {
+    #[default]
+    Fixed,
+    /// Constant velocity, m/s.
+    Velocity { velocity: [f64; 3] },
+    /// Displacement from the rest position, per axis, as expressions of t (s → m).
+    Displacement { x: String, y: String, z: String },
+    /// Hold `force` (N), or `pressure` (Pa) × `area` (m²), along `direction`.
+    Servo {
+        direction: [f64; 3],
+        #[serde(default)]
+        force: Option<f64>,
+        #[serde(default)]
+        pressure: Option<f64>,
+        #[serde(default)]
+        area: Option<f64>,
+        gain: f64,
+        max_speed: f64,
+    },
+}
+
+const FACES: [&str; 6] = ["-x", "+x", "-y", "+y", "-z", "+z"];
+
+fn v3(a: &[f64; 3]) -> Vec3 {
+    Vec3::new(a[0], a[1], a[2])
+}
+
+fn unit(e: &mut Errors, path: String, v: &[f64; 3]) {
+    let len = v.iter().map(|c| c * c).sum::<f64>().sqrt();
+    if !(len > 0.0 && len.is_finite()) {
+        e.push(path, format!("must have non-zero finite length, got {v:?}"));
+    }
+}
+
+fn range(e: &mut Errors, path: String, r: &[f64; 2]) {
+    if !(r[0].is_finite() && r[1].is_finite() && r[1] > r[0]) {
+        e.push(
+            path,
+            format!("must be [low, high] with high > low, finite, got {r:?}"),
+        );
+    }
+}
+
+pub(super) fn validate(walls: &[WallSpec], known: &dyn Fn(&str) -> bool, e: &mut Errors) {
+    let mut names = HashSet::new();
+    for (k, w) in walls.iter().enumerate() {
+        let at = |field: &str| format!("walls[{k}].{field}");
+        let name = w.name(k);
+        if !names.insert(name.clone()) {
+            e.push(at("name"), format!("must be unique, '{name}' is repeated"));
+        }
+        if !known(&w.material) {
+            e.push(at("material"), format!("unknown material '{}'", w.material));
+        }
+        match &w.shape {
+            ShapeSpec::Plane { point, normal } => {
+                e.finite3(at("shape.point"), point);
+                unit(e, at("shape.normal"), normal);
+            }
+            ShapeSpec::Box { lower, upper, open } => {
+                e.finite3(at("shape.lower"), lower);
+                e.finite3(at("shape.upper"), upper);
+                if (0..3).any(|a| upper[a] <= lower[a]) {
+                    e.push(
+                        at("shape.upper"),
+                        format!(
+                            "must exceed shape.lower on every axis, got {upper:?} vs {lower:?}"
+                        ),
+                    );
+                }
+                for (j, f) in open.iter().enumerate() {
+                    if !FACES.contains(&f.as_str()) {
+                        e.push(
+                            at(&format!("shape.open[{j}]")),
+                            format!("unknown face '{f}', expected one of {FACES:?}"),
+                        );
+                    }
+                }
+            }
+            ShapeSpec::Cylinder {
+                origin,
+                axis,
+                radius,
+                bottom,
+                top,
+            } => {
+                e.finite3(at("shape.origin"), origin);
+                unit(e, at("shape.axis"), axis);
+                e.positive(at("shape.radius"), *radius);
+                range(e, at("shape.top"), &[*bottom, *top]);
+            }
+            ShapeSpec::Cone {
+                origin,
+                axis,
+                bottom,
+                bottom_radius,
+                top,
+                top_radius,
+            } => {
+                e.finite3(at("shape.origin"), origin);
+                unit(e, at("shape.axis"), axis);
+                e.non_negative(at("shape.bottom_radius"), *bottom_radius);
+                e.non_negative(at("shape.top_radius"), *top_radius);
+                if *bottom_radius == 0.0 && *top_radius == 0.0 {
+                    e.push(
+                        at("shape.top_radius"),
+                        "a cone needs a non-zero radius at one end at least",
+                    );
+                }
+                range(e, at("shape.top"), &[*bottom, *top]);
+            }
+            ShapeSpec::Funnel {
+                origin,
+                axis,
+                outlet_radius,
+                outlet_bottom,
+                outlet_top,
+                top_radius,
+                top,
+            } => {
+                e.finite3(at("shape.origin"), origin);
+                unit(e, at("shape.axis"), axis);
+                e.positive(at("shape.outlet_radius"), *outlet_radius);
+                range(e, at("shape.outlet_top"), &[*outlet_bottom, *outlet_top]);
+                range(e, at("shape.top"), &[*outlet_top, *top]);
+                if !(top_radius > outlet_radius && top_radius.is_finite()) {
+                    e.push(
+                        at("shape.top_radius"),
+                        format!(
+                            "must exceed outlet_radius ({outlet_radius:e}), got {top_radius:e}"
+                        ),
+                    );
+                }
+            }
+            ShapeSpec::HeightField {
+                x_range,
+                y_range,
+                expression,
+                cells,
+                grid,
+            } => {
+                range(e, at("shape.x_range"), x_range);
+                range(e, at("shape.y_range"), y_range);
+                match (expression, grid) {
+                    (Some(expr), None) => {
+                        if let Err(msg) = Expression::parse(expr, &["x", "y"]) {
+                            e.push(at("shape.expression"), msg);
+                        }
+                        match cells {
+                            Some([nx, ny]) if *nx >= 1 && *ny >= 1 => {}
+                            _ => e.push(
+                                at("shape.cells"),
+                                "is required with an expression: [nx, ny], each >= 1",
+                            ),
+                        }
+                    }
+                    (None, Some(g)) => {
+                        if cells.is_some() {
+                            e.push(
+                                at("shape.cells"),
+                                "must be absent with a grid (the grid's shape gives the cells)",
+                            );
+                        }
+                        let rows = g.len();
+                        let cols = g.first().map_or(0, Vec::len);
+                        if rows < 2 || cols < 2 || g.iter().any(|r| r.len() != cols) {
+                            e.push(at("shape.grid"), format!("must be a rectangular array of at least 2 x 2 heights, got {rows} rows"));
+                        } else if g.iter().flatten().any(|z| !z.is_finite()) {
+                            e.push(at("shape.grid"), "heights must be finite");
+                        }
+                    }
+                    _ => e.push(
+                        at("shape"),
+                        "give exactly one of 'expression' (with 'cells') or 'grid'",
+                    ),
+                }
+            }
+            ShapeSpec::Mesh { stl, polygons } => match (stl, polygons) {
+                (Some(_), None) => {}
+                (None, Some(p)) => {
+                    for (j, poly) in p.iter().enumerate() {
+                        if poly.len() < 3 {
+                            e.push(
+                                at(&format!("shape.polygons[{j}]")),
+                                format!("needs at least 3 vertices, got {}", poly.len()),
+                            );
+                        }
+                        for (v, x) in poly.iter().enumerate() {
+                            e.finite3(at(&format!("shape.polygons[{j}][{v}]")), x);
+                        }
+                    }
+                }
+                _ => e.push(
+                    at("shape"),
+                    "give exactly one of 'stl' (a file path) or 'polygons'",
+                ),
+            },
+        }
+        match &w.motion {
+            MotionSpec::Fixed => {}
+            MotionSpec::Velocity { velocity } => e.finite3(at("motion.velocity"), velocity),
+            MotionSpec::Displacement { x, y, z } => {
+                for (axis, src) in [("x", x), ("y", y), ("z", z)] {
+                    if let Err(msg) = Expression::parse(src, &["t"]) {
+                        e.push(at(&format!("motion.{axis}")), msg);
+                    }
+                }
+            }
+            MotionSpec::Servo {
+                direction,
+                force,
+                pressure,
+                area,
+                gain,
+                max_speed,
+            } => {
+                unit(e, at("motion.direction"), direction);
+                match (force, pressure, area) {
+                    (Some(f), None, None) => e.non_negative(at("motion.force"), *f),
+                    (None, Some(p), Some(a)) => {
+                        e.non_negative(at("motion.pressure"), *p);
+                        e.positive(at("motion.area"), *a);
+                    }
+                    _ => e.push(
+                        at("motion"),
+                        "give either 'force' (N) or both 'pressure' (Pa) and 'area' (m²)",
+                    ),
+                }
+                e.positive(at("motion.gain"), *gain);
+                e.positive(at("motion.max_speed"), *max_speed);
+            }
+        }
+    }
+}
+
+fn build_motion(m: &MotionSpec) -> BoundaryMotion {
+    match m {
+        MotionSpec::Fixed => BoundaryMotion::Fixed,
+        MotionSpec::Velocity { velocity } => BoundaryMotion::Velocity(v3(velocity)),
+        MotionSpec::Displacement { x, y, z } => {
+            let parse = |s: &str| Expression::parse(s, &["t"]).expect("validated expression");
+            BoundaryMotion::Displacement(Box::new([parse(x), parse(y), parse(z)]))
+        }
+        MotionSpec::Servo {
+            direction,
+            force,
+            pressure,
+            area,
+            gain,
+            max_speed,
+        } => BoundaryMotion::Servo(Servo {
+            direction: v3(direction).normalize(),
+            target_force: force.unwrap_or_else(|| pressure.unwrap_or(0.0) * area.unwrap_or(0.0)),
+            gain: *gain,
+            max_speed: *max_speed,
+        }),
+    }
+}
+
+/// Build the boundaries; `base_dir` resolves relative STL paths.
+pub fn build(
+    walls: &[WallSpec],
+    material_id: &dyn Fn(&str) -> usize,
+    base_dir: &Path,
+) -> Result<Vec<Boundary>> {
+    walls
+        .iter()
+        .enumerate()
+        .map(|(k, w)| {
+            let shape = build_shape(&w.shape, base_dir)
+                .map_err(|rule| TampError::input(format!("walls[{k}].shape"), rule))?;
+            Ok(Boundary::new(
+                w.name(k),
+                shape,
+                material_id(&w.material),
+                build_motion(&w.motion),
+            ))
+        })
+        .collect()
+}
+
+fn build_shape(s: &ShapeSpec, _base_dir: &Path) -> std::result::Result<Shape, String> {
+    use crate::boundary::shape::Plane;
+    match s {
+        ShapeSpec::Plane { point, normal } => Ok(Shape::Plane(Plane {
+            point: v3(point),
+            normal: v3(normal).normalize(),
+        })),
+        _ => Err("this shape kind is not built yet".into()),
+    }
+}
