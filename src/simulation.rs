@@ -523,6 +523,18 @@ impl Simulation {
         pairs + walls
     }
 
+    /// Potential energy of the free particles in the scene's gravity, −Σ m g·x (zero at
+    /// the origin), J. Reported whether or not gravity acts yet (growth stage).
+    pub fn gravitational_energy(&self) -> f64 {
+        let p = &self.particles;
+        self.gravity.map_or(0.0, |g| {
+            (0..p.len())
+                .filter(|&i| p.motion[i] == Motion::Free)
+                .map(|i| -p.mass[i] * g.dot(&p.position[i]))
+                .sum()
+        })
+    }
+
     pub fn kinetic_energy(&self) -> f64 {
         self.particles.translational_kinetic_energy() + self.particles.rotational_kinetic_energy()
     }

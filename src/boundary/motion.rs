@@ -12,10 +12,12 @@
 //!   the boundary along a direction, like LIGGGHTS' `servo` walls: the boundary moves
 //!   along `direction` (the way it presses) with speed
 //!   v = clamp(gain · (F_target − R), −v_max, v_max), where R = −F_on_boundary · direction
-//!   is the particles' reaction. A proportional controller converges when the
-//!   bed behaves as a spring k_bed: the error decays by (1 − gain·k_bed·Δt) per step,
-//!   so gain·k_bed·Δt must stay below 1 (the scene validator cannot know k_bed; the
-//!   run reports the reaction in the series so the user sees convergence).
+//!   is the particles' reaction. Near equilibrium the bed pushes back like a spring
+//!   k_bed with a dashpot c_bed (the contact damping), and the controller is stable
+//!   only when gain·(k_bed·Δt + c_bed) < 1: a gain above 1/c_bed makes the lid chatter
+//!   between pressing and backing off, because the damping force it feels grows with
+//!   the speed it chose (found in `tests/boundaries.rs`). The run reports the
+//!   reaction in the series, so the user sees convergence.
 
 use crate::expression::Expression;
 use crate::particles::Vec3;

@@ -46,6 +46,7 @@ impl Series {
                 "kinetic_energy" => row.push(sim.particles.translational_kinetic_energy()),
                 "rotational_energy" => row.push(sim.particles.rotational_kinetic_energy()),
                 "stored_energy" => row.push(sim.stored_energy()),
+                "gravitational_energy" => row.push(sim.gravitational_energy()),
                 "external_work" => row.push(sim.external_work),
                 "dissipated_energy" => row.push(sim.dissipated_energy()),
                 "contact_count" => row.push(sim.contact_count() as f64),

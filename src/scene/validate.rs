@@ -9,6 +9,7 @@ pub const SERIES_COLUMNS: &[&str] = &[
     "kinetic_energy",
     "rotational_energy",
     "stored_energy",
+    "gravitational_energy",
     "external_work",
     "dissipated_energy",
     "contact_count",
