@@ -5,6 +5,7 @@ pub mod boundary;
 pub mod contact;
 pub mod detect;
 pub mod error;
+pub mod generate;
 pub mod integrate;
 pub mod material;
 pub mod output;
