@@ -6,6 +6,7 @@ pub mod contact;
 pub mod detect;
 pub mod error;
 pub mod expression;
+pub mod generate;
 pub mod growth;
 pub mod integrate;
 pub mod material;
