@@ -17,6 +17,8 @@ use crate::contact::{
 };
 use crate::detect::NeighborList;
 use crate::error::{Result, TampError};
+use crate::generate::pour::Source;
+use crate::generate::rsi;
 use crate::growth::Growth;
 use crate::integrate;
 use crate::material::{Material, PairTable, effective_mass, effective_radius};
@@ -86,6 +88,10 @@ pub struct Simulation {
     /// Growth stage (Zhong 2009 §6.1): radii grow to `target_radius`, gravity off.
     pub growth: Option<Growth>,
     pub target_radius: Vec<f64>,
+    /// Pouring sources (particles entering during the run).
+    pub sources: Vec<Source>,
+    /// Moment-of-inertia scale of new particles (`rotation.inertia_scale`).
+    pub inertia_scale: f64,
 }
 
 impl Simulation {
@@ -132,6 +138,8 @@ impl Simulation {
             max_overlap_ratio: 0.0,
             growth: None,
             target_radius: Vec::new(),
+            sources: Vec::new(),
+            inertia_scale: 1.0,
         };
         // Forces at t = 0 with a zero step, so no tangential spring is advanced before
         // the first real step.
@@ -179,6 +187,9 @@ impl Simulation {
         self.time += dt;
         if growing && !self.is_growing() {
             self.restart_energy_book();
+        }
+        if self.sources.iter().any(|s| s.is_due(self.time)) {
+            self.pour()?;
         }
         if let Some(i) = integrate::first_non_finite(&self.particles) {
             return Err(self.unstable(format!(
@@ -235,6 +246,70 @@ impl Simulation {
         self.external_work_scale = 0.0;
         self.external_power = self.prescribed_power();
         self.initial_mechanical_energy = self.mechanical_energy();
+    }
+
+    /// Insert the due batch of every pouring source (see `generate::pour`).
+    fn pour(&mut self) -> Result<()> {
+        let t = self.time;
+        let mut sources = std::mem::take(&mut self.sources);
+        for src in sources.iter_mut().filter(|s| s.is_due(t)) {
+            src.next += src.every;
+            for _ in 0..src.per_event.min(src.remaining) {
+                let r = *src
+                    .pending_radius
+                    .get_or_insert_with(|| src.radius.sample(&mut src.rng));
+                let walls = &self.walls;
+                let clear = |x: &Vec3, r: f64| {
+                    let mut found = Vec::new();
+                    walls.iter().all(|w| {
+                        found.clear();
+                        w.contacts(x, r, 0.0, &mut found);
+                        found.is_empty()
+                    })
+                };
+                let p = &self.particles;
+                let Some(x) = rsi::place(
+                    r,
+                    &src.region,
+                    &p.position,
+                    &p.radius,
+                    &clear,
+                    &self.neighbors.space,
+                    1.0,
+                    &mut src.rng,
+                    src.max_attempts,
+                ) else {
+                    break; // no room now: this sphere waits for the next event
+                };
+                src.pending_radius = None;
+                src.remaining -= 1;
+                let velocity = crate::generate::random_unit(&mut src.rng) * src.speed;
+                let omega = crate::generate::random_unit(&mut src.rng) * src.spin;
+                let density = self.materials[src.material].density;
+                self.particles.push(
+                    x,
+                    velocity,
+                    omega,
+                    r,
+                    density,
+                    src.material,
+                    self.inertia_scale,
+                    Motion::Free,
+                );
+                let i = self.particles.len() - 1;
+                for h in &mut self.wall_history {
+                    h.push(Vec::new());
+                }
+                let brought = 0.5 * self.particles.mass[i] * velocity.norm_squared()
+                    + 0.5 * self.particles.inertia[i] * omega.norm_squared();
+                self.external_work += brought;
+                self.external_work_scale += brought;
+            }
+        }
+        self.sources = sources;
+        // The neighbour list sees the new length and rebuilds; forces for the new
+        // particles are computed at the next step.
+        Ok(())
     }
 
     /// Run `steps` steps, calling `observe` after each.

@@ -9,12 +9,15 @@ use crate::contact::{
 };
 use crate::detect::{Detector, NeighborList};
 use crate::error::{Result, TampError};
+use crate::generate::pour::Source;
+use crate::generate::rsi::{self, InsertionBox};
+use crate::generate::{ballistic, random_unit};
 use crate::growth::Growth;
 use crate::material::{Hollomon, Material, PairTable};
 use crate::particles::{Motion, Particles, Vec3};
 use crate::simulation::{Simulation, StabilityLimits};
 use crate::space::Space;
-use rand::{RngExt, SeedableRng};
+use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
 pub struct BuiltScene {
@@ -84,20 +87,6 @@ pub fn contact_law(spec: &ContactSpec) -> ContactLaw {
                 cutoff,
             },
         }),
-    }
-}
-
-fn random_unit(rng: &mut ChaCha8Rng) -> Vec3 {
-    loop {
-        let v = Vec3::new(
-            rng.random_range(-1.0..1.0),
-            rng.random_range(-1.0..1.0),
-            rng.random_range(-1.0..1.0),
-        );
-        let n2 = v.norm_squared();
-        if n2 > 1e-6 && n2 <= 1.0 {
-            return v / n2.sqrt();
-        }
     }
 }
 
@@ -195,7 +184,53 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
     {
         insertion_space.periodic[a] = axis.map(|[lo, hi]| (lo, hi - lo));
     }
+    for (k, dep) in scene.deposit.iter().enumerate() {
+        let law = dep.radius.distribution();
+        let radii: Vec<f64> = (0..dep.count).map(|_| law.sample(&mut rng)).collect();
+        let positions = ballistic::deposit(
+            &radii,
+            (dep.footprint[0], dep.footprint[1]),
+            dep.floor,
+            &insertion_space,
+            &mut rng,
+        )
+        .map_err(|rule| TampError::input(format!("deposit[{k}]"), rule))?;
+        let m = material_id(&dep.material);
+        for (x, r) in positions.into_iter().zip(radii) {
+            particles.push(
+                x,
+                Vec3::zeros(),
+                Vec3::zeros(),
+                r,
+                materials[m].density,
+                m,
+                inertia_scale,
+                Motion::Free,
+            );
+        }
+    }
+    let mut sources = Vec::new();
     for (k, ins) in scene.insert.iter().enumerate() {
+        if let Some(sch) = &ins.schedule {
+            sources.push(Source {
+                region: InsertionBox {
+                    lower: v3(&ins.region.lower),
+                    upper: v3(&ins.region.upper),
+                },
+                radius: ins.radius.distribution(),
+                material: material_id(&ins.material),
+                speed: ins.speed,
+                spin: ins.spin,
+                every: sch.every,
+                per_event: sch.per_event,
+                max_attempts: ins.max_attempts,
+                next: sch.start,
+                remaining: ins.count,
+                pending_radius: None,
+                rng: ChaCha8Rng::seed_from_u64(scene.seed.wrapping_add(1 + k as u64)),
+            });
+            continue;
+        }
         insert_random(
             &mut particles,
             &walls,
@@ -260,6 +295,8 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
         limits,
     )?;
 
+    sim.sources = sources;
+    sim.inertia_scale = inertia_scale;
     if let Some(g) = &scene.growth {
         let growth = Growth {
             duration: g.duration,
@@ -342,8 +379,7 @@ fn check_initial_overlaps(p: &Particles, walls: &[Boundary], tolerance: f64) -> 
     }
 }
 
-/// Random sequential insertion: each new sphere is placed uniformly in the region
-/// and kept if it overlaps no earlier sphere (brute-force check per trial).
+/// Random sequential insertion of an `insert` block at t = 0 (`generate::rsi`).
 #[allow(clippy::too_many_arguments)]
 fn insert_random(
     particles: &mut Particles,
@@ -357,50 +393,34 @@ fn insert_random(
     inertia_scale: f64,
     rng: &mut ChaCha8Rng,
 ) -> Result<()> {
-    let (lo, hi) = (v3(&ins.region.lower), v3(&ins.region.upper));
+    let region = InsertionBox {
+        lower: v3(&ins.region.lower),
+        upper: v3(&ins.region.upper),
+    };
+    let law = ins.radius.distribution();
+    let clear = |x: &Vec3, r: f64| walls.iter().all(|w| deepest_wall_overlap(w, x, r) <= 0.0);
     for placed in 0..ins.count {
-        let r = match ins.radius {
-            RadiusSpec::Fixed(r) => r,
-            RadiusSpec::Uniform(UniformRadius { min, max }) => {
-                if max > min {
-                    rng.random_range(min..max)
-                } else {
-                    min
-                }
-            }
-        };
-        let mut attempts = 0;
-        let position = loop {
-            attempts += 1;
-            if attempts > ins.max_attempts {
-                return Err(TampError::input(
-                    format!("insert[{index}].count"),
-                    format!(
-                        "placed only {placed} of {} particles in {} attempts; the region is too full",
-                        ins.count, ins.max_attempts
-                    ),
-                ));
-            }
-            let x = Vec3::from_fn(|a, _| {
-                let (from, to) = (lo[a] + r, hi[a] - r);
-                if from < to {
-                    rng.random_range(from..=to)
-                } else {
-                    0.5 * (lo[a] + hi[a])
-                }
-            });
-            let free = particles
-                .position
-                .iter()
-                .zip(&particles.radius)
-                .all(|(q, rq)| space.displacement(&x, q).norm() >= placement_scale * (r + rq))
-                && walls
-                    .iter()
-                    .all(|w| deepest_wall_overlap(w, &x, placement_scale * r) <= 0.0);
-            if free {
-                break x;
-            }
-        };
+        let r = law.sample(rng);
+        let position = rsi::place(
+            r,
+            &region,
+            &particles.position,
+            &particles.radius,
+            &clear,
+            space,
+            placement_scale,
+            rng,
+            ins.max_attempts,
+        )
+        .ok_or_else(|| {
+            TampError::input(
+                format!("insert[{index}].count"),
+                format!(
+                    "placed only {placed} of {} particles in {} attempts; the region is too full",
+                    ins.count, ins.max_attempts
+                ),
+            )
+        })?;
         let velocity = random_unit(rng) * ins.speed;
         let omega = random_unit(rng) * ins.spin;
         particles.push(

@@ -2,6 +2,7 @@
 //! docs/scene-format.md; unknown fields are rejected.
 
 pub use super::walls::WallSpec;
+use crate::generate::distribution::SizeDistribution;
 use serde::{Deserialize, Serialize};
 
 #[derive(Clone, Debug, Deserialize, Serialize)]
@@ -18,6 +19,8 @@ pub struct Scene {
     pub particles: Vec<ParticleSpec>,
     #[serde(default)]
     pub insert: Vec<InsertSpec>,
+    #[serde(default)]
+    pub deposit: Vec<DepositSpec>,
     #[serde(default)]
     pub walls: Vec<WallSpec>,
     /// Gravitational acceleration, m/s²; absent means no gravity.
@@ -235,6 +238,9 @@ pub struct InsertSpec {
     pub spin: f64,
     #[serde(default = "default_attempts")]
     pub max_attempts: usize,
+    /// Absent: all particles are placed at t = 0.
+    #[serde(default)]
+    pub schedule: Option<ScheduleSpec>,
 }
 
 fn default_attempts() -> usize {
@@ -246,6 +252,89 @@ fn default_attempts() -> usize {
 pub enum RadiusSpec {
     Fixed(f64),
     Uniform(UniformRadius),
+    Law(DistributionSpec),
+}
+
+/// Size distributions beyond a fixed radius and {min, max} (`generate::distribution`).
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(tag = "law", rename_all = "snake_case", deny_unknown_fields)]
+pub enum DistributionSpec {
+    /// Radii with their number fractions (summing to 1).
+    Discrete {
+        radii: Vec<f64>,
+        number_fractions: Vec<f64>,
+    },
+    /// ln r normal with median `median` (m) and standard deviation `sigma`, optionally
+    /// truncated to [min, max].
+    LogNormal {
+        median: f64,
+        sigma: f64,
+        #[serde(default)]
+        min: Option<f64>,
+        #[serde(default)]
+        max: Option<f64>,
+    },
+    /// Cumulative number fraction at given radii (piecewise linear, from 0 to 1).
+    Tabulated {
+        radius: Vec<f64>,
+        cumulative: Vec<f64>,
+    },
+}
+
+impl RadiusSpec {
+    pub fn distribution(&self) -> SizeDistribution {
+        match self.clone() {
+            RadiusSpec::Fixed(radius) => SizeDistribution::Mono { radius },
+            RadiusSpec::Uniform(UniformRadius { min, max }) => {
+                SizeDistribution::Uniform { min, max }
+            }
+            RadiusSpec::Law(DistributionSpec::Discrete {
+                radii,
+                number_fractions,
+            }) => SizeDistribution::Discrete {
+                radii,
+                number_fractions,
+            },
+            RadiusSpec::Law(DistributionSpec::LogNormal {
+                median,
+                sigma,
+                min,
+                max,
+            }) => SizeDistribution::LogNormal {
+                median,
+                sigma,
+                min,
+                max,
+            },
+            RadiusSpec::Law(DistributionSpec::Tabulated { radius, cumulative }) => {
+                SizeDistribution::Tabulated { radius, cumulative }
+            }
+        }
+    }
+}
+
+/// Pouring: instead of all at t = 0, insert `per_event` particles every `every`
+/// seconds from `start` on, until `count` are in.
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct ScheduleSpec {
+    #[serde(default)]
+    pub start: f64,
+    pub every: f64,
+    pub per_event: usize,
+}
+
+/// 3D ballistic deposition (steepest descent) of `count` spheres dropped over a
+/// rectangular footprint onto the plane z = `floor`.
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct DepositSpec {
+    pub count: usize,
+    pub radius: RadiusSpec,
+    pub material: String,
+    /// [x, y] corners of the footprint, m.
+    pub footprint: [[f64; 2]; 2],
+    pub floor: f64,
 }
 
 /// Radii uniformly distributed in [min, max], m.

@@ -345,7 +345,21 @@ pub fn validate(scene: &Scene) -> Result<()> {
                 }
                 max
             }
+            RadiusSpec::Law(_) => radius_law_max(&mut e, &format!("{path}.radius"), &ins.radius),
         };
+        if let Some(sch) = &ins.schedule {
+            e.non_negative(format!("{path}.schedule.start"), sch.start);
+            e.positive(format!("{path}.schedule.every"), sch.every);
+            if sch.per_event == 0 {
+                e.push(format!("{path}.schedule.per_event"), "must be >= 1, got 0");
+            }
+            if scene.growth.is_some() {
+                e.push(
+                    format!("{path}.schedule"),
+                    "cannot be combined with growth: poured particles would arrive during or after the growth stage at full size",
+                );
+            }
+        }
         e.finite3(format!("{path}.region.lower"), &ins.region.lower);
         e.finite3(format!("{path}.region.upper"), &ins.region.upper);
         for a in 0..3 {
@@ -369,7 +383,33 @@ pub fn validate(scene: &Scene) -> Result<()> {
             e.push(format!("{path}.max_attempts"), "must be >= 1, got 0");
         }
     }
-    if scene.particles.is_empty() && scene.insert.iter().all(|i| i.count == 0) {
+    for (k, dep) in scene.deposit.iter().enumerate() {
+        let path = format!("deposit[{k}]");
+        if !known(&dep.material) {
+            e.push(
+                format!("{path}.material"),
+                format!("unknown material '{}'", dep.material),
+            );
+        }
+        radius_law_max(&mut e, &format!("{path}.radius"), &dep.radius);
+        let [lo, hi] = dep.footprint;
+        if !(lo.iter().chain(&hi).all(|c| c.is_finite()) && hi[0] > lo[0] && hi[1] > lo[1]) {
+            e.push(
+                format!("{path}.footprint"),
+                format!(
+                    "must be [[x_lo, y_lo], [x_hi, y_hi]] with hi > lo, finite, got {:?}",
+                    dep.footprint
+                ),
+            );
+        }
+        if !dep.floor.is_finite() {
+            e.push(format!("{path}.floor"), "must be finite");
+        }
+    }
+    if scene.particles.is_empty()
+        && scene.insert.iter().all(|i| i.count == 0)
+        && scene.deposit.iter().all(|d| d.count == 0)
+    {
         e.push(
             "particles",
             "the scene must contain at least one particle (particles or insert)",
@@ -457,4 +497,22 @@ pub fn validate(scene: &Scene) -> Result<()> {
         1 => Err(e.0.pop().unwrap()),
         _ => Err(TampError::InputMany(e.0)),
     }
+}
+
+/// Check a radius given as a distribution; returns its largest radius (0 when invalid).
+fn radius_law_max(e: &mut Errors, path: &str, radius: &RadiusSpec) -> f64 {
+    let d = radius.distribution();
+    if let Err(rule) = d.validate() {
+        e.push(path, rule);
+        return 0.0;
+    }
+    let r_max = d.max_radius();
+    if !r_max.is_finite() {
+        e.push(
+            format!("{path}.max"),
+            "is required: placing particles needs a largest radius",
+        );
+        return 0.0;
+    }
+    r_max
 }

@@ -1,0 +1,39 @@
+//! Pouring: particles enter the running simulation in batches, as a hopper or the
+//! insertion of LIGGGHTS' `fix insert/rate/region` feeds a container. Every `every`
+//! seconds from `start`, up to `per_event` spheres are placed by random sequential
+//! insertion in the region, clear of the particles already there; a sphere that
+//! finds no room waits for the next event (the region is still full of the last
+//! batch), so pouring never overlaps particles and never fails for lack of room.
+//!
+//! A poured particle brings its kinetic energy into the system; the energy book
+//! counts it as external work.
+
+use super::distribution::SizeDistribution;
+use super::rsi::InsertionBox;
+use rand_chacha::ChaCha8Rng;
+
+#[derive(Clone, Debug)]
+pub struct Source {
+    pub region: InsertionBox,
+    pub radius: SizeDistribution,
+    pub material: usize,
+    /// Speed in a random direction and spin about a random axis at entry.
+    pub speed: f64,
+    pub spin: f64,
+    pub every: f64,
+    pub per_event: usize,
+    pub max_attempts: usize,
+    /// Time of the next event, s.
+    pub next: f64,
+    /// Particles still to pour.
+    pub remaining: usize,
+    /// Radius of the next particle, drawn once so a sphere that waits keeps its size.
+    pub pending_radius: Option<f64>,
+    pub rng: ChaCha8Rng,
+}
+
+impl Source {
+    pub fn is_due(&self, t: f64) -> bool {
+        self.remaining > 0 && t >= self.next
+    }
+}
