@@ -5,6 +5,7 @@
 pub mod plot;
 pub mod series;
 pub mod summary;
+pub mod views;
 pub mod vtk;
 
 use crate::error::{Result, TampError};
