@@ -7,6 +7,7 @@ pub mod detect;
 pub mod error;
 pub mod integrate;
 pub mod material;
+pub mod measure;
 pub mod output;
 pub mod particles;
 pub mod run;

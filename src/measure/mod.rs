@@ -1,0 +1,7 @@
+//! Packing measures: pure functions of particle centres and radii (no dependence on
+//! the simulation type), built on the exact volume of a ball inside a region.
+//! Definitions, formulas and their verification are in docs/measures.md.
+
+pub mod region;
+
+pub use region::Region;
