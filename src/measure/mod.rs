@@ -2,6 +2,8 @@
 //! the simulation type), built on the exact volume of a ball inside a region.
 //! Definitions, formulas and their verification are in docs/measures.md.
 
+pub mod packing;
 pub mod region;
 
+pub use packing::{packing_fraction, solid_volume};
 pub use region::Region;
