@@ -4,6 +4,8 @@
 
 pub mod packing;
 pub mod region;
+pub mod rve;
 
 pub use packing::{packing_fraction, solid_volume};
 pub use region::Region;
+pub use rve::{WallSurface, largest_rve_radius, rve_packing_fraction, specimen_centre_rve};
