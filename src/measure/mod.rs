@@ -2,10 +2,12 @@
 //! the simulation type), built on the exact volume of a ball inside a region.
 //! Definitions, formulas and their verification are in docs/measures.md.
 
+pub mod coordination;
 pub mod packing;
 pub mod region;
 pub mod rve;
 
+pub use coordination::{Coordination, CoordinationOptions, coordination};
 pub use packing::{packing_fraction, solid_volume};
 pub use region::Region;
 pub use rve::{WallSurface, largest_rve_radius, rve_packing_fraction, specimen_centre_rve};
