@@ -28,8 +28,8 @@
 //!
 //! M = 0 fully segregated, ≈ 1 randomly mixed, > 1 more even than random (an ordered
 //! bed). Both are discussed in Rhodes, Introduction to Particle Technology (2nd ed.
-//! 2008), ch. 11. With volume weights and unequal sizes σ_R² is only approximate (it
-//! counts particles, not volumes).
+//! 2008), in the chapter on mixing and segregation. With volume weights and unequal
+//! sizes σ_R² is only approximate (it counts particles, not volumes).
 
 use crate::error::{Result, TampError};
 use crate::particles::Vec3;
