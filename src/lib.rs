@@ -10,6 +10,7 @@ pub mod generate;
 pub mod growth;
 pub mod integrate;
 pub mod material;
+pub mod measure;
 pub mod output;
 pub mod particles;
 pub mod run;
