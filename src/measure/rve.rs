@@ -19,7 +19,7 @@ use crate::measure::packing::packing_fraction;
 use crate::measure::region::Region;
 use crate::particles::Vec3;
 use crate::space::Space;
-use crate::walls::plane::PlaneWall;
+use crate::boundary::shape::Plane;
 
 /// A wall the RVE must keep clear of.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -36,8 +36,8 @@ pub enum WallSurface {
     },
 }
 
-impl From<&PlaneWall> for WallSurface {
-    fn from(w: &PlaneWall) -> Self {
+impl From<&Plane> for WallSurface {
+    fn from(w: &Plane) -> Self {
         WallSurface::Plane {
             point: w.point,
             normal: w.normal,
@@ -180,12 +180,9 @@ mod tests {
 
     #[test]
     fn nearest_wall_sets_the_radius() {
-        let floor = PlaneWall {
-            name: "floor".into(),
+        let floor = Plane {
             point: Vec3::zeros(),
             normal: Vec3::new(0.0, 0.0, 2.0),
-            material: 0,
-            velocity: Vec3::zeros(),
         };
         let walls = [
             WallSurface::from(&floor),
