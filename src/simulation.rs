@@ -694,31 +694,61 @@ impl Simulation {
             normal_sum[i] += k_n;
             tangential_max[i] = tangential_max[i].max(k_t);
         }
+        // Each body: (mass, radius at full size, moment of inertia, material, Σ k_n
+        // of its contacts, largest k_t). Particles still to be poured count with the
+        // smallest radius their source can draw, the lightest they can be.
+        let mut bodies: Vec<(f64, f64, f64, usize, f64, f64)> = (0..p.len())
+            .map(|i| {
+                let r = self.final_radius(i);
+                (
+                    p.mass[i],
+                    r,
+                    p.inertia[i],
+                    p.material[i],
+                    normal_sum[i],
+                    tangential_max[i],
+                )
+            })
+            .collect();
+        for src in self.sources.iter().filter(|s| s.remaining > 0) {
+            let r = src.radius.min_radius();
+            if r > 0.0 {
+                let m = self.materials[src.material].density * 4.0 / 3.0
+                    * std::f64::consts::PI
+                    * r.powi(3);
+                bodies.push((
+                    m,
+                    r,
+                    self.inertia_scale * 0.4 * m * r * r,
+                    src.material,
+                    0.0,
+                    0.0,
+                ));
+            }
+        }
         let mut best: Option<f64> = None;
-        for i in 0..p.len() {
+        for (mass, radius, inertia, material, k_contacts, k_tangential) in bodies {
             let impact = match (&self.law.normal, characteristic_velocity) {
                 (NormalLaw::Linear { .. }, _)
                 | (NormalLaw::Hysteretic { .. }, _)
                 | (NormalLaw::WaltonBraun { .. }, _)
                 | (_, Some(_)) => (0..self.materials.len())
                     .map(|b| {
-                        let pair = self.pair_table.get(p.material[i], b);
+                        let pair = self.pair_table.get(material, b);
                         let v = characteristic_velocity.unwrap_or(0.0);
-                        self.law
-                            .normal
-                            .impact_stiffness(p.mass[i], v, self.final_radius(i), pair)
+                        self.law.normal.impact_stiffness(mass, v, radius, pair)
                     })
                     .fold(0.0, f64::max),
                 (_, None) => 0.0,
             };
             let lever = if self.rotation {
-                1.0 + p.mass[i] * self.final_radius(i).powi(2) / p.inertia[i]
+                1.0 + mass * radius.powi(2) / inertia
             } else {
                 1.0
             };
-            let mut k = normal_sum[i].max(impact);
+            let mut k = k_contacts.max(impact);
             if k <= 0.0 {
-                // No normal stiffness known: the estimate is undefined for this particle.
+                // No normal stiffness known: the estimate is undefined for this body.
                 continue;
             }
             if let Some(
@@ -728,19 +758,15 @@ impl Simulation {
             {
                 k = k.max(stiffness * lever);
             }
-            k = k.max(tangential_max[i] * lever);
+            k = k.max(k_tangential * lever);
             let viscous = match self.law.tangential {
                 Some(TangentialLaw::HaffWerner { damping }) if damping > 0.0 => {
-                    Some(2.0 * p.mass[i] / (damping * lever))
+                    Some(2.0 * mass / (damping * lever))
                 }
                 _ => None,
             };
-            let xi = self
-                .law
-                .damping
-                .map(|d| d.ratio(p.mass[i], k))
-                .unwrap_or(0.0);
-            let elastic = critical_time_step(k, p.mass[i], xi);
+            let xi = self.law.damping.map(|d| d.ratio(mass, k)).unwrap_or(0.0);
+            let elastic = critical_time_step(k, mass, xi);
             let dt = viscous.map_or(elastic, |v| v.min(elastic));
             best = Some(best.map_or(dt, |b: f64| b.min(dt)));
         }

@@ -246,10 +246,17 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
     }
 
     let law = contact_law(&scene.contact);
+    // Particles still to be poured count: the skin must suit the smallest of them.
     let r_min = particles
         .radius
         .iter()
         .cloned()
+        .chain(
+            sources
+                .iter()
+                .map(|s| s.radius.min_radius())
+                .filter(|&r| r > 0.0),
+        )
         .fold(f64::INFINITY, f64::min);
     let space = periodic_space(
         scene,

@@ -11,6 +11,7 @@ mod momentum_conservation;
 pub mod probe;
 mod restitution_laws;
 mod rojek_models;
+mod scott_random_packing;
 mod sliding_oblique_impact;
 mod storakers_unloading;
 mod three_sphere_compression;
@@ -37,6 +38,8 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("kuwabara_kono_restitution", kuwabara_kono_restitution::run),
     ("sliding_oblique_impact", sliding_oblique_impact::run),
     ("van_der_waals_force", van_der_waals_force::run),
+    ("scott_random_packing_quick", scott_random_packing::run),
+    ("scott_random_packing", scott_random_packing::run),
 ];
 
 pub fn find(name: &str) -> Option<CaseFn> {
