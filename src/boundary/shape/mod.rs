@@ -27,10 +27,12 @@
 
 pub mod box_shape;
 pub mod plane;
+pub mod revolved;
 pub mod triangle;
 
 pub use box_shape::BoxShape;
 pub use plane::Plane;
+pub use revolved::Revolved;
 pub use triangle::{Feature, Triangle};
 
 use crate::particles::Vec3;
@@ -46,6 +48,7 @@ pub struct ShapeContact {
 pub enum Shape {
     Plane(Plane),
     Box(BoxShape),
+    Revolved(Revolved),
 }
 
 impl Shape {
@@ -54,6 +57,7 @@ impl Shape {
         match self {
             Shape::Plane(s) => s.contacts(centre, radius, reach, out),
             Shape::Box(s) => s.contacts(centre, radius, reach, out),
+            Shape::Revolved(s) => s.contacts(centre, radius, reach, out),
         }
     }
 }
@@ -106,4 +110,15 @@ pub(crate) fn push_distinct(
 #[inline]
 pub(crate) fn within_reach(overlap: f64, reach: f64) -> bool {
     overlap > -reach
+}
+
+/// A unit vector perpendicular to the unit vector `a`, the same for the same `a`:
+/// `a` crossed with the coordinate axis it is least aligned with.
+pub(crate) fn perpendicular(a: &Vec3) -> Vec3 {
+    let k = (0..3)
+        .min_by(|&i, &j| a[i].abs().total_cmp(&a[j].abs()))
+        .unwrap_or(0);
+    let mut e = Vec3::zeros();
+    e[k] = 1.0;
+    a.cross(&e).normalize()
 }
