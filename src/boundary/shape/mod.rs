@@ -26,11 +26,13 @@
 //! corner one per face.
 
 pub mod box_shape;
+pub mod mesh;
 pub mod plane;
 pub mod revolved;
 pub mod triangle;
 
 pub use box_shape::BoxShape;
+pub use mesh::Mesh;
 pub use plane::Plane;
 pub use revolved::Revolved;
 pub use triangle::{Feature, Triangle};
@@ -49,6 +51,7 @@ pub enum Shape {
     Plane(Plane),
     Box(BoxShape),
     Revolved(Revolved),
+    Mesh(Mesh),
 }
 
 impl Shape {
@@ -58,6 +61,7 @@ impl Shape {
             Shape::Plane(s) => s.contacts(centre, radius, reach, out),
             Shape::Box(s) => s.contacts(centre, radius, reach, out),
             Shape::Revolved(s) => s.contacts(centre, radius, reach, out),
+            Shape::Mesh(s) => s.contacts(centre, radius, reach, out),
         }
     }
 }
