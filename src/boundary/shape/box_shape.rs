@@ -136,6 +136,16 @@ impl BoxShape {
                 count += 1;
             }
         }
+        if count == 1 {
+            // The common case of a particle on one wall needs no sorting or storage.
+            let c = found.into_iter().flatten().next().expect("one candidate");
+            out.push(ShapeContact {
+                normal: c.normal,
+                overlap: radius - c.distance,
+                facet: c.facet,
+            });
+            return;
+        }
         if count == 0 {
             return;
         }
