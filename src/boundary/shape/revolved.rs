@@ -181,6 +181,10 @@ impl Revolved {
         let rel = x - self.origin;
         let h = rel.dot(&self.axis);
         let radial = rel - self.axis * h;
+        // Near the axis the subtraction leaves an axial residue of order ε|x'|,
+        // large relative to ρ; a second projection makes u perpendicular to a, so
+        // the contact normal n_ρ u + n_h a stays unit length.
+        let radial = radial - self.axis * radial.dot(&self.axis);
         let rho = radial.norm();
         // Below this the radial direction is rounding noise; the ring is symmetric.
         if rho > 1e-12 * self.scale {
@@ -344,6 +348,21 @@ mod tests {
         assert_eq!(out.len(), 1);
         assert!((out[0].overlap - 0.05).abs() < 1e-14);
         assert!((out[0].normal - Vec3::z()).norm() < 1e-14);
+    }
+
+    #[test]
+    fn near_the_axis_far_from_the_origin_the_normal_stays_unit() {
+        // ρ ≪ h: the radial part of x' is a small difference of large numbers.
+        let axis = Vec3::new(0.3, 0.1, 1.0);
+        let f = Revolved::cylinder(Vec3::new(0.1, 0.2, -0.3), axis, 0.4, 0.0, 1e3).unwrap();
+        let e1 = f.axis().cross(&Vec3::x()).normalize();
+        for (rho, h) in [(3.4e-3, 1.9), (1e-6, 500.0), (2e-9, 999.0)] {
+            let x = f.origin() + f.axis() * h + e1 * rho;
+            let out = query(&f, x, 0.5);
+            assert_eq!(out.len(), 1);
+            assert!((out[0].overlap - (0.1 + rho)).abs() < 1e-12);
+            assert!(out[0].normal.dot(&f.axis()).abs() < 1e-14);
+        }
     }
 
     #[test]
