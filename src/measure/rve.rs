@@ -14,12 +14,12 @@
 //! normal n, and R − |(c − b) − ((c − b)·â) â| for the inside of a cylindrical wall
 //! of radius R about the axis through b along â.
 
+use crate::boundary::shape::Plane;
 use crate::error::{Result, TampError};
 use crate::measure::packing::packing_fraction;
 use crate::measure::region::Region;
 use crate::particles::Vec3;
 use crate::space::Space;
-use crate::boundary::shape::Plane;
 
 /// A wall the RVE must keep clear of.
 #[derive(Clone, Copy, Debug, PartialEq)]
