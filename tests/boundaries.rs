@@ -172,3 +172,73 @@ fn displacement_motion_carries_a_resting_sphere() {
     );
     assert!(b.sim.dissipated_energy() >= -1e-15);
 }
+
+#[test]
+fn open_box() {
+    let shape = json!({"kind": "box", "lower": [-0.01, -0.01, -0.01], "upper": [0.01, 0.01, 0.01], "open": ["+z"]});
+    bounce(shape.clone(), [0.01 - 1.5 * R, 0.0, 0.0], [-1.0, 0.0, 0.0]);
+    bounce(shape.clone(), [0.0, -0.01 + 1.5 * R, 0.0], [0.0, 1.0, 0.0]);
+    rest(shape, [0.0, 0.0, -0.01 + R]);
+}
+
+#[test]
+fn cylinder_inner_wall() {
+    let shape = json!({"kind": "cylinder", "origin": [0, 0, 0], "axis": [0, 0, 1], "radius": 0.01, "bottom": -0.01, "top": 0.01});
+    bounce(shape.clone(), [0.01 - 1.5 * R, 0.0, 0.0], [-1.0, 0.0, 0.0]);
+    let s = std::f64::consts::FRAC_1_SQRT_2;
+    let at = 0.01 - 1.5 * R;
+    bounce(shape, [at * s, at * s, 0.003], [-1.0, -1.0, 0.0]);
+}
+
+/// Inner surface of a 45° cone, hit along its inward normal (−1, 0, 1)/√2.
+#[test]
+fn cone_inner_wall() {
+    let shape = json!({"kind": "cone", "origin": [0, 0, 0], "axis": [0, 0, 1],
+                       "bottom": 0.0, "bottom_radius": 0.005, "top": 0.01, "top_radius": 0.015});
+    let s = std::f64::consts::FRAC_1_SQRT_2;
+    bounce(
+        shape,
+        [0.01 - 1.5 * R * s, 0.0, 0.005 + 1.5 * R * s],
+        [-1.0, 0.0, 1.0],
+    );
+}
+
+/// A funnel: the 45° cone and the outlet tube below it.
+#[test]
+fn funnel() {
+    let shape = json!({"kind": "funnel", "origin": [0, 0, 0], "axis": [0, 0, 1],
+                       "outlet_radius": 0.003, "outlet_bottom": -0.01, "outlet_top": 0.0,
+                       "top_radius": 0.013, "top": 0.01});
+    let s = std::f64::consts::FRAC_1_SQRT_2;
+    bounce(
+        shape.clone(),
+        [0.008 - 1.5 * R * s, 0.0, 0.005 + 1.5 * R * s],
+        [-1.0, 0.0, 1.0],
+    );
+    bounce(shape, [0.003 - 1.5 * R, 0.0, -0.005], [-1.0, 0.0, 0.0]);
+}
+
+/// z = 0.1 x + 0.2 y sampled on a grid (exact for a plane), hit along its normal;
+/// a flat grid of heights to rest on.
+#[test]
+fn height_field() {
+    let tilted = json!({"kind": "height_field", "x_range": [-0.01, 0.01], "y_range": [-0.01, 0.01],
+                        "expression": "0.1 * x + 0.2 * y", "cells": [4, 4]});
+    let n = Vec3::new(-0.1, -0.2, 1.0).normalize() * 1.5 * R;
+    bounce(tilted, [n.x, n.y, n.z], [-0.1, -0.2, 1.0]);
+    let flat = json!({"kind": "height_field", "x_range": [-0.01, 0.01], "y_range": [-0.01, 0.01],
+                      "grid": [[0.0, 0.0, 0.0], [0.0, 0.0, 0.0]]});
+    rest(flat, [0.001, 0.002, R]);
+}
+
+/// Meshes: a square polygon (two triangles) hit exactly over their shared diagonal,
+/// where a double-counted contact would halve the largest overlap's closed form by √2;
+/// the same square read from an STL file to rest on.
+#[test]
+fn mesh_polygons_and_stl() {
+    let square = json!({"kind": "mesh", "polygons": [[[-0.01, -0.01, 0], [0.01, -0.01, 0], [0.01, 0.01, 0], [-0.01, 0.01, 0]]]});
+    bounce(square, [0.002, 0.002, 1.5 * R], [0.0, 0.0, 1.0]);
+    let stl = json!({"kind": "mesh", "stl": "tests/scenes/square.stl"});
+    bounce(stl.clone(), [-0.003, -0.003, 1.5 * R], [0.0, 0.0, 1.0]);
+    rest(stl, [0.0, 0.0, R]);
+}

@@ -239,3 +239,42 @@ fn cohesion_cutoff_must_exceed_min_separation() {
         json!({"law": "van_der_waals", "hamaker": 1e-19, "min_separation": 4e-10, "cutoff": 1e-10});
     expect_input_error(s, &["contact.cohesion.cutoff: must be > min_separation"]);
 }
+
+#[test]
+fn boundary_shapes_and_motions_are_checked() {
+    let mut s = base();
+    s["walls"].as_array_mut().unwrap().push(json!({
+        "name": "hopper", "material": "glass",
+        "shape": {"kind": "funnel", "origin": [0, 0, 0.1], "axis": [0, 0, 1], "outlet_radius": 0.01,
+                  "outlet_bottom": 0, "outlet_top": 0.01, "top_radius": 0.005, "top": 0.02},
+        "motion": {"kind": "displacement", "x": "0.0", "y": "0.0", "z": "0.001 * math::sin(t"}
+    }));
+    s["walls"].as_array_mut().unwrap().push(json!({
+        "name": "lid", "material": "glass",
+        "shape": {"kind": "box", "lower": [0, 0, 0], "upper": [1, 1, 1], "open": ["top"]},
+        "motion": {"kind": "servo", "direction": [0, 0, -1], "pressure": 1e5, "gain": 1e-3, "max_speed": 0.1}
+    }));
+    expect_input_error(
+        s,
+        &[
+            "walls[1].shape.top_radius: must exceed outlet_radius",
+            "walls[1].motion.z: cannot parse expression",
+            "walls[2].shape.open[0]: unknown face 'top'",
+            "walls[2].motion: give either 'force' (N) or both 'pressure' (Pa) and 'area'",
+        ],
+    );
+}
+
+#[test]
+fn missing_stl_file_is_an_input_error() {
+    let mut s = base();
+    s["walls"][0]["shape"] = json!({"kind": "mesh", "stl": "no/such/file.stl"});
+    expect_input_error(s, &["walls[0].shape", "no/such/file.stl"]);
+}
+
+#[test]
+fn periodic_period_must_exceed_the_interaction_range() {
+    let mut s = base();
+    s["periodic"] = json!({"x": [-0.0015, 0.0015]});
+    expect_input_error(s, &["periodic.x: the period"]);
+}

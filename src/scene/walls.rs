@@ -384,13 +384,123 @@ pub fn build(
         .collect()
 }
 
-fn build_shape(s: &ShapeSpec, _base_dir: &Path) -> std::result::Result<Shape, String> {
-    use crate::boundary::shape::Plane;
-    match s {
-        ShapeSpec::Plane { point, normal } => Ok(Shape::Plane(Plane {
+fn build_shape(s: &ShapeSpec, base_dir: &Path) -> std::result::Result<Shape, String> {
+    use crate::boundary::shape::{BoxShape, Mesh, Plane, Revolved};
+    let rule = |e: TampError| match e {
+        TampError::Input { path, rule } => format!("{path}: {rule}"),
+        other => other.to_string(),
+    };
+    Ok(match s {
+        ShapeSpec::Plane { point, normal } => Shape::Plane(Plane {
             point: v3(point),
             normal: v3(normal).normalize(),
-        })),
-        _ => Err("this shape kind is not built yet".into()),
-    }
+        }),
+        ShapeSpec::Box { lower, upper, open } => {
+            let faces: [bool; 6] = std::array::from_fn(|k| !open.iter().any(|f| f == FACES[k]));
+            Shape::Box(BoxShape::with_faces(v3(lower), v3(upper), faces).map_err(rule)?)
+        }
+        ShapeSpec::Cylinder {
+            origin,
+            axis,
+            radius,
+            bottom,
+            top,
+        } => Shape::Revolved(
+            Revolved::cylinder(v3(origin), v3(axis), *radius, *bottom, *top).map_err(rule)?,
+        ),
+        ShapeSpec::Cone {
+            origin,
+            axis,
+            bottom,
+            bottom_radius,
+            top,
+            top_radius,
+        } => Shape::Revolved(
+            Revolved::cone(
+                v3(origin),
+                v3(axis),
+                (*bottom_radius, *bottom),
+                (*top_radius, *top),
+            )
+            .map_err(rule)?,
+        ),
+        ShapeSpec::Funnel {
+            origin,
+            axis,
+            outlet_radius,
+            outlet_bottom,
+            outlet_top,
+            top_radius,
+            top,
+        } => Shape::Revolved(
+            Revolved::funnel(
+                v3(origin),
+                v3(axis),
+                *outlet_radius,
+                *outlet_bottom,
+                *outlet_top,
+                *top_radius,
+                *top,
+            )
+            .map_err(rule)?,
+        ),
+        ShapeSpec::HeightField {
+            x_range,
+            y_range,
+            expression,
+            cells,
+            grid,
+        } => {
+            let mesh = match (expression, grid) {
+                (Some(src), _) => {
+                    let f = Expression::parse(src, &["x", "y"])?;
+                    let [nx, ny] = cells.unwrap_or([1, 1]);
+                    let failure = std::cell::RefCell::new(None);
+                    let mesh = Mesh::from_height_fn(
+                        (x_range[0], x_range[1]),
+                        (y_range[0], y_range[1]),
+                        nx + 1,
+                        ny + 1,
+                        |x, y| match f.eval(&[x, y]) {
+                            Ok(z) if z.is_finite() => z,
+                            Ok(z) => {
+                                failure.borrow_mut().get_or_insert(format!(
+                                    "expression is {z} at x = {x:e}, y = {y:e}"
+                                ));
+                                0.0
+                            }
+                            Err(e) => {
+                                failure.borrow_mut().get_or_insert(e);
+                                0.0
+                            }
+                        },
+                    )
+                    .map_err(rule)?;
+                    if let Some(f) = failure.into_inner() {
+                        return Err(f);
+                    }
+                    mesh
+                }
+                (None, Some(g)) => {
+                    let (ny, nx) = (g.len(), g[0].len());
+                    let z: Vec<f64> = g.iter().flatten().copied().collect();
+                    let dx = (x_range[1] - x_range[0]) / (nx - 1) as f64;
+                    let dy = (y_range[1] - y_range[0]) / (ny - 1) as f64;
+                    Mesh::from_height_grid(x_range[0], y_range[0], dx, dy, nx, ny, &z)
+                        .map_err(rule)?
+                }
+                (None, None) => unreachable!("validated"),
+            };
+            Shape::Mesh(mesh)
+        }
+        ShapeSpec::Mesh { stl, polygons } => Shape::Mesh(match (stl, polygons) {
+            (Some(path), _) => Mesh::from_stl(base_dir.join(path)).map_err(rule)?,
+            (None, Some(p)) => {
+                let polys: Vec<Vec<Vec3>> =
+                    p.iter().map(|poly| poly.iter().map(v3).collect()).collect();
+                Mesh::from_polygons(&polys).map_err(rule)?
+            }
+            (None, None) => unreachable!("validated"),
+        }),
+    })
 }
