@@ -1,6 +1,7 @@
 //! The case registry: scene name → function. Adding a case = its JSON file in
 //! `verification/` + one file here + one line in `CASES`.
 
+mod density_segregation;
 mod energy_conservation_elastic;
 mod hertz_collision_time;
 mod hertz_yield_onset;
@@ -40,6 +41,7 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("van_der_waals_force", van_der_waals_force::run),
     ("scott_random_packing_quick", scott_random_packing::run),
     ("scott_random_packing", scott_random_packing::run),
+    ("density_segregation", density_segregation::run),
 ];
 
 pub fn find(name: &str) -> Option<CaseFn> {
