@@ -7,6 +7,7 @@
 pub mod brute;
 pub mod cells;
 mod grid;
+pub mod multigrid;
 
 use crate::contact::history::ContactHistory;
 use crate::particles::Vec3;
@@ -16,6 +17,7 @@ use crate::space::Space;
 pub enum Detector {
     Brute,
     Cells,
+    Multigrid,
 }
 
 impl Detector {
@@ -29,6 +31,7 @@ impl Detector {
         match self {
             Detector::Brute => brute::candidate_pairs(position, radius, margin, space),
             Detector::Cells => cells::candidate_pairs_in(position, radius, margin, space),
+            Detector::Multigrid => multigrid::candidate_pairs(position, radius, margin, space),
         }
     }
 }

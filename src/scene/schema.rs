@@ -350,6 +350,7 @@ fn default_skin() -> f64 {
 pub enum DetectorSpec {
     Brute,
     Cells,
+    Multigrid,
 }
 
 #[derive(Clone, Debug, Deserialize, Serialize)]
