@@ -1,6 +1,7 @@
 //! Linked-cell broad phase: particles are binned into cubic cells of edge
 //! ≥ 2 R_max + margin, so each particle's partners lie in its own or the 26
-//! neighbouring cells (wrapping round periodic axes). O(N) for narrow size
+//! neighbouring cells (wrapping round periodic axes) — in fact in those of them
+//! within r + R_max + margin, fewer than 27 for a small particle. O(N) for narrow size
 //! distributions; for wide ones the cell size is set by the largest particle and the
 //! cost grows with the size ratio (the multigrid detector of He, Dong & Zhou 2007,
 //! `multigrid.rs`, removes that dependence). The grid itself is `grid.rs` with a

@@ -7,30 +7,32 @@
 //! particle's centre and radius in slot order so the search streams contiguous
 //! memory instead of jumping through the particle arrays.
 //!
-//! The search rule, which every caller must respect when it chooses cell edges:
-//! a particle of level `a` looks for partners in level `a` itself and in every
-//! coarser level `b > a`, in the 3×3×3 block of cells around its own position in
-//! level `b`. That block holds every partner in `b` provided level `b`'s cell edge is
-//! at least `r_i + r_j + margin` for every particle `i` of a level `≤ b` and `j` of
-//! `b`. A cross-level pair is then met once, from its finer member; a same-level pair
-//! twice, and kept from the member with the lower slot.
+//! Search. A particle `i` of level `a` looks for partners in level `a` itself and in
+//! every coarser level `b > a`, in the cells that overlap the cube of half-width
+//! `r_i + R_b + margin` around its centre (`R_b` the largest radius in `b`). That
+//! holds every partner whatever the cell edge; the edge only sets the cost. With an
+//! edge of at least `2 R_b + margin` and `r_i ≤ R_b` the cube spans at most three
+//! cells per axis, and about `1 + 2 (r_i + R_b + margin) / edge` on average — so a
+//! small particle looking into a coarse level visits about 8 cells, not 27. A
+//! cross-level pair is met once, from its finer member; a same-level pair twice,
+//! and kept from the member with the lower slot.
 //!
 //! Along an open axis the grid covers the bounding box of the level's members; a
-//! query from a finer level may fall outside it, and the 3-cell block is clipped.
-//! Along a periodic axis `(lo, L)` the grid covers exactly `[lo, lo + L)` with
-//! `max(1, ⌊L / cell⌋)` cells of edge `L / dims ≥ cell`, and the block wraps round;
-//! with fewer than three cells the wrapped block would name a cell twice, so its
-//! distinct cells are listed instead. Distances are the minimum image
-//! (`Space::displacement`), unique because the scene keeps every reach below L/2.
+//! query from a finer level may fall outside it, and its range is clipped. Along a
+//! periodic axis `(lo, L)` the grid covers exactly `[lo, lo + L)` with
+//! `max(1, ⌊L / cell⌋)` cells of edge `L / dims ≥ cell`, and the range wraps round;
+//! when it would cover the whole axis (few cells) each cell is listed once.
+//! Distances are the minimum image (`Space::displacement`), unique because the scene
+//! keeps every reach below L/2.
 
 use crate::particles::Vec3;
 use crate::space::Space;
 
-/// Relative widening of every cell edge, so that rounding in `(x - lo) / edge` can
-/// never put two centres closer than the reach into cells two apart (the rounding
-/// error is a few ulp of the cell coordinate, far below 1e-8 while coordinates stay
-/// below ~1e7 cells from `lo`).
-const EDGE_SAFETY: f64 = 1.0 + 1e-8;
+/// Relative widening of the search reach, so that rounding in `(x - lo) / edge`
+/// cannot leave out the cell of a partner at a distance a few ulp below the reach
+/// (the rounding is a few ulp of the coordinate; 1e-8 covers coordinates up to
+/// ~1e7 reaches from `lo`).
+const REACH_SAFETY: f64 = 1.0 + 1e-8;
 
 #[derive(Clone, Copy, Debug)]
 struct Axis {
@@ -40,6 +42,10 @@ struct Axis {
     /// `Some(L)` along a periodic axis.
     period: Option<f64>,
 }
+
+/// Up to two runs of consecutive cells, as inclusive `(first, last)`; a periodic
+/// range that wraps round is two runs.
+type Runs = ([(usize, usize); 2], usize);
 
 impl Axis {
     fn new(cell: f64, periodic: Option<(f64, f64)>, lo: f64, hi: f64) -> Axis {
@@ -62,50 +68,52 @@ impl Axis {
         }
     }
 
-    /// The cell coordinate of `x`: along an open axis not clamped (a query from
-    /// another level may lie outside the box), along a periodic axis wrapped into
-    /// `[0, dims)`; the clamp catches `x - lo` rounding to exactly `L`.
+    /// Distance of `x` from `lo`, taken modulo `L` along a periodic axis.
     #[inline]
-    fn coordinate(&self, x: f64) -> i64 {
+    fn offset(&self, x: f64) -> f64 {
         match self.period {
-            None => ((x - self.lo) / self.edge).floor() as i64,
-            Some(length) => {
-                let c = ((x - self.lo).rem_euclid(length) / self.edge) as i64;
-                c.clamp(0, self.dims as i64 - 1)
-            }
+            None => x - self.lo,
+            Some(length) => (x - self.lo).rem_euclid(length),
         }
     }
 
-    /// The distinct cells within one of coordinate `c`, ascending except across a
-    /// periodic wrap.
+    /// The cell a member at `x` is stored in. The clamp catches a periodic offset
+    /// that rounds to exactly `L` (that cell's range still reaches round to cell 0).
     #[inline]
-    fn block(&self, c: i64) -> ([usize; 3], usize) {
+    fn home(&self, x: f64) -> usize {
+        ((self.offset(x) / self.edge).floor() as i64).clamp(0, self.dims as i64 - 1) as usize
+    }
+
+    /// The cells overlapping `[x - reach, x + reach]`, each once.
+    #[inline]
+    fn runs(&self, x: f64, reach: f64) -> Runs {
+        let u = self.offset(x);
+        let first = ((u - reach) / self.edge).floor() as i64;
+        let last = ((u + reach) / self.edge).floor() as i64;
         let d = self.dims as i64;
-        let mut cells = [0usize; 3];
-        let mut count = 0;
-        match self.period {
+        let mut runs = [(0, 0); 2];
+        let count = match self.period {
             None => {
-                for k in c.saturating_sub(1).max(0)..=c.saturating_add(1).min(d - 1) {
-                    cells[count] = k as usize;
-                    count += 1;
-                }
+                let (a, b) = (first.max(0), last.min(d - 1));
+                runs[0] = (a as usize, b as usize);
+                usize::from(a <= b)
             }
-            Some(_) if d < 3 => {
-                for k in 0..d {
-                    cells[count] = k as usize;
-                    count += 1;
-                }
+            Some(_) if last.saturating_sub(first) >= d - 1 => {
+                runs[0] = (0, self.dims - 1);
+                1
             }
             Some(_) => {
-                cells = [
-                    ((c - 1).rem_euclid(d)) as usize,
-                    c as usize,
-                    ((c + 1) % d) as usize,
-                ];
-                count = 3;
+                let (a, b) = (first.rem_euclid(d) as usize, last.rem_euclid(d) as usize);
+                if a <= b {
+                    runs[0] = (a, b);
+                    1
+                } else {
+                    runs = [(0, b), (a, self.dims - 1)];
+                    2
+                }
             }
-        }
-        (cells, count)
+        };
+        (runs, count)
     }
 }
 
@@ -119,6 +127,8 @@ pub(crate) struct Level {
     id: Vec<u32>,
     centre: Vec<Vec3>,
     radius: Vec<f64>,
+    /// Largest radius in the level: sets how far a query must look into it.
+    r_max: f64,
 }
 
 impl Level {
@@ -136,11 +146,13 @@ impl Level {
         debug_assert!(!members.is_empty());
         let mut lo = Vec3::repeat(f64::INFINITY);
         let mut hi = Vec3::repeat(f64::NEG_INFINITY);
+        let mut r_max = 0.0f64;
         for &i in members {
             lo = lo.inf(&position[i as usize]);
             hi = hi.sup(&position[i as usize]);
+            r_max = r_max.max(radius[i as usize]);
         }
-        let mut cell = (cell * EDGE_SAFETY).max(f64::MIN_POSITIVE);
+        let mut cell = cell.max(f64::MIN_POSITIVE);
         let axes = loop {
             let axes = [0, 1, 2].map(|k| Axis::new(cell, space.periodic[k], lo[k], hi[k]));
             let total = axes.iter().fold(1usize, |n, a| n.saturating_mul(a.dims));
@@ -149,18 +161,12 @@ impl Level {
             }
             cell *= 2.0;
         };
-        let mut level = Level {
-            axes,
-            start: Vec::new(),
-            id: vec![0; members.len()],
-            centre: vec![Vec3::zeros(); members.len()],
-            radius: vec![0.0; members.len()],
-        };
-        let ncell = axes[0].dims * axes[1].dims * axes[2].dims;
+        let flat = |c: [usize; 3]| c[0] + axes[0].dims * (c[1] + axes[1].dims * c[2]);
         let home: Vec<usize> = members
             .iter()
-            .map(|&i| level.home(&position[i as usize]))
+            .map(|&i| flat([0, 1, 2].map(|k| axes[k].home(position[i as usize][k]))))
             .collect();
+        let ncell = axes[0].dims * axes[1].dims * axes[2].dims;
         let mut start = vec![0usize; ncell + 1];
         for &c in &home {
             start[c + 1] += 1;
@@ -169,6 +175,14 @@ impl Level {
             start[c + 1] += start[c];
         }
         let mut fill = start.clone();
+        let mut level = Level {
+            axes,
+            start: Vec::new(),
+            id: vec![0; members.len()],
+            centre: vec![Vec3::zeros(); members.len()],
+            radius: vec![0.0; members.len()],
+            r_max,
+        };
         for (&i, &c) in members.iter().zip(&home) {
             let slot = fill[c];
             fill[c] += 1;
@@ -180,40 +194,24 @@ impl Level {
         level
     }
 
-    fn flat(&self, c: [usize; 3]) -> usize {
-        c[0] + self.axes[0].dims * (c[1] + self.axes[1].dims * c[2])
-    }
-
-    /// The cell a member is stored in (its own coordinate, inside the grid).
-    fn home(&self, x: &Vec3) -> usize {
-        self.flat([0, 1, 2].map(|k| {
-            let a = &self.axes[k];
-            a.coordinate(x[k]).clamp(0, a.dims as i64 - 1) as usize
-        }))
-    }
-
-    /// Call `visit` with the slot range of every cell of the block around `x`.
-    /// Cells adjacent along x are adjacent in memory, so an unwrapped run along x is
-    /// one range.
+    /// Call `visit` with the slot range of every cell overlapping the cube of
+    /// half-width `reach` around `x`, each cell once. Cells adjacent along x are
+    /// adjacent in memory, so a run along x is one range.
     #[inline]
-    fn for_each_near(&self, x: &Vec3, mut visit: impl FnMut(std::ops::Range<usize>)) {
-        let [bx, by, bz] = [0, 1, 2].map(|k| self.axes[k].block(self.axes[k].coordinate(x[k])));
-        for &cz in &bz.0[..bz.1] {
-            for &cy in &by.0[..by.1] {
-                let row = self.flat([0, cy, cz]);
-                let xs = &bx.0[..bx.1];
-                let mut k = 0;
-                while k < xs.len() {
-                    let first = xs[k];
-                    let mut last = first;
-                    while k + 1 < xs.len() && xs[k + 1] == last + 1 {
-                        k += 1;
-                        last += 1;
-                    }
-                    k += 1;
-                    let range = self.start[row + first]..self.start[row + last + 1];
-                    if !range.is_empty() {
-                        visit(range);
+    fn for_each_near(&self, x: &Vec3, reach: f64, mut visit: impl FnMut(std::ops::Range<usize>)) {
+        let [rx, ry, rz] = [0, 1, 2].map(|k| self.axes[k].runs(x[k], reach));
+        let [dx, dy] = [self.axes[0].dims, self.axes[1].dims];
+        for &(z0, z1) in &rz.0[..rz.1] {
+            for cz in z0..=z1 {
+                for &(y0, y1) in &ry.0[..ry.1] {
+                    for cy in y0..=y1 {
+                        let row = dx * (cy + dy * cz);
+                        for &(x0, x1) in &rx.0[..rx.1] {
+                            let range = self.start[row + x0]..self.start[row + x1 + 1];
+                            if !range.is_empty() {
+                                visit(range);
+                            }
+                        }
                     }
                 }
             }
@@ -222,7 +220,7 @@ impl Level {
 }
 
 /// All pairs closer than `margin` between surfaces, from levels ordered fine to
-/// coarse that respect the search rule of the module doc; sorted, no duplicates.
+/// coarse (see the module doc); sorted, no duplicates.
 pub(crate) fn pairs(levels: &[Level], margin: f64, space: &Space) -> Vec<(u32, u32)> {
     if space.is_periodic() {
         search::<true>(levels, margin, space)
@@ -240,7 +238,8 @@ fn search<const WRAP: bool>(levels: &[Level], margin: f64, space: &Space) -> Vec
             let (x, r, i) = (own.centre[s], own.radius[s], own.id[s]);
             for (b, other) in levels.iter().enumerate().skip(a) {
                 let same = a == b;
-                other.for_each_near(&x, |range| {
+                let look = (r + other.r_max + margin) * REACH_SAFETY;
+                other.for_each_near(&x, look, |range| {
                     // Same level: keep a pair from its lower slot only.
                     let from = if same {
                         range.start.max(s + 1)

@@ -7,20 +7,19 @@
 //! its own size) and `s_min` the smallest, class `k` holds the particles with
 //! `s_min·2^(k−1) < s ≤ s_min·2^k`: cell edges double from one class to the next.
 //! Only occupied classes get a level, so a bidisperse mix has two levels whatever
-//! its size ratio. A level's cell edge is the largest `s` in it or in any finer
-//! level (the two coincide unless rounding in the class computation reorders
-//! neighbours), which is what the search below needs.
+//! its size ratio. A level's cell edge is the largest `s` in it, the linked-cell
+//! edge for that class alone.
 //!
 //! Search. A particle looks for partners in its own level and in every coarser
-//! level, in the 3×3×3 cells around its position there: the coarse cell edge covers
-//! `r_small + r_big + margin`, so that block holds every partner. Searching the other
-//! way, from a big particle down into a fine level, would visit about
-//! `(R_big/r_small)³` mostly empty fine cells per big particle. Each cross-level pair
-//! is therefore found once, by its smaller member; same-level pairs as in linked
-//! cells. Per particle the work is 27 cells times the number of occupied coarser
-//! levels — at most log₂ of the size ratio — and each coarse cell holds O(1)
-//! particles of that level in a dense packing. The grids, the periodic wrap and the
-//! pair loop are shared with the linked-cell detector (`grid.rs`).
+//! level, in the cells overlapping the cube of half-width `r + R_level + margin`
+//! around it — at most 3 per axis, since a coarse cell edge exceeds
+//! `r_small + R_big + margin` (`grid.rs` gives the details and the periodic wrap).
+//! Searching the other way, from a big particle down into a fine level, would visit
+//! about `(R_big/r_small)³` mostly empty fine cells per big particle. Each
+//! cross-level pair is therefore found once, by its smaller member; same-level pairs
+//! as in linked cells. Per particle the work is at most 27 cells times the number of
+//! occupied levels from its own up — at most about log₂ of the size ratio — and in
+//! a dense packing each coarse cell holds O(1) particles of its level.
 
 use super::cells::MAX_CELLS;
 use super::grid::{self, Level};
@@ -83,16 +82,14 @@ pub fn candidate_pairs(
         .collect();
     // The memory cap is shared between levels; coarse levels need few cells anyway.
     let max_cells = MAX_CELLS / occupied.len();
-    let mut cell = 0.0f64;
     let levels: Vec<Level> = occupied
         .iter()
         .map(|&k| {
-            cell = cell.max(class_size[k]);
             Level::build(
                 &member[start[k]..start[k + 1]],
                 position,
                 radius,
-                cell,
+                class_size[k],
                 space,
                 max_cells,
             )
