@@ -6,6 +6,8 @@
 
 pub mod brute;
 pub mod cells;
+mod grid;
+pub mod multigrid;
 
 use crate::contact::history::ContactHistory;
 use crate::particles::Vec3;
@@ -15,6 +17,7 @@ use crate::space::Space;
 pub enum Detector {
     Brute,
     Cells,
+    Multigrid,
 }
 
 impl Detector {
@@ -27,11 +30,8 @@ impl Detector {
     ) -> Vec<(u32, u32)> {
         match self {
             Detector::Brute => brute::candidate_pairs(position, radius, margin, space),
-            // Periodic cells are not written yet: fall back to the exact O(N²) search.
-            Detector::Cells if space.is_periodic() => {
-                brute::candidate_pairs(position, radius, margin, space)
-            }
-            Detector::Cells => cells::candidate_pairs(position, radius, margin),
+            Detector::Cells => cells::candidate_pairs_in(position, radius, margin, space),
+            Detector::Multigrid => multigrid::candidate_pairs(position, radius, margin, space),
         }
     }
 }

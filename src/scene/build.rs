@@ -267,6 +267,7 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
     let detector = match scene.broad_phase.kind {
         DetectorSpec::Brute => Detector::Brute,
         DetectorSpec::Cells => Detector::Cells,
+        DetectorSpec::Multigrid => Detector::Multigrid,
     };
     let neighbors = NeighborList::new(
         detector,

@@ -451,6 +451,7 @@ fn default_skin() -> f64 {
 pub enum DetectorSpec {
     Brute,
     Cells,
+    Multigrid,
 }
 
 #[derive(Clone, Debug, Deserialize, Serialize)]
