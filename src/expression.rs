@@ -5,8 +5,10 @@
 //! not in the middle of a run.
 //!
 //! Syntax: the usual arithmetic with `^` for powers and functions in the `math::`
-//! namespace, e.g. `0.001 * math::sin(2 * math::pi * 50 * t)`. Integer literals are
-//! promoted to floats on evaluation, so `1/2` is 0.5, never 0.
+//! namespace, e.g. `0.001 * math::sin(314.159 * t)` (there is no constant for π:
+//! write the number). Integer literals stay integers, so `1/2` is 0: write `0.5` or
+//! `1.0/2.0`. An expression whose trial value is an integer is rejected, but an
+//! integer division inside a float expression (`t + 1/2`) cannot be detected.
 
 use evalexpr::{
     ContextWithMutableVariables, DefaultNumericTypes, HashMapContext, Node, Value,

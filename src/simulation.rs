@@ -176,6 +176,18 @@ impl Simulation {
         for (wall, force) in self.walls.iter_mut().zip(&self.wall_force) {
             wall.advance(self.time, dt, force);
         }
+        if let Some(w) = self.walls.iter().find(|w| {
+            !w.displacement
+                .iter()
+                .chain(w.velocity.iter())
+                .all(|c| c.is_finite())
+        }) {
+            return Err(self.unstable(format!(
+                "wall '{}' has a non-finite displacement or velocity at t = {:e} s (check its motion expressions)",
+                w.name,
+                self.time + dt
+            )));
+        }
         self.neighbors
             .update(&self.particles.position, &self.particles.radius);
         self.compute_forces()?;
@@ -213,9 +225,16 @@ impl Simulation {
 
     /// Attach a growth stage to a simulation built with its particles at the starting
     /// size; `target_radius` are the final radii.
-    pub fn set_growth(&mut self, growth: Growth, target_radius: Vec<f64>) {
+    pub fn set_growth(&mut self, growth: Growth, target_radius: Vec<f64>) -> Result<()> {
         self.growth = Some(growth);
         self.target_radius = target_radius;
+        // The forces of `new` included gravity, which waits for the end of growth.
+        let dt = self.dt;
+        self.dt = 0.0;
+        self.compute_forces()?;
+        self.dt = dt;
+        self.restart_energy_book();
+        Ok(())
     }
 
     /// Radius particle i has at the end of any growth stage.

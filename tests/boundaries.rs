@@ -242,3 +242,22 @@ fn mesh_polygons_and_stl() {
     bounce(stl.clone(), [-0.003, -0.003, 1.5 * R], [0.0, 0.0, 1.0]);
     rest(stl, [0.0, 0.0, R]);
 }
+
+/// A motion expression that stops being finite stops the run with a diagnostic
+/// naming the wall, instead of losing the wall and writing NaN work.
+#[test]
+fn non_finite_motion_stops_the_run() {
+    let mut b = build(
+        json!({"kind": "plane", "point": [0, 0, 0], "normal": [0, 0, 1]}),
+        json!({"kind": "displacement", "x": "0.0", "y": "0.0", "z": "0.001 * math::sqrt(0.0 - math::sin(1000.0 * t))"}),
+        json!({"position": [0, 0, 0.5], "radius": R, "material": "m"}),
+        json!({"time_step": {"fixed": 1e-4}}),
+    );
+    let err = (0..100).try_for_each(|_| b.sim.step()).unwrap_err();
+    let msg = err.to_string();
+    assert!(
+        msg.contains("wall 'w'") && msg.contains("non-finite"),
+        "{msg}"
+    );
+    assert_eq!(err.exit_code(), 3);
+}

@@ -310,7 +310,7 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
             duration: g.duration,
             initial_fraction: g.initial_fraction,
         };
-        sim.set_growth(growth, target_radius);
+        sim.set_growth(growth, target_radius)?;
     }
     let ts = &scene.time_step;
     let dt_estimate = sim
