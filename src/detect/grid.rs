@@ -13,7 +13,7 @@
 //! holds every partner whatever the cell edge; the edge only sets the cost. With an
 //! edge of at least `2 R_b + margin` and `r_i ≤ R_b` the cube spans at most three
 //! cells per axis, and about `1 + 2 (r_i + R_b + margin) / edge` on average — so a
-//! small particle looking into a coarse level visits about 8 cells, not 27. A
+//! small particle looking into a much coarser level visits about 8 cells, not 27. A
 //! cross-level pair is met once, from its finer member; a same-level pair twice,
 //! and kept from the member with the lower slot.
 //!
