@@ -75,6 +75,8 @@ pub struct Simulation {
     wall_history: Vec<Vec<Vec<(u32, ContactHistory)>>>,
     /// Scratch list of the contacts of one particle with one boundary.
     scratch: Vec<ShapeContact>,
+    /// Scratch copy of one particle's facet histories from the previous step.
+    scratch_history: Vec<(u32, ContactHistory)>,
     /// Force the particles exert on each wall at the current step, N.
     pub wall_force: Vec<Vec3>,
     pub limits: StabilityLimits,
@@ -130,6 +132,7 @@ impl Simulation {
             neighbors,
             wall_history,
             scratch: Vec::new(),
+            scratch_history: Vec::new(),
             limits,
             external_work: 0.0,
             external_work_scale: 0.0,
@@ -174,19 +177,9 @@ impl Simulation {
                 .for_each(|x| space.wrap(x));
         }
         for (wall, force) in self.walls.iter_mut().zip(&self.wall_force) {
-            wall.advance(self.time, dt, force);
-        }
-        if let Some(w) = self.walls.iter().find(|w| {
-            !w.displacement
-                .iter()
-                .chain(w.velocity.iter())
-                .all(|c| c.is_finite())
-        }) {
-            return Err(self.unstable(format!(
-                "wall '{}' has a non-finite displacement or velocity at t = {:e} s (check its motion expressions)",
-                w.name,
-                self.time + dt
-            )));
+            if let Err(what) = wall.advance(self.time, dt, force) {
+                return Err(self.unstable(what));
+            }
         }
         self.neighbors
             .update(&self.particles.position, &self.particles.radius);
@@ -278,14 +271,7 @@ impl Simulation {
                     .pending_radius
                     .get_or_insert_with(|| src.radius.sample(&mut src.rng));
                 let walls = &self.walls;
-                let clear = |x: &Vec3, r: f64| {
-                    let mut found = Vec::new();
-                    walls.iter().all(|w| {
-                        found.clear();
-                        w.contacts(x, r, 0.0, &mut found);
-                        found.is_empty()
-                    })
-                };
+                let clear = |x: &Vec3, r: f64| walls.iter().all(|w| w.deepest_overlap(x, r) <= 0.0);
                 let p = &self.particles;
                 let Some(x) = rsi::place(
                     r,
@@ -381,10 +367,16 @@ impl Simulation {
         let torques = ROT && self.law.tangential.is_some();
         let law_reach = self.law.reach();
         let space = self.neighbors.space;
+        // Open scenes skip the minimum image (a branch the CPU predicts perfectly).
+        let periodic = space.is_periodic();
 
         for (k, &(i, j)) in self.neighbors.pairs.iter().enumerate() {
             let (i, j) = (i as usize, j as usize);
-            let d = space.displacement(&p.position[i], &p.position[j]);
+            let d = if periodic {
+                space.displacement(&p.position[i], &p.position[j])
+            } else {
+                p.position[i] - p.position[j]
+            };
             let reach = p.radius[i] + p.radius[j];
             let dist2 = d.norm_squared();
             if dist2 >= (reach + law_reach).powi(2) {
@@ -450,6 +442,7 @@ impl Simulation {
         }
 
         let mut found = std::mem::take(&mut self.scratch);
+        let mut previous = std::mem::take(&mut self.scratch_history);
         for (w, wall) in self.walls.iter().enumerate() {
             let mut on_wall = Vec3::zeros();
             for i in 0..n {
@@ -461,12 +454,13 @@ impl Simulation {
                     }
                     continue;
                 }
-                // Histories of the facets touched last step, carried to this step's contacts.
-                let previous = if HIST {
-                    std::mem::take(&mut self.wall_history[w][i])
-                } else {
-                    Vec::new()
-                };
+                // Histories of the facets touched last step, carried to this step's
+                // contacts; both buffers keep their capacity, so no step allocates.
+                if HIST {
+                    previous.clear();
+                    previous.extend_from_slice(&self.wall_history[w][i]);
+                    self.wall_history[w][i].clear();
+                }
                 for c in &found {
                     let overlap = c.overlap;
                     let ratio = overlap / p.radius[i];
@@ -531,6 +525,7 @@ impl Simulation {
             self.wall_force[w] = on_wall;
         }
         self.scratch = found;
+        self.scratch_history = previous;
         self.max_overlap_ratio = worst;
         Ok(())
     }

@@ -5,6 +5,7 @@ use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use tamp::generate::distribution::SizeDistribution;
 use tamp::generate::{ballistic, measure};
+use tamp::measure::{Region, packing::packing_fraction};
 use tamp::particles::Vec3;
 use tamp::space::Space;
 
@@ -37,7 +38,7 @@ struct Bulk {
 /// floor (below, the floor orders the packing: φ ≈ 0.54 in the first two diameters)
 /// to 10 diameters below the highest centre (the rough surface). Moving either
 /// face 5 diameters further in changes φ by less than the seed-to-seed spread.
-fn bulk(p: &[Vec3], radii: &[f64], space: &Space, width: f64) -> Bulk {
+fn bulk(p: &[Vec3], radii: &[f64], space: &Space) -> Bulk {
     let top = p.iter().map(|x| x[2]).fold(0.0, f64::max);
     let (lo, hi) = (5.0, top - 10.0);
     let pairs = measure::contact_pairs(p, radii, space, 1e-9);
@@ -52,7 +53,8 @@ fn bulk(p: &[Vec3], radii: &[f64], space: &Space, width: f64) -> Bulk {
         .filter(|&i| p[i][2] > lo && p[i][2] < hi)
         .collect();
     Bulk {
-        solid_fraction: measure::slab_solid_fraction(p, radii, width * width, lo, hi),
+        solid_fraction: packing_fraction(p, radii, &Region::Slab { axis: 2, lo, hi }, space)
+            .unwrap(),
         coordination: inside.iter().map(|&i| contacts[i] as f64).sum::<f64>() / inside.len() as f64,
         not_three_supports: (0..p.len())
             .filter(|&i| (p[i][2] - radii[i]).abs() > 1e-12 && earlier[i] != 3)
@@ -75,7 +77,7 @@ fn generate_monodisperse_bulk_matches_visscher_bolsterli() {
     let mut z = Vec::new();
     for seed in 1..=4 {
         let (p, radii, space) = pile(10_000, width, seed);
-        let b = bulk(&p, &radii, &space, width);
+        let b = bulk(&p, &radii, &space);
         assert_eq!(b.not_three_supports, 0, "seed {seed}");
         phi.push(b.solid_fraction);
         z.push(b.coordination);
@@ -102,7 +104,7 @@ fn generate_survey() {
         let (mut phi, mut z) = (Vec::new(), Vec::new());
         for seed in 1..=seeds {
             let (p, radii, space) = pile(n, width, seed);
-            let b = bulk(&p, &radii, &space, width);
+            let b = bulk(&p, &radii, &space);
             println!(
                 "N {n} L {width} seed {seed}: phi {:.5} Z {:.4} non-floor spheres without exactly 3 supports {}",
                 b.solid_fraction, b.coordination, b.not_three_supports

@@ -278,3 +278,23 @@ fn periodic_period_must_exceed_the_interaction_range() {
     s["periodic"] = json!({"x": [-0.0015, 0.0015]});
     expect_input_error(s, &["periodic.x: the period"]);
 }
+
+#[test]
+fn initial_overlap_through_a_periodic_face_is_found() {
+    let mut s = base();
+    s["periodic"] = json!({"x": [-0.01, 0.01]});
+    s["particles"] = json!([
+        {"position": [-0.0095, 0, 0.002], "radius": 0.001, "material": "glass"},
+        {"position": [0.0095, 0, 0.002], "radius": 0.001, "material": "glass"}
+    ]);
+    expect_input_error(s, &["particles[1].position: overlaps particles[0]"]);
+}
+
+#[test]
+fn deposited_spheres_that_hit_an_explicit_one_are_named() {
+    let mut s = base();
+    s["particles"] = json!([{"position": [0, 0, 0.001], "radius": 0.001, "material": "glass"}]);
+    s["deposit"] = json!([{"count": 30, "radius": 0.001, "material": "glass",
+                           "footprint": [[-0.002, -0.002], [0.002, 0.002]], "floor": 0.0}]);
+    expect_input_error(s, &["deposit (particle", "overlaps particles[0]"]);
+}

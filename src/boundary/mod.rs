@@ -55,9 +55,21 @@ impl Boundary {
             .contacts(&(centre - self.displacement), radius, reach, out);
     }
 
+    /// Largest overlap of a sphere with any part of the boundary, −∞ when it touches
+    /// none. For set-up checks (insertion, initial overlaps), not the force loop.
+    pub fn deepest_overlap(&self, centre: &Vec3, radius: f64) -> f64 {
+        let mut found = Vec::new();
+        self.contacts(centre, radius, 0.0, &mut found);
+        found
+            .iter()
+            .map(|c| c.overlap)
+            .fold(f64::NEG_INFINITY, f64::max)
+    }
+
     /// Move over the step [t, t + dt]; `force_on_boundary` is the force the particles
-    /// exerted at t (what a servo reacts to).
-    pub fn advance(&mut self, t: f64, dt: f64, force_on_boundary: &Vec3) {
+    /// exerted at t (what a servo reacts to). Fails when a displacement expression
+    /// stops being finite (the other motions cannot).
+    pub fn advance(&mut self, t: f64, dt: f64, force_on_boundary: &Vec3) -> Result<(), String> {
         match &self.motion {
             BoundaryMotion::Fixed => self.velocity = Vec3::zeros(),
             BoundaryMotion::Velocity(v) => self.velocity = *v,
@@ -66,16 +78,24 @@ impl Boundary {
                     .motion
                     .displacement_at(t + dt)
                     .expect("displacement motion");
+                if !next.iter().all(|c| c.is_finite()) {
+                    return Err(format!(
+                        "wall '{}' has a non-finite displacement {next:?} at t = {:e} s (check its motion expressions)",
+                        self.name,
+                        t + dt
+                    ));
+                }
                 self.velocity = if dt > 0.0 {
                     (next - self.displacement) / dt
                 } else {
                     Vec3::zeros()
                 };
                 self.displacement = next;
-                return;
+                return Ok(());
             }
             BoundaryMotion::Servo(s) => self.velocity = s.velocity(force_on_boundary),
         }
         self.displacement += self.velocity * dt;
+        Ok(())
     }
 }

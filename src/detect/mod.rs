@@ -84,11 +84,15 @@ impl NeighborList {
         let half_skin = 0.5 * self.skin;
         let stale = self.reference_position.len() != position.len()
             || (0..position.len()).any(|i| {
-                let moved = self
-                    .space
-                    .displacement(&position[i], &self.reference_position[i])
-                    .norm();
-                moved + (radius[i] - self.reference_radius[i]).max(0.0) > half_skin
+                // What radius growth leaves of the skin for motion; squared distances
+                // keep the check free of square roots when nothing grows.
+                let budget = half_skin - (radius[i] - self.reference_radius[i]).max(0.0);
+                budget < 0.0
+                    || self
+                        .space
+                        .displacement(&position[i], &self.reference_position[i])
+                        .norm_squared()
+                        > budget * budget
             });
         if stale {
             self.rebuild(position, radius);

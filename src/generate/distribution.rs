@@ -22,6 +22,7 @@
 use rand::RngExt;
 use rand_chacha::ChaCha8Rng;
 use rand_distr::Distribution;
+use serde::{Deserialize, Serialize};
 
 /// Sums of fractions and end points of cumulative tables are accepted within this
 /// absolute tolerance, so tables written with a dozen decimal digits validate.
@@ -32,7 +33,10 @@ const SUM_TOLERANCE: f64 = 1e-9;
 /// mistake in the parameters (e.g. `min`/`max` given in other units than `median`).
 const MIN_KEPT_PROBABILITY: f64 = 1e-4;
 
-#[derive(Clone, Debug, PartialEq)]
+/// In scene files an object tagged by `law` (`"mono"`, `"uniform"`, `"discrete"`,
+/// `"log_normal"`, `"tabulated"`) with the fields below.
+#[derive(Clone, Debug, PartialEq, Deserialize, Serialize)]
+#[serde(tag = "law", rename_all = "snake_case", deny_unknown_fields)]
 pub enum SizeDistribution {
     Mono {
         radius: f64,
@@ -49,7 +53,9 @@ pub enum SizeDistribution {
         median: f64,
         /// Standard deviation of ln r.
         sigma: f64,
+        #[serde(default)]
         min: Option<f64>,
+        #[serde(default)]
         max: Option<f64>,
     },
     Tabulated {

@@ -148,6 +148,14 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
     });
 
     let walls = super::walls::build(&scene.walls, &material_id, &scene.base_dir)?;
+    let mut space = Space::open();
+    for (a, axis) in scene
+        .periodic
+        .iter()
+        .flat_map(|p| p.axes().into_iter().enumerate())
+    {
+        space.periodic[a] = axis.map(|[lo, hi]| (lo, hi - lo));
+    }
 
     let inertia_scale = scene.rotation.as_ref().map_or(1.0, |r| r.inertia_scale);
     let mut particles = Particles::default();
@@ -167,23 +175,11 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
             motion,
         );
     }
-    check_initial_overlaps(
-        &particles,
-        &walls,
-        scene.stability.initial_overlap_tolerance,
-    )?;
+    let explicit = particles.len();
 
     let mut rng = ChaCha8Rng::seed_from_u64(scene.seed);
     // Spheres placed before a growth stage only need to be apart at their starting size.
     let placement_scale = scene.growth.as_ref().map_or(1.0, |g| g.initial_fraction);
-    let mut insertion_space = Space::open();
-    for (a, axis) in scene
-        .periodic
-        .iter()
-        .flat_map(|p| p.axes().into_iter().enumerate())
-    {
-        insertion_space.periodic[a] = axis.map(|[lo, hi]| (lo, hi - lo));
-    }
     for (k, dep) in scene.deposit.iter().enumerate() {
         let law = dep.radius.distribution();
         let radii: Vec<f64> = (0..dep.count).map(|_| law.sample(&mut rng)).collect();
@@ -191,7 +187,7 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
             &radii,
             (dep.footprint[0], dep.footprint[1]),
             dep.floor,
-            &insertion_space,
+            &space,
             &mut rng,
         )
         .map_err(|rule| TampError::input(format!("deposit[{k}]"), rule))?;
@@ -209,6 +205,15 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
             );
         }
     }
+    // Explicit and deposited spheres are placed without looking at each other or at
+    // the walls; inserted ones are clear by construction, so they come after.
+    check_initial_overlaps(
+        &particles,
+        explicit,
+        &walls,
+        &space,
+        scene.stability.initial_overlap_tolerance,
+    )?;
     let mut sources = Vec::new();
     for (k, ins) in scene.insert.iter().enumerate() {
         if let Some(sch) = &ins.schedule {
@@ -234,7 +239,7 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
         insert_random(
             &mut particles,
             &walls,
-            &insertion_space,
+            &space,
             placement_scale,
             ins,
             k,
@@ -258,9 +263,10 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
                 .filter(|&r| r > 0.0),
         )
         .fold(f64::INFINITY, f64::min);
-    let space = periodic_space(
-        scene,
+    check_period(
+        &space,
         &particles,
+        &sources,
         &law,
         scene.broad_phase.skin_fraction * r_min,
     )?;
@@ -349,29 +355,47 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
     })
 }
 
-fn check_initial_overlaps(p: &Particles, walls: &[Boundary], tolerance: f64) -> Result<()> {
-    let pairs = crate::detect::cells::candidate_pairs(&p.position, &p.radius, 0.0);
+/// Initial overlaps among the explicit and deposited particles (through periodic
+/// faces too) and with the walls. The first `explicit` particles are named by their
+/// `particles[k]` path, the rest as deposited particles.
+fn check_initial_overlaps(
+    p: &Particles,
+    explicit: usize,
+    walls: &[Boundary],
+    space: &Space,
+    tolerance: f64,
+) -> Result<()> {
+    let path = |i: usize| {
+        if i < explicit {
+            format!("particles[{i}].position")
+        } else {
+            format!("deposit (particle {i})")
+        }
+    };
+    let pairs = crate::detect::cells::candidate_pairs_in(&p.position, &p.radius, 0.0, space);
     let mut errors = Vec::new();
     for (i, j) in pairs {
         let (i, j) = (i as usize, j as usize);
-        let overlap = p.radius[i] + p.radius[j] - (p.position[i] - p.position[j]).norm();
+        let overlap =
+            p.radius[i] + p.radius[j] - space.displacement(&p.position[i], &p.position[j]).norm();
         let fraction = overlap / p.radius[i].min(p.radius[j]);
         if fraction > tolerance {
             errors.push(TampError::input(
-                format!("particles[{j}].position"),
+                path(j),
                 format!(
-                    "overlaps particles[{i}] by {overlap:.4e} m ({fraction:.3e} of the smaller radius); \
-                     stability.initial_overlap_tolerance allows {tolerance:e}"
+                    "overlaps {} by {overlap:.4e} m ({fraction:.3e} of the smaller radius); \
+                     stability.initial_overlap_tolerance allows {tolerance:e}",
+                    path(i).trim_end_matches(".position")
                 ),
             ));
         }
     }
     for (k, wall) in walls.iter().enumerate() {
         for i in 0..p.len() {
-            let overlap = deepest_wall_overlap(wall, &p.position[i], p.radius[i]);
+            let overlap = wall.deepest_overlap(&p.position[i], p.radius[i]);
             if overlap / p.radius[i] > tolerance {
                 errors.push(TampError::input(
-                    format!("particles[{i}].position"),
+                    path(i),
                     format!(
                         "penetrates walls[{k}] ('{}') by {overlap:.4e} m; stability.initial_overlap_tolerance allows {tolerance:e} of the radius",
                         wall.name
@@ -406,7 +430,7 @@ fn insert_random(
         upper: v3(&ins.region.upper),
     };
     let law = ins.radius.distribution();
-    let clear = |x: &Vec3, r: f64| walls.iter().all(|w| deepest_wall_overlap(w, x, r) <= 0.0);
+    let clear = |x: &Vec3, r: f64| walls.iter().all(|w| w.deepest_overlap(x, r) <= 0.0);
     for placed in 0..ins.count {
         let r = law.sample(rng);
         let position = rsi::place(
@@ -445,38 +469,35 @@ fn insert_random(
     Ok(())
 }
 
-/// Largest overlap of a sphere with any part of a boundary (−∞ when apart).
-fn deepest_wall_overlap(wall: &Boundary, centre: &Vec3, radius: f64) -> f64 {
-    let mut found = Vec::new();
-    wall.contacts(centre, radius, 0.0, &mut found);
-    found
+/// The minimum-image convention needs every interaction range below half the
+/// period: L > 2 (2 R_max + skin + reach), R_max counting particles still to be
+/// poured. Particles must start inside the periodic interval.
+fn check_period(
+    space: &Space,
+    p: &Particles,
+    sources: &[Source],
+    law: &ContactLaw,
+    skin: f64,
+) -> Result<()> {
+    let r_max = p
+        .radius
         .iter()
-        .map(|c| c.overlap)
-        .fold(f64::NEG_INFINITY, f64::max)
-}
-
-/// The periodic axes of the scene. The minimum-image convention needs every
-/// interaction range below half the period: L > 2 (2 R_max + skin + reach).
-/// Particles must start inside the periodic interval.
-fn periodic_space(scene: &Scene, p: &Particles, law: &ContactLaw, skin: f64) -> Result<Space> {
-    let Some(spec) = &scene.periodic else {
-        return Ok(Space::open());
-    };
-    let r_max = p.radius.iter().cloned().fold(0.0, f64::max);
+        .cloned()
+        .chain(sources.iter().map(|s| s.radius.max_radius()))
+        .fold(0.0, f64::max);
     let range = 2.0 * r_max + skin + law.reach();
-    let mut space = Space::open();
-    for (a, axis) in spec.axes().iter().enumerate() {
-        let Some([lo, hi]) = *axis else { continue };
+    for (a, axis) in space.periodic.iter().enumerate() {
+        let Some((lo, length)) = *axis else { continue };
         let name = ["x", "y", "z"][a];
-        if hi - lo <= 2.0 * range {
+        if length <= 2.0 * range {
             return Err(TampError::input(
                 format!("periodic.{name}"),
                 format!(
-                    "the period {:e} m must exceed twice the interaction range 2·R_max + skin + cohesion reach = {range:e} m",
-                    hi - lo
+                    "the period {length:e} m must exceed twice the interaction range 2·R_max + skin + cohesion reach = {range:e} m"
                 ),
             ));
         }
+        let hi = lo + length;
         if let Some(i) = (0..p.len()).find(|&i| !(p.position[i][a] >= lo && p.position[i][a] < hi))
         {
             return Err(TampError::input(
@@ -487,7 +508,6 @@ fn periodic_space(scene: &Scene, p: &Particles, law: &ContactLaw, skin: f64) -> 
                 ),
             ));
         }
-        space.periodic[a] = Some((lo, hi - lo));
     }
-    Ok(space)
+    Ok(())
 }

@@ -252,63 +252,19 @@ fn default_attempts() -> usize {
 pub enum RadiusSpec {
     Fixed(f64),
     Uniform(UniformRadius),
-    Law(DistributionSpec),
-}
-
-/// Size distributions beyond a fixed radius and {min, max} (`generate::distribution`).
-#[derive(Clone, Debug, Deserialize, Serialize)]
-#[serde(tag = "law", rename_all = "snake_case", deny_unknown_fields)]
-pub enum DistributionSpec {
-    /// Radii with their number fractions (summing to 1).
-    Discrete {
-        radii: Vec<f64>,
-        number_fractions: Vec<f64>,
-    },
-    /// ln r normal with median `median` (m) and standard deviation `sigma`, optionally
-    /// truncated to [min, max].
-    LogNormal {
-        median: f64,
-        sigma: f64,
-        #[serde(default)]
-        min: Option<f64>,
-        #[serde(default)]
-        max: Option<f64>,
-    },
-    /// Cumulative number fraction at given radii (piecewise linear, from 0 to 1).
-    Tabulated {
-        radius: Vec<f64>,
-        cumulative: Vec<f64>,
-    },
+    /// Any `generate::distribution::SizeDistribution`, tagged by `law`.
+    Law(SizeDistribution),
 }
 
 impl RadiusSpec {
     pub fn distribution(&self) -> SizeDistribution {
-        match self.clone() {
-            RadiusSpec::Fixed(radius) => SizeDistribution::Mono { radius },
-            RadiusSpec::Uniform(UniformRadius { min, max }) => {
-                SizeDistribution::Uniform { min, max }
-            }
-            RadiusSpec::Law(DistributionSpec::Discrete {
-                radii,
-                number_fractions,
-            }) => SizeDistribution::Discrete {
-                radii,
-                number_fractions,
+        match self {
+            RadiusSpec::Fixed(radius) => SizeDistribution::Mono { radius: *radius },
+            RadiusSpec::Uniform(UniformRadius { min, max }) => SizeDistribution::Uniform {
+                min: *min,
+                max: *max,
             },
-            RadiusSpec::Law(DistributionSpec::LogNormal {
-                median,
-                sigma,
-                min,
-                max,
-            }) => SizeDistribution::LogNormal {
-                median,
-                sigma,
-                min,
-                max,
-            },
-            RadiusSpec::Law(DistributionSpec::Tabulated { radius, cumulative }) => {
-                SizeDistribution::Tabulated { radius, cumulative }
-            }
+            RadiusSpec::Law(law) => law.clone(),
         }
     }
 }

@@ -140,6 +140,7 @@ pub fn validate(scene: &Scene) -> Result<()> {
                 .iter()
                 .map(|p| p.material.as_str())
                 .chain(scene.insert.iter().map(|i| i.material.as_str()))
+                .chain(scene.deposit.iter().map(|d| d.material.as_str()))
                 .collect();
             for (k, m) in scene.materials.iter().enumerate() {
                 if m.hollomon.is_none() && particle_materials.contains(m.name.as_str()) {
