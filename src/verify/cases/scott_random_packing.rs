@@ -2,8 +2,12 @@
 //! N_s = 0): monodisperse frictionless spheres with Zhong's Table 1 contact
 //! parameters (linear hysteretic law, k_n = 1e7 N/m, γ_n = 0.7; ρ = 7800 kg/m³;
 //! R = 5 cm, his large spheres) are placed at random in a 1:1:2 container of twice
-//! their volume with periodic side faces and a floor, grown from zero radius without
-//! gravity for 0.2 s, then settled under gravity until t = 3 s.
+//! their volume with periodic side faces and a floor, grown without gravity for
+//! 0.2 s, then settled under gravity until t = 3 s. Zhong grows from zero radius;
+//! here the spheres start at half size from non-overlapping positions, because two
+//! random centres that nearly coincide overlap by more than half a radius as they
+//! grow, and tamp's overlap guard stops such a run (it did, with 10⁴ spheres:
+//! docs/paper-discrepancies.md §18).
 //!
 //! Measured: the packing fraction of the interior slab, 4 diameters above the floor
 //! (where the wall-induced layering has died out) to 4 diameters below the highest
