@@ -31,7 +31,12 @@ impl Space {
         let mut d = a - b;
         for k in 0..3 {
             if let Some((_, length)) = self.periodic[k] {
-                d[k] -= length * (d[k] / length).round();
+                // Positions are wrapped every step, so |d| < length and the nearest
+                // image is at most one period away; `round` (a libm call, 13 % of a
+                // 9000-sphere periodic run) is kept for the rare farther case.
+                if d[k].abs() > 0.5 * length {
+                    d[k] -= length * (d[k] / length).round();
+                }
             }
         }
         d
@@ -42,6 +47,9 @@ impl Space {
     pub fn wrap(&self, x: &mut Vec3) {
         for k in 0..3 {
             if let Some((lo, length)) = self.periodic[k] {
+                if x[k] >= lo && x[k] < lo + length {
+                    continue;
+                }
                 let shifted = (x[k] - lo).rem_euclid(length);
                 // rem_euclid can return `length` itself for tiny negative inputs.
                 x[k] = lo + if shifted >= length { 0.0 } else { shifted };

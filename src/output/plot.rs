@@ -8,6 +8,30 @@ use std::path::Path;
 pub struct Series {
     pub name: String,
     pub points: Vec<(f64, f64)>,
+    /// Markers at the points: for sparse data such as a paper's stated values.
+    pub markers: bool,
+    /// A line through the points: for curves.
+    pub line: bool,
+}
+
+impl Series {
+    pub fn line(name: &str, points: Vec<(f64, f64)>) -> Self {
+        Series {
+            name: name.to_string(),
+            points,
+            markers: false,
+            line: true,
+        }
+    }
+
+    pub fn points(name: &str, points: Vec<(f64, f64)>) -> Self {
+        Series {
+            name: name.to_string(),
+            points,
+            markers: true,
+            line: false,
+        }
+    }
 }
 
 pub struct Panel<'a> {
@@ -67,14 +91,27 @@ pub fn write_svg(path: &Path, panels: &[Panel]) -> Result<()> {
                         .map_err(draw_err)?;
                     for (k, s) in panel.series.iter().enumerate() {
                         let color = colors[k % colors.len()];
+                        let shown = || {
+                            s.points
+                                .iter()
+                                .cloned()
+                                .filter(|p| !panel.log_y || p.1 > 0.0)
+                        };
+                        if s.line {
+                            chart
+                                .draw_series(LineSeries::new(shown(), color))
+                                .map_err(draw_err)?;
+                        }
+                        if s.markers {
+                            chart
+                                .draw_series(
+                                    shown().map(|p| Circle::new(p, 4, color.filled())),
+                                )
+                                .map_err(draw_err)?;
+                        }
+                        // An empty series only to carry the legend entry.
                         chart
-                            .draw_series(LineSeries::new(
-                                s.points
-                                    .iter()
-                                    .cloned()
-                                    .filter(|p| !panel.log_y || p.1 > 0.0),
-                                color,
-                            ))
+                            .draw_series(std::iter::empty::<Circle<(f64, f64), i32>>())
                             .map_err(draw_err)?
                             .label(s.name.as_str())
                             .legend(move |(x, y)| {

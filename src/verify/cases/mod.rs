@@ -1,6 +1,7 @@
 //! The case registry: scene name → function. Adding a case = its JSON file in
 //! `verification/` + one file here + one line in `CASES`.
 
+mod binary_packing;
 mod density_segregation;
 mod energy_conservation_elastic;
 mod hertz_collision_time;
@@ -42,6 +43,8 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("scott_random_packing_quick", scott_random_packing::run),
     ("scott_random_packing", scott_random_packing::run),
     ("density_segregation", density_segregation::run),
+    ("binary_packing_ratio10_quick", binary_packing::run),
+    ("binary_packing_ratio10", binary_packing::run),
 ];
 
 pub fn find(name: &str) -> Option<CaseFn> {

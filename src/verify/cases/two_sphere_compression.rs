@@ -49,20 +49,20 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
                     .map_or(String::new(), |d| format!("{d:e}"))
             );
         }
-        force_curves.push(Series {
-            name: name.to_string(),
-            points: curve
+        force_curves.push(Series::line(
+            name,
+            curve
                 .iter()
                 .map(|s| (100.0 * x(s), s.force / (4.0 * radius * radius) / 1e6))
                 .collect(),
-        });
-        dt_curves.push(Series {
-            name: name.to_string(),
-            points: curve
+        ));
+        dt_curves.push(Series::line(
+            name,
+            curve
                 .iter()
                 .filter_map(|s| s.critical_time_step.map(|d| (100.0 * x(s), d)))
                 .collect(),
-        });
+        ));
     }
     crate::output::create_dir(&ctx.report_dir)?;
     crate::output::write_atomic(

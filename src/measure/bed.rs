@@ -1,0 +1,166 @@
+//! Bulk packing fraction of a settled, laterally periodic bed: all the solid over
+//! the volume of the bed, φ_bulk = Σ_i V_i / (A H), with A the periodic cell's area
+//! and H the height of the bed's free surface above the floor.
+//!
+//! Why a bulk measure: in a mixture whose small spheres can pass through the gaps
+//! between the large ones (size ratio 10: the gap in a triangle of touching large
+//! spheres has radius (2/√3 − 1) R_b = 0.155 R_b > R_s), the small spheres drain to
+//! the bottom while the bed settles. A region in the interior then sees a
+//! composition that depends on where it is, and only the whole bed has the nominal
+//! composition whose packing fraction Zhong et al. 2009 §6.1 (Fig 4) report.
+//!
+//! The surface. A bed of spheres has no sharp top: the solid fraction falls to
+//! zero over about one large diameter, and near the floor and the top it is layered.
+//! H is placed as a Gibbs dividing surface against the bed just beneath the top:
+//! with z_top the highest sphere top, d the largest diameter and z_ref = z_top − 2d,
+//! φ_ref is the solid fraction of the slab [z_ref − d, z_ref] (one diameter thick,
+//! which averages the layering out) and
+//!
+//!   H = z_ref + V(solid above z_ref) / (A φ_ref),
+//!
+//! the height at which the solid above z_ref, packed at φ_ref, would end flat. A
+//! bed that settles into a different composition at its top (a layer of excess
+//! small spheres, or large ones the small ones drained out of) is judged against
+//! its own top layer. The bed must be at least 3d deep.
+//!
+//! Each slab's solid is exact: Σ_i V(ball_i ∩ slab) from spherical caps
+//! (`Region::Slab`), every particle counted once per periodic cell.
+
+use crate::error::{Result, TampError};
+use crate::measure::region::{Region, ball_volume};
+use crate::particles::Vec3;
+use crate::space::Space;
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Bed {
+    /// Height of the free surface above the floor (H).
+    pub height: f64,
+    /// φ_ref: solid fraction of the one-diameter slab beneath the top layer.
+    pub surface_fraction: f64,
+    /// Σ V_i / (A H).
+    pub bulk_fraction: f64,
+}
+
+/// The bed resting on the floor `x_axis = floor`, periodic along the two other axes.
+pub fn bulk_packing_fraction(
+    positions: &[Vec3],
+    radii: &[f64],
+    space: &Space,
+    axis: usize,
+    floor: f64,
+) -> Result<Bed> {
+    if positions.len() != radii.len() || positions.is_empty() {
+        return Err(TampError::input(
+            "radii",
+            format!(
+                "one radius per position and at least one particle expected, got {} radii for {} positions",
+                radii.len(),
+                positions.len()
+            ),
+        ));
+    }
+    let mut area = 1.0;
+    for k in (0..3).filter(|&k| k != axis) {
+        match space.periodic[k] {
+            Some((_, length)) => area *= length,
+            None => {
+                return Err(TampError::input(
+                    "space",
+                    format!("a bed's bulk fraction needs axis {k} periodic (the bed's area is its periodic cell)"),
+                ));
+            }
+        }
+    }
+    let d = 2.0 * radii.iter().cloned().fold(0.0, f64::max);
+    let top = positions
+        .iter()
+        .zip(radii)
+        .map(|(c, r)| c[axis] + r)
+        .fold(f64::NEG_INFINITY, f64::max);
+    let z_ref = top - 2.0 * d;
+    if z_ref - d < floor {
+        return Err(TampError::input(
+            "positions",
+            format!(
+                "the bed is {:.3e} deep, less than the 3 largest diameters ({:.3e}) its surface is judged over",
+                top - floor,
+                3.0 * d
+            ),
+        ));
+    }
+    let solid_in = |lo: f64, hi: f64| -> f64 {
+        let slab = Region::Slab { axis, lo, hi };
+        positions
+            .iter()
+            .zip(radii)
+            .map(|(c, &r)| slab.intersection_volume(c, r))
+            .sum()
+    };
+    let reference = solid_in(z_ref - d, z_ref) / (area * d);
+    let above = solid_in(z_ref, top);
+    let height = z_ref + above / (area * reference) - floor;
+    let volume: f64 = radii.iter().map(|&r| ball_volume(r)).sum();
+    Ok(Bed {
+        height,
+        surface_fraction: reference,
+        bulk_fraction: volume / (area * height),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A simple cubic stack, n layers of spheres of radius R on a lateral period of
+    /// 2R: the slab beneath the top layer, one period thick, holds exactly π/6, and
+    /// the two top layers packed at π/6 end flat at the top of the stack, 2nR.
+    #[test]
+    fn simple_cubic_stack_ends_at_its_top() {
+        let r = 1.0;
+        let n = 8;
+        let mut positions = Vec::new();
+        for k in 0..n {
+            for i in 0..3 {
+                for j in 0..3 {
+                    positions.push(Vec3::new(
+                        (2 * i + 1) as f64 * r,
+                        (2 * j + 1) as f64 * r,
+                        (2 * k + 1) as f64 * r,
+                    ));
+                }
+            }
+        }
+        let radii = vec![r; positions.len()];
+        let space = Space {
+            periodic: [Some((0.0, 6.0 * r)), Some((0.0, 6.0 * r)), None],
+        };
+        let bed = bulk_packing_fraction(&positions, &radii, &space, 2, 0.0).unwrap();
+        let sixth = std::f64::consts::PI / 6.0;
+        assert!((bed.surface_fraction - sixth).abs() < 1e-12, "{bed:?}");
+        assert!((bed.height - 2.0 * n as f64 * r).abs() < 1e-12, "{bed:?}");
+        assert!((bed.bulk_fraction - sixth).abs() < 1e-12, "{bed:?}");
+        // Shifted by half a layer the reference slab still spans one period.
+        let lifted: Vec<Vec3> = positions.iter().map(|p| p + Vec3::new(0.0, 0.0, 0.5)).collect();
+        let bed = bulk_packing_fraction(&lifted, &radii, &space, 2, 0.0).unwrap();
+        assert!((bed.height - (2.0 * n as f64 * r + 0.5)).abs() < 1e-12, "{bed:?}");
+    }
+
+    #[test]
+    fn refuses_an_open_side_and_a_shallow_bed() {
+        let e = bulk_packing_fraction(
+            &[Vec3::new(0.0, 0.0, 1.0)],
+            &[1.0],
+            &Space::open(),
+            2,
+            0.0,
+        )
+        .unwrap_err();
+        assert!(e.to_string().contains("periodic"), "{e}");
+        let space = Space {
+            periodic: [Some((0.0, 4.0)), Some((0.0, 4.0)), None],
+        };
+        let e = bulk_packing_fraction(&[Vec3::new(2.0, 2.0, 1.0)], &[1.0], &space, 2, 0.0)
+            .unwrap_err();
+        assert!(e.to_string().contains("3 largest diameters"), "{e}");
+    }
+}
