@@ -7,6 +7,7 @@ mod hertz_collision_time;
 mod hertz_yield_onset;
 mod hollomon_constants;
 mod kuwabara_kono_restitution;
+mod liggghts_two_sphere;
 mod linear_restitution;
 mod momentum_conservation;
 pub mod probe;
@@ -42,6 +43,8 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("scott_random_packing_quick", scott_random_packing::run),
     ("scott_random_packing", scott_random_packing::run),
     ("density_segregation", density_segregation::run),
+    ("liggghts_two_sphere_hertz", liggghts_two_sphere::hertz),
+    ("liggghts_two_sphere_hooke", liggghts_two_sphere::hooke),
 ];
 
 pub fn find(name: &str) -> Option<CaseFn> {
