@@ -18,7 +18,8 @@ use crate::scene::{
 use crate::verify::{CaseContext, Measured};
 use serde::Deserialize;
 
-/// One LIGGGHTS run, as `two_sphere_extract.py` writes it.
+/// One LIGGGHTS run, as `two_sphere_extract.py` writes it (`steps_in_contact` is for
+/// people and is not read).
 #[derive(Debug, Deserialize)]
 struct Row {
     model: String,
@@ -31,8 +32,6 @@ struct Row {
     relative_speed: f64,
     initial_gap: f64,
     characteristic_velocity: f64,
-    #[allow(dead_code)]
-    steps_in_contact: u64,
     restitution: f64,
     contact_duration: f64,
     max_overlap: f64,
