@@ -206,6 +206,82 @@ fn damping_with_a_self_dissipating_law_is_refused() {
 }
 
 #[test]
+fn liggghts_restitution_follows_liggghts_rule() {
+    for bad in [0.05, 0.0, 1.0000001, -0.5] {
+        let mut s = base();
+        s["contact"]["damping"] = json!({"kind": "liggghts_restitution", "restitution": bad});
+        expect_input_error(
+            s,
+            &[&format!(
+                "contact.damping.restitution: must be > 0.05 and <= 1 (LIGGGHTS's own rule), got {bad}"
+            )],
+        );
+    }
+    let mut s = base();
+    s["contact"]["damping"] = json!({"kind": "liggghts_restitution", "xi": 0.5});
+    expect_input_error(s, &["contact.damping", "unknown field `xi`"]);
+}
+
+#[test]
+fn liggghts_restitution_is_refused_for_laws_liggghts_lacks() {
+    let mut s = base();
+    s["contact"]["normal"] =
+        json!({"law": "walton_braun", "loading_stiffness": 1e3, "unloading_stiffness": 2e3});
+    s["contact"]["damping"] = json!({"kind": "liggghts_restitution", "restitution": 0.5});
+    expect_input_error(
+        s,
+        &[
+            "contact.damping.restitution: has no LIGGGHTS definition with contact.normal.law 'walton_braun'",
+        ],
+    );
+    let mut s = base();
+    s["contact"]["normal"] = json!({"law": "storakers"});
+    s["materials"][0]["hollomon"] = json!({"strength": 1e9, "exponent": 0.3});
+    s["contact"]["damping"] = json!({"kind": "liggghts_restitution", "restitution": 0.5});
+    expect_input_error(
+        s,
+        &[
+            "contact.damping.restitution: has no LIGGGHTS definition with contact.normal.law 'storakers'",
+        ],
+    );
+}
+
+#[test]
+fn liggghts_restitution_builds_the_critical_fraction_of_its_law() {
+    use tamp::contact::damping::Damping;
+    let sqrt_ln2_pi2 = |e: f64| (e.ln().powi(2) + std::f64::consts::PI.powi(2)).sqrt();
+    for (normal, e, xi) in [
+        (
+            json!({"law": "hertz"}),
+            0.5,
+            (5.0f64 / 6.0).sqrt() * 0.5f64.ln().abs() / sqrt_ln2_pi2(0.5),
+        ),
+        (
+            json!({"law": "linear", "stiffness": 1e3}),
+            0.9,
+            0.9f64.ln().abs() / sqrt_ln2_pi2(0.9),
+        ),
+        (json!({"law": "hertz"}), 1.0, 0.0),
+    ] {
+        let mut s = base();
+        s["contact"]["normal"] = normal;
+        s["contact"]["damping"] = json!({"kind": "liggghts_restitution", "restitution": e});
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("scene.json");
+        std::fs::write(&path, s.to_string()).unwrap();
+        let (scene, _) = tamp::scene::load(&path).unwrap();
+        let built = tamp::scene::build(&scene).unwrap();
+        let Some(Damping::CriticalFraction { xi: got }) = built.sim.law.damping else {
+            panic!(
+                "expected a critical fraction, got {:?}",
+                built.sim.law.damping
+            );
+        };
+        assert!((got - xi).abs() <= 1e-15, "e = {e}: xi {got} vs {xi}");
+    }
+}
+
+#[test]
 fn walton_braun_unloading_must_be_stiffer() {
     let mut s = base();
     s["contact"]["normal"] =

@@ -4,7 +4,11 @@
 use super::schema::*;
 use crate::boundary::Boundary;
 use crate::contact::{
-    ContactLaw, damping::Damping, normal::NormalLaw, tangential::TangentialLaw,
+    ContactLaw,
+    damping::Damping,
+    damping::liggghts::{self, LiggghtsModel},
+    normal::NormalLaw,
+    tangential::TangentialLaw,
     van_der_waals::VanDerWaals,
 };
 use crate::detect::{Detector, NeighborList};
@@ -32,34 +36,56 @@ fn v3(a: &[f64; 3]) -> Vec3 {
     Vec3::new(a[0], a[1], a[2])
 }
 
-pub fn contact_law(spec: &ContactSpec) -> ContactLaw {
-    ContactLaw {
-        normal: match spec.normal {
-            NormalSpec::Linear { stiffness } => NormalLaw::Linear { stiffness },
-            NormalSpec::Hertz {} => NormalLaw::Hertz,
-            NormalSpec::KuwabaraKono { dissipation_time } => {
-                NormalLaw::KuwabaraKono { dissipation_time }
-            }
-            NormalSpec::WaltonBraun {
-                loading_stiffness,
-                unloading_stiffness,
-            } => NormalLaw::WaltonBraun {
-                loading_stiffness,
-                unloading_stiffness,
-            },
-            NormalSpec::Hysteretic {
-                stiffness,
-                hysteresis,
-            } => NormalLaw::Hysteretic {
-                stiffness,
-                hysteresis,
-            },
-            NormalSpec::Storakers { min_with_hertz } => NormalLaw::Storakers { min_with_hertz },
+/// The normal law a scene names (also used by validation, which needs the law's
+/// LIGGGHTS counterpart before anything is built).
+pub fn normal_law(spec: &NormalSpec) -> NormalLaw {
+    match *spec {
+        NormalSpec::Linear { stiffness } => NormalLaw::Linear { stiffness },
+        NormalSpec::Hertz {} => NormalLaw::Hertz,
+        NormalSpec::KuwabaraKono { dissipation_time } => {
+            NormalLaw::KuwabaraKono { dissipation_time }
+        }
+        NormalSpec::WaltonBraun {
+            loading_stiffness,
+            unloading_stiffness,
+        } => NormalLaw::WaltonBraun {
+            loading_stiffness,
+            unloading_stiffness,
         },
-        damping: spec.damping.as_ref().map(|d| match *d {
-            DampingSpec::CriticalFraction { xi } => Damping::CriticalFraction { xi },
-            DampingSpec::Constant { gamma_n } => Damping::Constant { gamma_n },
-        }),
+        NormalSpec::Hysteretic {
+            stiffness,
+            hysteresis,
+        } => NormalLaw::Hysteretic {
+            stiffness,
+            hysteresis,
+        },
+        NormalSpec::Storakers { min_with_hertz } => NormalLaw::Storakers { min_with_hertz },
+    }
+}
+
+/// The composed contact law. Fails only on a rule validation also checks (a
+/// `liggghts_restitution` damping with a law LIGGGHTS does not have).
+pub fn contact_law(spec: &ContactSpec) -> Result<ContactLaw> {
+    let normal = normal_law(&spec.normal);
+    let damping = match spec.damping {
+        None => None,
+        Some(DampingSpec::CriticalFraction { xi }) => Some(Damping::CriticalFraction { xi }),
+        Some(DampingSpec::Constant { gamma_n }) => Some(Damping::Constant { gamma_n }),
+        Some(DampingSpec::LiggghtsRestitution { restitution }) => {
+            let model = LiggghtsModel::of(&normal).ok_or_else(|| {
+                TampError::input(
+                    "contact.damping.restitution",
+                    liggghts::unsupported_law(normal.name()),
+                )
+            })?;
+            Some(Damping::CriticalFraction {
+                xi: model.critical_fraction(restitution),
+            })
+        }
+    };
+    Ok(ContactLaw {
+        normal,
+        damping,
         tangential: spec.tangential.as_ref().map(|t| {
             let parameter = t.stiffness.or(t.damping).or(t.beta).unwrap_or(0.0);
             match t.law {
@@ -87,7 +113,7 @@ pub fn contact_law(spec: &ContactSpec) -> ContactLaw {
                 cutoff,
             },
         }),
-    }
+    })
 }
 
 pub fn build(scene: &Scene) -> Result<BuiltScene> {
@@ -250,7 +276,7 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
         )?;
     }
 
-    let law = contact_law(&scene.contact);
+    let law = contact_law(&scene.contact)?;
     // Particles still to be poured count: the skin must suit the smallest of them.
     let r_min = particles
         .radius

@@ -118,6 +118,9 @@ pub enum DampingSpec {
     CriticalFraction { xi: f64 },
     /// c_n = γ_n, Zhong eq 6 (N·s/m).
     Constant { gamma_n: f64 },
+    /// LIGGGHTS 3.8's damping from a restitution coefficient, built as the
+    /// `CriticalFraction` whose ξ depends on the normal law (contact/damping/liggghts.rs).
+    LiggghtsRestitution { restitution: f64 },
 }
 
 #[derive(Clone, Copy, Debug, Deserialize, Serialize, PartialEq, Eq)]

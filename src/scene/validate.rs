@@ -2,6 +2,7 @@
 //! collected, each as `json.path: rule, got value`.
 
 use super::schema::*;
+use crate::contact::damping::liggghts::{self, LiggghtsModel};
 use crate::error::{Result, TampError};
 use std::collections::HashSet;
 
@@ -198,6 +199,20 @@ pub fn validate(scene: &Scene) -> Result<()> {
         Some(DampingSpec::CriticalFraction { xi }) => e.non_negative("contact.damping.xi", *xi),
         Some(DampingSpec::Constant { gamma_n }) => {
             e.non_negative("contact.damping.gamma_n", *gamma_n)
+        }
+        Some(DampingSpec::LiggghtsRestitution { restitution }) => {
+            if !liggghts::restitution_is_valid(*restitution) {
+                e.push(
+                    "contact.damping.restitution",
+                    format!("must be > 0.05 and <= 1 (LIGGGHTS's own rule), got {restitution}"),
+                );
+            }
+            if LiggghtsModel::of(&super::build::normal_law(&contact.normal)).is_none() {
+                e.push(
+                    "contact.damping.restitution",
+                    liggghts::unsupported_law(normal_name),
+                );
+            }
         }
         None => {}
     }

@@ -83,6 +83,15 @@ pub struct CaseContext<'a> {
 }
 
 impl CaseContext<'_> {
+    /// `reference_data/` beside the verification directory: results recorded by
+    /// other codes (LIGGGHTS), with their decks, logs and provenance.
+    pub fn reference_data_dir(&self) -> PathBuf {
+        self.dir
+            .parent()
+            .unwrap_or(&self.dir)
+            .join("reference_data")
+    }
+
     /// The case's scene, parsed and validated like any user scene.
     pub fn scene(&self) -> Result<Scene> {
         let file =

@@ -7,6 +7,12 @@
 //! - `CriticalFraction { xi }`: c_n = ξ · 2√(m* k_n) (Rojek eqs 7–8), with k_n the
 //!   tangent stiffness of the normal law at the current overlap (eq 9, eq 10);
 //! - `Constant { gamma_n }`: c_n = γ_n (Zhong eq 6).
+//!
+//! The scene kind `liggghts_restitution` is not a third form: `liggghts.rs` turns
+//! LIGGGHTS's restitution coefficient into the `CriticalFraction` ξ that gives
+//! LIGGGHTS's γ_n for the scene's normal law, once, when the scene is built.
+
+pub mod liggghts;
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Damping {

@@ -8,6 +8,7 @@ mod hertz_collision_time;
 mod hertz_yield_onset;
 mod hollomon_constants;
 mod kuwabara_kono_restitution;
+mod liggghts_two_sphere;
 mod linear_restitution;
 mod momentum_conservation;
 pub mod probe;
@@ -45,6 +46,8 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("density_segregation", density_segregation::run),
     ("binary_packing_ratio10_quick", binary_packing::run),
     ("binary_packing_ratio10", binary_packing::run),
+    ("liggghts_two_sphere_hertz", liggghts_two_sphere::hertz),
+    ("liggghts_two_sphere_hooke", liggghts_two_sphere::hooke),
 ];
 
 pub fn find(name: &str) -> Option<CaseFn> {

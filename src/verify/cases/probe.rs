@@ -11,6 +11,9 @@ pub struct Collision {
     pub duration: f64,
     /// Largest overlap, refined by a parabola through the three samples around the peak, m.
     pub max_overlap: f64,
+    /// Largest sampled overlap (after each step, no refinement), m: LIGGGHTS dumps
+    /// are reduced the same way.
+    pub max_sampled_overlap: f64,
     /// Normal relative speed after / before.
     pub restitution: f64,
 }
@@ -69,6 +72,7 @@ pub fn binary_collision(
     Ok(Collision {
         duration: end - start,
         max_overlap,
+        max_sampled_overlap: samples[k],
         restitution: -approach(sim) / v_before,
     })
 }

@@ -1,0 +1,165 @@
+//! Cross-check against LIGGGHTS 3.8.0: two equal spheres meet head-on, damping from a
+//! restitution coefficient (`liggghts_restitution`), once per restitution that
+//! LIGGGHTS was run with. The reference values are read from
+//! `reference_data/liggghts/<case>/results.csv` (written by
+//! `reference_data/liggghts/run_two_sphere.sh` from the LIGGGHTS dumps); the case
+//! refuses to compare when the scene and the recorded LIGGGHTS inputs disagree.
+//! tamp's side is measured with the same definitions as `two_sphere_extract.py`:
+//! interpolated overlap zero crossings, largest sampled overlap, full-step velocities.
+
+use super::probe::binary_collision;
+use crate::contact::damping::liggghts::hooke_stiffness;
+use crate::error::{Result, TampError};
+use crate::material::{effective_mass, effective_radius};
+use crate::scene::{
+    self, Scene,
+    schema::{DampingSpec, NormalSpec},
+};
+use crate::verify::{CaseContext, Measured};
+use serde::Deserialize;
+
+/// One LIGGGHTS run, as `two_sphere_extract.py` writes it (`steps_in_contact` is for
+/// people and is not read).
+#[derive(Debug, Deserialize)]
+struct Row {
+    model: String,
+    restitution_in: f64,
+    time_step: f64,
+    youngs_modulus: f64,
+    poisson_ratio: f64,
+    density: f64,
+    radius: f64,
+    relative_speed: f64,
+    initial_gap: f64,
+    characteristic_velocity: f64,
+    restitution: f64,
+    contact_duration: f64,
+    max_overlap: f64,
+}
+
+pub fn hertz(ctx: &CaseContext) -> Result<Vec<Measured>> {
+    run(ctx, "hertz")
+}
+
+pub fn hooke(ctx: &CaseContext) -> Result<Vec<Measured>> {
+    run(ctx, "hooke")
+}
+
+fn read_rows(ctx: &CaseContext) -> Result<Vec<Row>> {
+    let path = ctx
+        .reference_data_dir()
+        .join("liggghts")
+        .join(&ctx.spec.name)
+        .join("results.csv");
+    let bad = |what: String| TampError::Other(format!("{}: {what}", path.display()));
+    let mut reader = csv::Reader::from_path(&path).map_err(|e| bad(e.to_string()))?;
+    let rows = reader
+        .deserialize()
+        .collect::<std::result::Result<Vec<Row>, _>>()
+        .map_err(|e| bad(e.to_string()))?;
+    if rows.is_empty() {
+        return Err(bad("no LIGGGHTS runs recorded".into()));
+    }
+    Ok(rows)
+}
+
+/// Differences between the scene and the inputs LIGGGHTS ran with.
+fn mismatches(scene: &Scene, row: &Row, model: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    if row.model != model {
+        out.push(format!("model: case {model}, LIGGGHTS {}", row.model));
+    }
+    let mut check = |what: &str, tamp: f64, liggghts: f64| {
+        if (tamp - liggghts).abs() > 1e-12 * liggghts.abs() {
+            out.push(format!("{what}: scene {tamp:e}, LIGGGHTS {liggghts:e}"));
+        }
+    };
+    let m = &scene.materials[0];
+    check("density", m.density, row.density);
+    check(
+        "youngs_modulus",
+        m.youngs_modulus.unwrap_or(f64::NAN),
+        row.youngs_modulus,
+    );
+    check(
+        "poisson_ratio",
+        m.poisson_ratio.unwrap_or(f64::NAN),
+        row.poisson_ratio,
+    );
+    check(
+        "time_step",
+        scene.time_step.fixed.unwrap_or(f64::NAN),
+        row.time_step,
+    );
+    let [a, b] = [&scene.particles[0], &scene.particles[1]];
+    check("radius of particles[0]", a.radius, row.radius);
+    check("radius of particles[1]", b.radius, row.radius);
+    let d: f64 = (0..3)
+        .map(|k| (b.position[k] - a.position[k]).powi(2))
+        .sum::<f64>()
+        .sqrt();
+    check("initial gap", d - a.radius - b.radius, row.initial_gap);
+    let (va, vb) = (
+        a.velocity.unwrap_or([0.0; 3]),
+        b.velocity.unwrap_or([0.0; 3]),
+    );
+    let approach: f64 = (0..3)
+        .map(|k| (va[k] - vb[k]) * (b.position[k] - a.position[k]) / d)
+        .sum();
+    check("relative speed", approach, row.relative_speed);
+    if let NormalSpec::Linear { stiffness } = scene.contact.normal {
+        // model hooke: the scene's k_n must be LIGGGHTS's stiffness at characteristicVelocity.
+        let mass = 4.0 / 3.0 * std::f64::consts::PI * row.radius.powi(3) * row.density;
+        let e_eff = row.youngs_modulus / (2.0 * (1.0 - row.poisson_ratio.powi(2)));
+        let k = hooke_stiffness(
+            effective_mass(mass, mass),
+            effective_radius(row.radius, row.radius),
+            e_eff,
+            row.characteristic_velocity,
+        );
+        check(
+            "contact.normal.stiffness vs model hooke's k_n",
+            stiffness,
+            k,
+        );
+    }
+    out
+}
+
+fn run(ctx: &CaseContext, model: &str) -> Result<Vec<Measured>> {
+    let base = ctx.scene()?;
+    let mut out = Vec::new();
+    for row in read_rows(ctx)? {
+        let problems = mismatches(&base, &row, model);
+        if !problems.is_empty() {
+            return Err(TampError::Other(format!(
+                "the scene is not the one LIGGGHTS ran (e = {}): {}",
+                row.restitution_in,
+                problems.join("; ")
+            )));
+        }
+        let mut s = base.clone();
+        s.contact.damping = Some(DampingSpec::LiggghtsRestitution {
+            restitution: row.restitution_in,
+        });
+        let mut sim = scene::build(&s)?.sim;
+        let c = binary_collision(&mut sim, 0, 1, 1_000_000)?;
+        let e = row.restitution_in;
+        out.push(Measured::new(
+            &format!("restitution_e{e}"),
+            c.restitution,
+            row.restitution,
+        ));
+        out.push(Measured::new(
+            &format!("contact_duration_e{e}"),
+            c.duration,
+            row.contact_duration,
+        ));
+        out.push(Measured::new(
+            &format!("max_overlap_e{e}"),
+            c.max_sampled_overlap,
+            row.max_overlap,
+        ));
+    }
+    Ok(out)
+}
