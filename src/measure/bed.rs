@@ -66,7 +66,9 @@ pub fn bulk_packing_fraction(
             None => {
                 return Err(TampError::input(
                     "space",
-                    format!("a bed's bulk fraction needs axis {k} periodic (the bed's area is its periodic cell)"),
+                    format!(
+                        "a bed's bulk fraction needs axis {k} periodic (the bed's area is its periodic cell)"
+                    ),
                 ));
             }
         }
@@ -140,27 +142,27 @@ mod tests {
         assert!((bed.height - 2.0 * n as f64 * r).abs() < 1e-12, "{bed:?}");
         assert!((bed.bulk_fraction - sixth).abs() < 1e-12, "{bed:?}");
         // Shifted by half a layer the reference slab still spans one period.
-        let lifted: Vec<Vec3> = positions.iter().map(|p| p + Vec3::new(0.0, 0.0, 0.5)).collect();
+        let lifted: Vec<Vec3> = positions
+            .iter()
+            .map(|p| p + Vec3::new(0.0, 0.0, 0.5))
+            .collect();
         let bed = bulk_packing_fraction(&lifted, &radii, &space, 2, 0.0).unwrap();
-        assert!((bed.height - (2.0 * n as f64 * r + 0.5)).abs() < 1e-12, "{bed:?}");
+        assert!(
+            (bed.height - (2.0 * n as f64 * r + 0.5)).abs() < 1e-12,
+            "{bed:?}"
+        );
     }
 
     #[test]
     fn refuses_an_open_side_and_a_shallow_bed() {
-        let e = bulk_packing_fraction(
-            &[Vec3::new(0.0, 0.0, 1.0)],
-            &[1.0],
-            &Space::open(),
-            2,
-            0.0,
-        )
-        .unwrap_err();
+        let e = bulk_packing_fraction(&[Vec3::new(0.0, 0.0, 1.0)], &[1.0], &Space::open(), 2, 0.0)
+            .unwrap_err();
         assert!(e.to_string().contains("periodic"), "{e}");
         let space = Space {
             periodic: [Some((0.0, 4.0)), Some((0.0, 4.0)), None],
         };
-        let e = bulk_packing_fraction(&[Vec3::new(2.0, 2.0, 1.0)], &[1.0], &space, 2, 0.0)
-            .unwrap_err();
+        let e =
+            bulk_packing_fraction(&[Vec3::new(2.0, 2.0, 1.0)], &[1.0], &space, 2, 0.0).unwrap_err();
         assert!(e.to_string().contains("3 largest diameters"), "{e}");
     }
 }

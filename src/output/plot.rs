@@ -104,9 +104,7 @@ pub fn write_svg(path: &Path, panels: &[Panel]) -> Result<()> {
                         }
                         if s.markers {
                             chart
-                                .draw_series(
-                                    shown().map(|p| Circle::new(p, 4, color.filled())),
-                                )
+                                .draw_series(shown().map(|p| Circle::new(p, 4, color.filled())))
                                 .map_err(draw_err)?;
                         }
                         // An empty series only to carry the legend entry.

@@ -30,8 +30,8 @@
 
 use crate::error::{Result, TampError};
 use crate::measure::bed::bulk_packing_fraction;
-use crate::particles::Vec3;
 use crate::output::plot::{Panel, Series, write_svg};
+use crate::particles::Vec3;
 use crate::scene::schema::{BoxRegion, PeriodicSpec, RadiusSpec};
 use crate::scene::{self, Scene};
 use crate::verify::{CaseContext, Measured};
@@ -243,7 +243,9 @@ mod tests {
         let floating = (1.0 + v_star) / (1.0 + v_star / RANDOM_CLOSE);
         assert!((filling - floating).abs() < 1e-12);
         assert!((furnas_bound(v_star) - RANDOM_CLOSE * (2.0 - RANDOM_CLOSE)).abs() < 1e-12);
-        assert!(furnas_bound(0.2) < furnas_bound(v_star) && furnas_bound(0.6) < furnas_bound(v_star));
+        assert!(
+            furnas_bound(0.2) < furnas_bound(v_star) && furnas_bound(0.6) < furnas_bound(v_star)
+        );
     }
 
     #[test]
