@@ -30,12 +30,12 @@
 
 use crate::error::{Result, TampError};
 use crate::measure::bed::bulk_packing_fraction;
+use crate::measure::region::ball_volume;
 use crate::output::plot::{Panel, Series, write_svg};
 use crate::particles::Vec3;
 use crate::scene::schema::{BoxRegion, PeriodicSpec, RadiusSpec};
 use crate::scene::{self, Scene};
 use crate::verify::{CaseContext, Measured};
-use std::f64::consts::PI;
 use std::fmt::Write as _;
 use std::time::Instant;
 
@@ -82,8 +82,7 @@ fn point_scene(base: &Scene, ratio: usize) -> Result<(Scene, f64, f64)> {
     let r_small = fixed_radius(&base.insert[1].radius, "small")?;
     let n_big = base.insert[0].count;
     let n_small = ratio * n_big;
-    let ball = |r: f64| 4.0 / 3.0 * PI * r.powi(3);
-    let solid = n_big as f64 * ball(r_big) + n_small as f64 * ball(r_small);
+    let solid = n_big as f64 * ball_volume(r_big) + n_small as f64 * ball_volume(r_small);
     // Zhong: volume 2 × solid, sides 1:1:2, so side³ = solid.
     let side = solid.cbrt().max(MIN_SIDE_DIAMETERS * 2.0 * r_big);
     let height = 2.0 * solid / (side * side);

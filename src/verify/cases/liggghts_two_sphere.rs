@@ -10,7 +10,8 @@
 use super::probe::binary_collision;
 use crate::contact::damping::liggghts::hooke_stiffness;
 use crate::error::{Result, TampError};
-use crate::material::{effective_mass, effective_radius};
+use crate::material::{Material, effective_mass, effective_modulus, effective_radius};
+use crate::measure::region::ball_volume;
 use crate::scene::{
     self, Scene,
     schema::{DampingSpec, NormalSpec},
@@ -109,12 +110,18 @@ fn mismatches(scene: &Scene, row: &Row, model: &str) -> Vec<String> {
     check("relative speed", approach, row.relative_speed);
     if let NormalSpec::Linear { stiffness } = scene.contact.normal {
         // model hooke: the scene's k_n must be LIGGGHTS's stiffness at characteristicVelocity.
-        let mass = 4.0 / 3.0 * std::f64::consts::PI * row.radius.powi(3) * row.density;
-        let e_eff = row.youngs_modulus / (2.0 * (1.0 - row.poisson_ratio.powi(2)));
+        let steel = Material {
+            name: "LIGGGHTS type 1".into(),
+            density: row.density,
+            youngs_modulus: Some(row.youngs_modulus),
+            poisson_ratio: Some(row.poisson_ratio),
+            hollomon: None,
+        };
+        let mass = row.density * ball_volume(row.radius);
         let k = hooke_stiffness(
             effective_mass(mass, mass),
             effective_radius(row.radius, row.radius),
-            e_eff,
+            effective_modulus(&steel, &steel).expect("both elastic constants are given"),
             row.characteristic_velocity,
         );
         check(
