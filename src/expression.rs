@@ -35,8 +35,8 @@ impl Expression {
             variables: variables.to_vec(),
             tree,
         };
-        let zeros = vec![0.5; variables.len()];
-        let value = e.eval(&zeros)?;
+        let probe = vec![0.5; variables.len()];
+        let value = e.eval(&probe)?;
         if !value.is_finite() {
             return Err(format!(
                 "expression '{source}' is not finite at {} = 0.5",

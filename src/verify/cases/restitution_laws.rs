@@ -9,33 +9,35 @@ use crate::scene::{self, schema::NormalSpec};
 use crate::verify::{CaseContext, Measured};
 
 pub fn walton_braun(ctx: &CaseContext) -> Result<Vec<Measured>> {
-    let scene = ctx.scene()?;
-    let NormalSpec::WaltonBraun {
-        loading_stiffness,
-        unloading_stiffness,
-    } = scene.contact.normal
-    else {
-        return Err(TampError::Other("the scene must use walton_braun".into()));
-    };
-    let mut sim = scene::build(&scene)?.sim;
-    let c = binary_collision(&mut sim, 0, 1, 10_000_000)?;
-    Ok(vec![Measured::new(
-        "restitution",
-        c.restitution,
-        (loading_stiffness / unloading_stiffness).sqrt(),
-    )])
+    restitution_against(ctx, "walton_braun", |law| match *law {
+        NormalSpec::WaltonBraun {
+            loading_stiffness,
+            unloading_stiffness,
+        } => Some((loading_stiffness / unloading_stiffness).sqrt()),
+        _ => None,
+    })
 }
 
 pub fn hysteretic(ctx: &CaseContext) -> Result<Vec<Measured>> {
+    restitution_against(ctx, "hysteretic", |law| match *law {
+        NormalSpec::Hysteretic { hysteresis, .. } => {
+            Some(((1.0 - hysteresis) / (1.0 + hysteresis)).sqrt())
+        }
+        _ => None,
+    })
+}
+
+/// The probe's restitution against the law's closed form (`None`: the scene uses
+/// another law than the case is about).
+fn restitution_against(
+    ctx: &CaseContext,
+    law: &str,
+    closed_form: fn(&NormalSpec) -> Option<f64>,
+) -> Result<Vec<Measured>> {
     let scene = ctx.scene()?;
-    let NormalSpec::Hysteretic { hysteresis, .. } = scene.contact.normal else {
-        return Err(TampError::Other("the scene must use hysteretic".into()));
-    };
+    let expected = closed_form(&scene.contact.normal)
+        .ok_or_else(|| TampError::Other(format!("the scene must use {law}")))?;
     let mut sim = scene::build(&scene)?.sim;
     let c = binary_collision(&mut sim, 0, 1, 10_000_000)?;
-    Ok(vec![Measured::new(
-        "restitution",
-        c.restitution,
-        ((1.0 - hysteresis) / (1.0 + hysteresis)).sqrt(),
-    )])
+    Ok(vec![Measured::new("restitution", c.restitution, expected)])
 }
