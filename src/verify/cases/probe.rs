@@ -90,8 +90,8 @@ pub struct CompressionSample {
 
 /// Step a displacement-driven `sim` until the force on particle `i` reaches
 /// `target`. Returns the overlap of contact (i, j) at `target`, interpolated
-/// linearly between the two steps that bracket it, and about `samples` states
-/// spread over the run for curves.
+/// linearly between the two steps that bracket it, and the states of every
+/// `every`-th step in contact (plus the last) for curves.
 pub fn compress_to_force(
     sim: &mut Simulation,
     i: usize,
