@@ -421,20 +421,12 @@ impl Mesh {
     }
 
     fn finish(&self, candidates: &mut [Candidate], radius: f64, out: &mut Vec<ShapeContact>) {
-        if let [c] = candidates {
-            out.push(ShapeContact {
-                normal: c.normal,
-                overlap: radius - c.distance,
-                facet: c.facet,
-            });
-        } else if !candidates.is_empty() {
-            push_distinct(
-                candidates,
-                radius,
-                |t, p| self.triangles[t as usize].contains(p),
-                out,
-            );
-        }
+        push_distinct(
+            candidates,
+            radius,
+            |t, p| self.triangles[t as usize].contains(p),
+            out,
+        );
     }
 
     /// Call `f` once for every triangle listed in a cell that the box of
