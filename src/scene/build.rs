@@ -32,7 +32,7 @@ pub struct BuiltScene {
     pub warnings: Vec<String>,
 }
 
-fn v3(a: &[f64; 3]) -> Vec3 {
+pub(super) fn v3(a: &[f64; 3]) -> Vec3 {
     Vec3::new(a[0], a[1], a[2])
 }
 

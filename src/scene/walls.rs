@@ -9,6 +9,7 @@
 //! height_field (z = f(x, y) as an expression or a grid), mesh (STL file or convex
 //! polygons). Motions: fixed, velocity, displacement (expressions of t), servo.
 
+use super::build::v3;
 use super::validate::Errors;
 use crate::boundary::shape::Shape;
 use crate::boundary::{Boundary, BoundaryMotion, Servo};
@@ -125,10 +126,6 @@ pub enum MotionSpec {
 }
 
 const FACES: [&str; 6] = ["-x", "+x", "-y", "+y", "-z", "+z"];
-
-fn v3(a: &[f64; 3]) -> Vec3 {
-    Vec3::new(a[0], a[1], a[2])
-}
 
 fn unit(e: &mut Errors, path: String, v: &[f64; 3]) {
     let len = v.iter().map(|c| c * c).sum::<f64>().sqrt();
