@@ -260,18 +260,12 @@ pub fn validate(scene: &Scene) -> Result<()> {
             );
         }
         e.non_negative("contact.tangential.friction", t.friction);
-        let friction_pairs = &t.friction_pairs;
-        for (k, fp) in friction_pairs.iter().enumerate() {
-            let key = {
-                let mut key = fp.materials.clone();
-                key.sort();
-                key
-            };
-            if friction_pairs[..k].iter().any(|other| {
-                let mut o = other.materials.clone();
-                o.sort();
-                o == key
-            }) {
+        // A pair is unordered: its key is its two names sorted.
+        let mut listed = HashSet::new();
+        for (k, fp) in t.friction_pairs.iter().enumerate() {
+            let mut key = fp.materials.clone();
+            key.sort();
+            if !listed.insert(key.clone()) {
                 e.push(
                     format!("contact.tangential.friction_pairs[{k}].materials"),
                     format!("the pair {key:?} is listed twice"),
