@@ -82,7 +82,7 @@ pub fn contact_law(spec: &ContactSpec) -> Result<ContactLaw> {
             let model = LiggghtsModel::of(&normal).ok_or_else(|| {
                 TampError::input(
                     "contact.damping.restitution",
-                    liggghts::unsupported_law(normal.name()),
+                    liggghts::unsupported_law(spec.normal.law()),
                 )
             })?;
             Some(Damping::CriticalFraction {

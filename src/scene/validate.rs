@@ -73,15 +73,7 @@ pub fn validate(scene: &Scene) -> Result<()> {
     let known = |name: &str| names.contains(name);
 
     let contact = &scene.contact;
-    let law_name = |n: &NormalSpec| match n {
-        NormalSpec::Linear { .. } => "linear",
-        NormalSpec::Hertz {} => "hertz",
-        NormalSpec::KuwabaraKono { .. } => "kuwabara_kono",
-        NormalSpec::WaltonBraun { .. } => "walton_braun",
-        NormalSpec::Hysteretic { .. } => "hysteretic",
-        NormalSpec::Storakers { .. } => "storakers",
-    };
-    let normal_name = law_name(&contact.normal);
+    let normal_name = contact.normal.law();
     let require_elastic = |e: &mut Errors, why: &str| {
         for (k, m) in scene.materials.iter().enumerate() {
             if m.youngs_modulus.is_none() {
