@@ -10,6 +10,7 @@
 use serde_json::{Value, json};
 use tamp::particles::Vec3;
 use tamp::scene;
+use tamp::simulation::Simulation;
 
 const R: f64 = 0.001;
 const K: f64 = 1e3;
@@ -35,6 +36,25 @@ fn build(shape: Value, motion: Value, particle: Value, extra: Value) -> scene::B
     scene::build(&scene::parse(&s.to_string()).unwrap()).unwrap()
 }
 
+/// Step until a contact has begun and ended (or a step budget runs out), calling
+/// `during` after every step still in or before contact. Returns the largest
+/// overlap seen, m, and whether any contact happened.
+fn through_impact(b: &mut scene::BuiltScene, mut during: impl FnMut(&Simulation)) -> (f64, bool) {
+    let mut largest = 0.0f64;
+    let mut touched = false;
+    for _ in 0..2_000_000 {
+        b.sim.step().unwrap();
+        largest = largest.max(b.sim.max_overlap_ratio * R);
+        let in_contact = b.sim.contact_count() > 0;
+        touched |= in_contact;
+        if touched && !in_contact {
+            break;
+        }
+        during(&b.sim);
+    }
+    (largest, touched)
+}
+
 /// Shoot a sphere from `start` along −`normal` (the surface's normal at the impact
 /// point) and check the closed-form impact.
 fn bounce(shape: Value, start: [f64; 3], normal: [f64; 3]) {
@@ -46,18 +66,7 @@ fn bounce(shape: Value, start: [f64; 3], normal: [f64; 3]) {
         json!({"position": start, "radius": R, "material": "m", "velocity": [v0.x, v0.y, v0.z]}),
         json!({}),
     );
-    let mut max_overlap = 0.0f64;
-    let mut touched = false;
-    for _ in 0..2_000_000 {
-        b.sim.step().unwrap();
-        let overlap = b.sim.max_overlap_ratio * R;
-        max_overlap = max_overlap.max(overlap);
-        let in_contact = b.sim.contact_count() > 0;
-        touched |= in_contact;
-        if touched && !in_contact {
-            break;
-        }
-    }
+    let (max_overlap, touched) = through_impact(&mut b, |_| {});
     assert!(touched, "the sphere never reached the surface");
     let expected = V * (mass() / K).sqrt();
     assert!(
@@ -154,7 +163,7 @@ fn displacement_motion_carries_a_resting_sphere() {
     );
     let steps = (0.2 / b.sim.dt) as usize;
     let mut worst = 0.0f64;
-    for s in 0..steps {
+    for _ in 0..steps {
         b.sim.step().unwrap();
         let t = b.sim.time;
         if t < 0.05 {
@@ -164,7 +173,6 @@ fn displacement_motion_carries_a_resting_sphere() {
         let expected = mass() * (9.81 - a * w * w * (w * t).sin()) / K;
         let overlap = R - (b.sim.particles.position[0].z - floor);
         worst = worst.max((overlap - expected).abs() / expected);
-        let _ = s;
     }
     assert!(
         worst < 1e-2,
@@ -281,24 +289,14 @@ fn periodic_faces_collide_through_the_boundary() {
         "run": {"steps": 1}
     });
     let mut b = scene::build(&scene::parse(&s.to_string()).unwrap()).unwrap();
-    let mut worst = 0.0f64;
-    let mut touched = false;
-    for _ in 0..2_000_000 {
-        b.sim.step().unwrap();
-        worst = worst.max(b.sim.max_overlap_ratio * R);
-        let now = b.sim.contact_count() > 0;
-        touched |= now;
-        if touched && !now {
-            break;
-        }
+    let (worst, touched) = through_impact(&mut b, |sim| {
         assert!(
-            b.sim
-                .particles
+            sim.particles
                 .position
                 .iter()
                 .all(|x| x.x >= -0.5 * l && x.x < 0.5 * l)
         );
-    }
+    });
     assert!(touched, "the spheres never met through the periodic faces");
     let v = &b.sim.particles.velocity;
     assert!(

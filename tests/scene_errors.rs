@@ -266,10 +266,7 @@ fn liggghts_restitution_builds_the_critical_fraction_of_its_law() {
         let mut s = base();
         s["contact"]["normal"] = normal;
         s["contact"]["damping"] = json!({"kind": "liggghts_restitution", "restitution": e});
-        let dir = tempfile::tempdir().unwrap();
-        let path = dir.path().join("scene.json");
-        std::fs::write(&path, s.to_string()).unwrap();
-        let (scene, _) = tamp::scene::load(&path).unwrap();
+        let scene = tamp::scene::parse(&s.to_string()).unwrap();
         let built = tamp::scene::build(&scene).unwrap();
         let Some(Damping::CriticalFraction { xi: got }) = built.sim.law.damping else {
             panic!(

@@ -273,24 +273,19 @@ fn scene(
     for i in 0..n {
         let (p, r) = (positions[i], radii[i]);
         let disc = match *view {
-            View::Top => Disc {
-                u: p.x,
-                v: p.y,
-                r,
-                w: p.z,
-                sphere: true,
-                rgb: rgb[i],
-                index: i,
-            },
-            View::Bottom => Disc {
-                u: -p.x,
-                v: p.y,
-                r,
-                w: -p.z,
-                sphere: true,
-                rgb: rgb[i],
-                index: i,
-            },
+            // Seen from below, x and the height towards the viewer both flip.
+            View::Top | View::Bottom => {
+                let s = if *view == View::Top { 1.0 } else { -1.0 };
+                Disc {
+                    u: s * p.x,
+                    v: p.y,
+                    r,
+                    w: s * p.z,
+                    sphere: true,
+                    rgb: rgb[i],
+                    index: i,
+                }
+            }
             View::Slice {
                 axis,
                 at,
@@ -493,13 +488,18 @@ pub fn svg(
     let sc = scene(view, positions, radii, colour, bounds, pixels)?;
     let (w, h) = (sc.width as f64, sc.height as f64);
     let legend = legend_lines(view, colour, bounds);
-    let key_height = match colour {
+    // Every species of the bed is listed, so colours read the same in every slice.
+    let kinds: Vec<usize> = match colour {
         ColourBy::Species(species) => {
             let mut kinds = species.clone();
             kinds.sort_unstable();
             kinds.dedup();
-            18.0 * kinds.len() as f64
+            kinds
         }
+        ColourBy::Value { .. } => Vec::new(),
+    };
+    let key_height = match colour {
+        ColourBy::Species(_) => 18.0 * kinds.len() as f64,
         ColourBy::Value { .. } => 150.0,
     };
     let total_h = h.max(24.0 + 18.0 * legend.len() as f64 + key_height);
@@ -564,27 +564,23 @@ pub fn svg(
     );
 
     let x0 = w + 12.0;
-    let text = |o: &mut String, y: f64, s: &str| {
+    let text = |o: &mut String, x: f64, y: f64, s: &str| {
         let _ = writeln!(
             o,
-            r#"<text x="{x0}" y="{y}" font-family="sans-serif" font-size="12">{}</text>"#,
+            r#"<text x="{x}" y="{y}" font-family="sans-serif" font-size="12">{}</text>"#,
             xml_escape(s)
         );
     };
     let mut y = 18.0;
     for line in &legend {
-        text(o, y, line);
+        text(o, x0, y, line);
         y += 18.0;
     }
     y += 6.0;
     match colour {
         ColourBy::Species(species) => {
-            let mut kinds: Vec<usize> = species.clone();
-            kinds.sort_unstable();
-            kinds.dedup();
-            // Every species of the bed is listed, so colours read the same in every
-            // slice; the count is of what this picture draws.
-            for k in kinds {
+            // The count is of what this picture draws.
+            for &k in &kinds {
                 let count = sc.discs.iter().filter(|d| species[d.index] == k).count();
                 let _ = writeln!(
                     o,
@@ -592,16 +588,12 @@ pub fn svg(
                     y - 10.0,
                     hex(species_colour(k))
                 );
-                let _ = writeln!(
-                    o,
-                    r#"<text x="{}" y="{y}" font-family="sans-serif" font-size="12">species {k} ({count} drawn)</text>"#,
-                    x0 + 18.0
-                );
+                text(o, x0 + 18.0, y, &format!("species {k} ({count} drawn)"));
                 y += 18.0;
             }
         }
         ColourBy::Value { values, label } => {
-            text(o, y, label);
+            text(o, x0, y, label);
             y += 10.0;
             let (lo, hi) = finite_range(values);
             let bar = 120.0;
@@ -614,18 +606,8 @@ pub fn svg(
             } else {
                 ("–".to_string(), "–".to_string())
             };
-            let _ = writeln!(
-                o,
-                r#"<text x="{}" y="{}" font-family="sans-serif" font-size="12">{top}</text>"#,
-                x0 + 22.0,
-                y + 10.0
-            );
-            let _ = writeln!(
-                o,
-                r#"<text x="{}" y="{}" font-family="sans-serif" font-size="12">{bottom}</text>"#,
-                x0 + 22.0,
-                y + bar
-            );
+            text(o, x0 + 22.0, y + 10.0, &top);
+            text(o, x0 + 22.0, y + bar, &bottom);
         }
     }
     let _ = writeln!(o, "</svg>");

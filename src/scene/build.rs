@@ -32,8 +32,15 @@ pub struct BuiltScene {
     pub warnings: Vec<String>,
 }
 
-fn v3(a: &[f64; 3]) -> Vec3 {
+pub(super) fn v3(a: &[f64; 3]) -> Vec3 {
     Vec3::new(a[0], a[1], a[2])
+}
+
+fn insertion_box(region: &BoxRegion) -> InsertionBox {
+    InsertionBox {
+        lower: v3(&region.lower),
+        upper: v3(&region.upper),
+    }
 }
 
 /// The normal law a scene names (also used by validation, which needs the law's
@@ -75,7 +82,7 @@ pub fn contact_law(spec: &ContactSpec) -> Result<ContactLaw> {
             let model = LiggghtsModel::of(&normal).ok_or_else(|| {
                 TampError::input(
                     "contact.damping.restitution",
-                    liggghts::unsupported_law(normal.name()),
+                    liggghts::unsupported_law(spec.normal.law()),
                 )
             })?;
             Some(Damping::CriticalFraction {
@@ -244,10 +251,7 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
     for (k, ins) in scene.insert.iter().enumerate() {
         if let Some(sch) = &ins.schedule {
             sources.push(Source {
-                region: InsertionBox {
-                    lower: v3(&ins.region.lower),
-                    upper: v3(&ins.region.upper),
-                },
+                region: insertion_box(&ins.region),
                 radius: ins.radius.distribution(),
                 material: material_id(&ins.material),
                 speed: ins.speed,
@@ -451,10 +455,7 @@ fn insert_random(
     inertia_scale: f64,
     rng: &mut ChaCha8Rng,
 ) -> Result<()> {
-    let region = InsertionBox {
-        lower: v3(&ins.region.lower),
-        upper: v3(&ins.region.upper),
-    };
+    let region = insertion_box(&ins.region);
     let law = ins.radius.distribution();
     let clear = |x: &Vec3, r: f64| walls.iter().all(|w| w.deepest_overlap(x, r) <= 0.0);
     for placed in 0..ins.count {

@@ -111,6 +111,20 @@ pub enum NormalSpec {
     },
 }
 
+impl NormalSpec {
+    /// The `law` tag as the scene writes it, for messages.
+    pub fn law(&self) -> &'static str {
+        match self {
+            NormalSpec::Linear { .. } => "linear",
+            NormalSpec::Hertz {} => "hertz",
+            NormalSpec::KuwabaraKono { .. } => "kuwabara_kono",
+            NormalSpec::WaltonBraun { .. } => "walton_braun",
+            NormalSpec::Hysteretic { .. } => "hysteretic",
+            NormalSpec::Storakers { .. } => "storakers",
+        }
+    }
+}
+
 #[derive(Clone, Debug, Deserialize, Serialize)]
 #[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
 pub enum DampingSpec {

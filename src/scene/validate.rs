@@ -73,15 +73,7 @@ pub fn validate(scene: &Scene) -> Result<()> {
     let known = |name: &str| names.contains(name);
 
     let contact = &scene.contact;
-    let law_name = |n: &NormalSpec| match n {
-        NormalSpec::Linear { .. } => "linear",
-        NormalSpec::Hertz {} => "hertz",
-        NormalSpec::KuwabaraKono { .. } => "kuwabara_kono",
-        NormalSpec::WaltonBraun { .. } => "walton_braun",
-        NormalSpec::Hysteretic { .. } => "hysteretic",
-        NormalSpec::Storakers { .. } => "storakers",
-    };
-    let normal_name = law_name(&contact.normal);
+    let normal_name = contact.normal.law();
     let require_elastic = |e: &mut Errors, why: &str| {
         for (k, m) in scene.materials.iter().enumerate() {
             if m.youngs_modulus.is_none() {
@@ -260,18 +252,12 @@ pub fn validate(scene: &Scene) -> Result<()> {
             );
         }
         e.non_negative("contact.tangential.friction", t.friction);
-        let friction_pairs = &t.friction_pairs;
-        for (k, fp) in friction_pairs.iter().enumerate() {
-            let key = {
-                let mut key = fp.materials.clone();
-                key.sort();
-                key
-            };
-            if friction_pairs[..k].iter().any(|other| {
-                let mut o = other.materials.clone();
-                o.sort();
-                o == key
-            }) {
+        // A pair is unordered: its key is its two names sorted.
+        let mut listed = HashSet::new();
+        for (k, fp) in t.friction_pairs.iter().enumerate() {
+            let mut key = fp.materials.clone();
+            key.sort();
+            if !listed.insert(key.clone()) {
                 e.push(
                     format!("contact.tangential.friction_pairs[{k}].materials"),
                     format!("the pair {key:?} is listed twice"),

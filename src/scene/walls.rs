@@ -9,6 +9,7 @@
 //! height_field (z = f(x, y) as an expression or a grid), mesh (STL file or convex
 //! polygons). Motions: fixed, velocity, displacement (expressions of t), servo.
 
+use super::build::v3;
 use super::validate::Errors;
 use crate::boundary::shape::Shape;
 use crate::boundary::{Boundary, BoundaryMotion, Servo};
@@ -126,10 +127,6 @@ pub enum MotionSpec {
 
 const FACES: [&str; 6] = ["-x", "+x", "-y", "+y", "-z", "+z"];
 
-fn v3(a: &[f64; 3]) -> Vec3 {
-    Vec3::new(a[0], a[1], a[2])
-}
-
 fn unit(e: &mut Errors, path: String, v: &[f64; 3]) {
     let len = v.iter().map(|c| c * c).sum::<f64>().sqrt();
     if !(len > 0.0 && len.is_finite()) {
@@ -157,183 +154,188 @@ pub(super) fn validate(walls: &[WallSpec], known: &dyn Fn(&str) -> bool, e: &mut
         if !known(&w.material) {
             e.push(at("material"), format!("unknown material '{}'", w.material));
         }
-        match &w.shape {
-            ShapeSpec::Plane { point, normal } => {
-                e.finite3(at("shape.point"), point);
-                unit(e, at("shape.normal"), normal);
+        validate_shape(&w.shape, &at, e);
+        validate_motion(&w.motion, &at, e);
+    }
+}
+
+/// `at(field)` is the JSON path of a field of this wall.
+fn validate_shape(shape: &ShapeSpec, at: &dyn Fn(&str) -> String, e: &mut Errors) {
+    match shape {
+        ShapeSpec::Plane { point, normal } => {
+            e.finite3(at("shape.point"), point);
+            unit(e, at("shape.normal"), normal);
+        }
+        ShapeSpec::Box { lower, upper, open } => {
+            e.finite3(at("shape.lower"), lower);
+            e.finite3(at("shape.upper"), upper);
+            if (0..3).any(|a| upper[a] <= lower[a]) {
+                e.push(
+                    at("shape.upper"),
+                    format!("must exceed shape.lower on every axis, got {upper:?} vs {lower:?}"),
+                );
             }
-            ShapeSpec::Box { lower, upper, open } => {
-                e.finite3(at("shape.lower"), lower);
-                e.finite3(at("shape.upper"), upper);
-                if (0..3).any(|a| upper[a] <= lower[a]) {
+            for (j, f) in open.iter().enumerate() {
+                if !FACES.contains(&f.as_str()) {
                     e.push(
-                        at("shape.upper"),
-                        format!(
-                            "must exceed shape.lower on every axis, got {upper:?} vs {lower:?}"
-                        ),
+                        at(&format!("shape.open[{j}]")),
+                        format!("unknown face '{f}', expected one of {FACES:?}"),
                     );
                 }
-                for (j, f) in open.iter().enumerate() {
-                    if !FACES.contains(&f.as_str()) {
+            }
+        }
+        ShapeSpec::Cylinder {
+            origin,
+            axis,
+            radius,
+            bottom,
+            top,
+        } => {
+            e.finite3(at("shape.origin"), origin);
+            unit(e, at("shape.axis"), axis);
+            e.positive(at("shape.radius"), *radius);
+            range(e, at("shape.top"), &[*bottom, *top]);
+        }
+        ShapeSpec::Cone {
+            origin,
+            axis,
+            bottom,
+            bottom_radius,
+            top,
+            top_radius,
+        } => {
+            e.finite3(at("shape.origin"), origin);
+            unit(e, at("shape.axis"), axis);
+            e.non_negative(at("shape.bottom_radius"), *bottom_radius);
+            e.non_negative(at("shape.top_radius"), *top_radius);
+            if *bottom_radius == 0.0 && *top_radius == 0.0 {
+                e.push(
+                    at("shape.top_radius"),
+                    "a cone needs a non-zero radius at one end at least",
+                );
+            }
+            range(e, at("shape.top"), &[*bottom, *top]);
+        }
+        ShapeSpec::Funnel {
+            origin,
+            axis,
+            outlet_radius,
+            outlet_bottom,
+            outlet_top,
+            top_radius,
+            top,
+        } => {
+            e.finite3(at("shape.origin"), origin);
+            unit(e, at("shape.axis"), axis);
+            e.positive(at("shape.outlet_radius"), *outlet_radius);
+            range(e, at("shape.outlet_top"), &[*outlet_bottom, *outlet_top]);
+            range(e, at("shape.top"), &[*outlet_top, *top]);
+            if !(top_radius > outlet_radius && top_radius.is_finite()) {
+                e.push(
+                    at("shape.top_radius"),
+                    format!("must exceed outlet_radius ({outlet_radius:e}), got {top_radius:e}"),
+                );
+            }
+        }
+        ShapeSpec::HeightField {
+            x_range,
+            y_range,
+            expression,
+            cells,
+            grid,
+        } => {
+            range(e, at("shape.x_range"), x_range);
+            range(e, at("shape.y_range"), y_range);
+            match (expression, grid) {
+                (Some(expr), None) => {
+                    if let Err(msg) = Expression::parse(expr, &["x", "y"]) {
+                        e.push(at("shape.expression"), msg);
+                    }
+                    match cells {
+                        Some([nx, ny]) if *nx >= 1 && *ny >= 1 => {}
+                        _ => e.push(
+                            at("shape.cells"),
+                            "is required with an expression: [nx, ny], each >= 1",
+                        ),
+                    }
+                }
+                (None, Some(g)) => {
+                    if cells.is_some() {
                         e.push(
-                            at(&format!("shape.open[{j}]")),
-                            format!("unknown face '{f}', expected one of {FACES:?}"),
+                            at("shape.cells"),
+                            "must be absent with a grid (the grid's shape gives the cells)",
                         );
                     }
-                }
-            }
-            ShapeSpec::Cylinder {
-                origin,
-                axis,
-                radius,
-                bottom,
-                top,
-            } => {
-                e.finite3(at("shape.origin"), origin);
-                unit(e, at("shape.axis"), axis);
-                e.positive(at("shape.radius"), *radius);
-                range(e, at("shape.top"), &[*bottom, *top]);
-            }
-            ShapeSpec::Cone {
-                origin,
-                axis,
-                bottom,
-                bottom_radius,
-                top,
-                top_radius,
-            } => {
-                e.finite3(at("shape.origin"), origin);
-                unit(e, at("shape.axis"), axis);
-                e.non_negative(at("shape.bottom_radius"), *bottom_radius);
-                e.non_negative(at("shape.top_radius"), *top_radius);
-                if *bottom_radius == 0.0 && *top_radius == 0.0 {
-                    e.push(
-                        at("shape.top_radius"),
-                        "a cone needs a non-zero radius at one end at least",
-                    );
-                }
-                range(e, at("shape.top"), &[*bottom, *top]);
-            }
-            ShapeSpec::Funnel {
-                origin,
-                axis,
-                outlet_radius,
-                outlet_bottom,
-                outlet_top,
-                top_radius,
-                top,
-            } => {
-                e.finite3(at("shape.origin"), origin);
-                unit(e, at("shape.axis"), axis);
-                e.positive(at("shape.outlet_radius"), *outlet_radius);
-                range(e, at("shape.outlet_top"), &[*outlet_bottom, *outlet_top]);
-                range(e, at("shape.top"), &[*outlet_top, *top]);
-                if !(top_radius > outlet_radius && top_radius.is_finite()) {
-                    e.push(
-                        at("shape.top_radius"),
-                        format!(
-                            "must exceed outlet_radius ({outlet_radius:e}), got {top_radius:e}"
-                        ),
-                    );
-                }
-            }
-            ShapeSpec::HeightField {
-                x_range,
-                y_range,
-                expression,
-                cells,
-                grid,
-            } => {
-                range(e, at("shape.x_range"), x_range);
-                range(e, at("shape.y_range"), y_range);
-                match (expression, grid) {
-                    (Some(expr), None) => {
-                        if let Err(msg) = Expression::parse(expr, &["x", "y"]) {
-                            e.push(at("shape.expression"), msg);
-                        }
-                        match cells {
-                            Some([nx, ny]) if *nx >= 1 && *ny >= 1 => {}
-                            _ => e.push(
-                                at("shape.cells"),
-                                "is required with an expression: [nx, ny], each >= 1",
-                            ),
-                        }
-                    }
-                    (None, Some(g)) => {
-                        if cells.is_some() {
-                            e.push(
-                                at("shape.cells"),
-                                "must be absent with a grid (the grid's shape gives the cells)",
-                            );
-                        }
-                        let rows = g.len();
-                        let cols = g.first().map_or(0, Vec::len);
-                        if rows < 2 || cols < 2 || g.iter().any(|r| r.len() != cols) {
-                            e.push(at("shape.grid"), format!("must be a rectangular array of at least 2 x 2 heights, got {rows} rows"));
-                        } else if g.iter().flatten().any(|z| !z.is_finite()) {
-                            e.push(at("shape.grid"), "heights must be finite");
-                        }
-                    }
-                    _ => e.push(
-                        at("shape"),
-                        "give exactly one of 'expression' (with 'cells') or 'grid'",
-                    ),
-                }
-            }
-            ShapeSpec::Mesh { stl, polygons } => match (stl, polygons) {
-                (Some(_), None) => {}
-                (None, Some(p)) => {
-                    for (j, poly) in p.iter().enumerate() {
-                        if poly.len() < 3 {
-                            e.push(
-                                at(&format!("shape.polygons[{j}]")),
-                                format!("needs at least 3 vertices, got {}", poly.len()),
-                            );
-                        }
-                        for (v, x) in poly.iter().enumerate() {
-                            e.finite3(at(&format!("shape.polygons[{j}][{v}]")), x);
-                        }
+                    let rows = g.len();
+                    let cols = g.first().map_or(0, Vec::len);
+                    if rows < 2 || cols < 2 || g.iter().any(|r| r.len() != cols) {
+                        e.push(at("shape.grid"), format!("must be a rectangular array of at least 2 x 2 heights, got {rows} rows"));
+                    } else if g.iter().flatten().any(|z| !z.is_finite()) {
+                        e.push(at("shape.grid"), "heights must be finite");
                     }
                 }
                 _ => e.push(
                     at("shape"),
-                    "give exactly one of 'stl' (a file path) or 'polygons'",
+                    "give exactly one of 'expression' (with 'cells') or 'grid'",
                 ),
-            },
+            }
         }
-        match &w.motion {
-            MotionSpec::Fixed => {}
-            MotionSpec::Velocity { velocity } => e.finite3(at("motion.velocity"), velocity),
-            MotionSpec::Displacement { x, y, z } => {
-                for (axis, src) in [("x", x), ("y", y), ("z", z)] {
-                    if let Err(msg) = Expression::parse(src, &["t"]) {
-                        e.push(at(&format!("motion.{axis}")), msg);
+        ShapeSpec::Mesh { stl, polygons } => match (stl, polygons) {
+            (Some(_), None) => {}
+            (None, Some(p)) => {
+                for (j, poly) in p.iter().enumerate() {
+                    if poly.len() < 3 {
+                        e.push(
+                            at(&format!("shape.polygons[{j}]")),
+                            format!("needs at least 3 vertices, got {}", poly.len()),
+                        );
+                    }
+                    for (v, x) in poly.iter().enumerate() {
+                        e.finite3(at(&format!("shape.polygons[{j}][{v}]")), x);
                     }
                 }
             }
-            MotionSpec::Servo {
-                direction,
-                force,
-                pressure,
-                area,
-                gain,
-                max_speed,
-            } => {
-                unit(e, at("motion.direction"), direction);
-                match (force, pressure, area) {
-                    (Some(f), None, None) => e.non_negative(at("motion.force"), *f),
-                    (None, Some(p), Some(a)) => {
-                        e.non_negative(at("motion.pressure"), *p);
-                        e.positive(at("motion.area"), *a);
-                    }
-                    _ => e.push(
-                        at("motion"),
-                        "give either 'force' (N) or both 'pressure' (Pa) and 'area' (m²)",
-                    ),
+            _ => e.push(
+                at("shape"),
+                "give exactly one of 'stl' (a file path) or 'polygons'",
+            ),
+        },
+    }
+}
+
+fn validate_motion(motion: &MotionSpec, at: &dyn Fn(&str) -> String, e: &mut Errors) {
+    match motion {
+        MotionSpec::Fixed => {}
+        MotionSpec::Velocity { velocity } => e.finite3(at("motion.velocity"), velocity),
+        MotionSpec::Displacement { x, y, z } => {
+            for (axis, src) in [("x", x), ("y", y), ("z", z)] {
+                if let Err(msg) = Expression::parse(src, &["t"]) {
+                    e.push(at(&format!("motion.{axis}")), msg);
                 }
-                e.positive(at("motion.gain"), *gain);
-                e.positive(at("motion.max_speed"), *max_speed);
             }
+        }
+        MotionSpec::Servo {
+            direction,
+            force,
+            pressure,
+            area,
+            gain,
+            max_speed,
+        } => {
+            unit(e, at("motion.direction"), direction);
+            match (force, pressure, area) {
+                (Some(f), None, None) => e.non_negative(at("motion.force"), *f),
+                (None, Some(p), Some(a)) => {
+                    e.non_negative(at("motion.pressure"), *p);
+                    e.positive(at("motion.area"), *a);
+                }
+                _ => e.push(
+                    at("motion"),
+                    "give either 'force' (N) or both 'pressure' (Pa) and 'area' (m²)",
+                ),
+            }
+            e.positive(at("motion.gain"), *gain);
+            e.positive(at("motion.max_speed"), *max_speed);
         }
     }
 }

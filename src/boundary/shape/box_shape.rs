@@ -100,12 +100,10 @@ impl BoxShape {
     }
 
     pub fn contacts(&self, centre: &Vec3, radius: f64, reach: f64, out: &mut Vec<ShapeContact>) {
-        let mut found = [None; 6];
+        // At most one candidate per face, so they fit on the stack.
+        let mut candidates = [Candidate::default(); 6];
         let mut count = 0;
-        for (k, slot) in found.iter_mut().enumerate() {
-            if !self.faces[k] {
-                continue;
-            }
+        for k in (0..6).filter(|&k| self.faces[k]) {
             let (a, plane, n) = self.face(k);
             let mut q = *centre;
             q[a] = plane;
@@ -126,32 +124,18 @@ impl BoxShape {
                 ((centre - q).dot(&n), n, 0)
             };
             if within_reach(radius - distance, reach) {
-                *slot = Some(Candidate {
+                candidates[count] = Candidate {
                     rank,
                     distance,
                     facet: k as u32,
                     point: q,
                     normal,
-                });
+                };
                 count += 1;
             }
         }
-        if count == 1 {
-            // The common case of a particle on one wall needs no sorting or storage.
-            let c = found.into_iter().flatten().next().expect("one candidate");
-            out.push(ShapeContact {
-                normal: c.normal,
-                overlap: radius - c.distance,
-                facet: c.facet,
-            });
-            return;
-        }
-        if count == 0 {
-            return;
-        }
-        let mut candidates: Vec<Candidate> = found.into_iter().flatten().collect();
         push_distinct(
-            &mut candidates,
+            &mut candidates[..count],
             radius,
             |k, p| self.lies_on(k as usize, p),
             out,

@@ -421,20 +421,12 @@ impl Mesh {
     }
 
     fn finish(&self, candidates: &mut [Candidate], radius: f64, out: &mut Vec<ShapeContact>) {
-        if let [c] = candidates {
-            out.push(ShapeContact {
-                normal: c.normal,
-                overlap: radius - c.distance,
-                facet: c.facet,
-            });
-        } else if !candidates.is_empty() {
-            push_distinct(
-                candidates,
-                radius,
-                |t, p| self.triangles[t as usize].contains(p),
-                out,
-            );
-        }
+        push_distinct(
+            candidates,
+            radius,
+            |t, p| self.triangles[t as usize].contains(p),
+            out,
+        );
     }
 
     /// Call `f` once for every triangle listed in a cell that the box of
@@ -565,6 +557,16 @@ mod tests {
         out
     }
 
+    /// The square [0, 1]² in the plane z = 0, anticlockwise.
+    fn unit_square() -> Vec<Vec3> {
+        vec![
+            v(0.0, 0.0, 0.0),
+            v(1.0, 0.0, 0.0),
+            v(1.0, 1.0, 0.0),
+            v(0.0, 1.0, 0.0),
+        ]
+    }
+
     /// The faces of the cube [0, 1]³ as squares (two triangles each).
     fn cube() -> Mesh {
         let c = |i: usize| v((i & 1) as f64, ((i >> 1) & 1) as f64, ((i >> 2) & 1) as f64);
@@ -585,13 +587,7 @@ mod tests {
 
     #[test]
     fn coplanar_shared_edge_and_shared_vertex_give_one_contact() {
-        let square = Mesh::from_polygons(&[vec![
-            v(0.0, 0.0, 0.0),
-            v(1.0, 0.0, 0.0),
-            v(1.0, 1.0, 0.0),
-            v(0.0, 1.0, 0.0),
-        ]])
-        .unwrap();
+        let square = Mesh::from_polygons(&[unit_square()]).unwrap();
         assert_eq!(square.len(), 2);
         // Exactly over the shared diagonal, and just off it on either side.
         for x in [
@@ -754,12 +750,7 @@ mod tests {
     #[test]
     fn bad_input_is_named() {
         let msg = |r: Result<Mesh>| r.unwrap_err().to_string();
-        let square = vec![
-            v(0.0, 0.0, 0.0),
-            v(1.0, 0.0, 0.0),
-            v(1.0, 1.0, 0.0),
-            v(0.0, 1.0, 0.0),
-        ];
+        let square = unit_square();
         let dart = vec![
             v(0.0, 0.0, 0.0),
             v(2.0, 0.0, 0.0),

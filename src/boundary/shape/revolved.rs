@@ -226,18 +226,7 @@ impl Revolved {
                 normal: u * nr + self.axis * nh,
             });
         }
-        match candidates.len() {
-            0 => {}
-            1 => {
-                let c = candidates[0];
-                out.push(ShapeContact {
-                    normal: c.normal,
-                    overlap: radius - c.distance,
-                    facet: c.facet,
-                });
-            }
-            _ => push_distinct(&mut candidates, radius, |s, p| self.lies_on(s, p), out),
-        }
+        push_distinct(&mut candidates, radius, |s, p| self.lies_on(s, p), out);
     }
 }
 
