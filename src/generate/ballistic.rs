@@ -51,6 +51,7 @@
 //! Along an open axis nothing confines them: they may roll beyond the footprint,
 //! forming a heap on an unbounded floor.
 
+use super::distribution::each_positive_finite;
 use super::grid::CellGrid;
 use crate::particles::Vec3;
 use crate::space::Space;
@@ -161,13 +162,7 @@ fn check_footprint(footprint: ([f64; 2], [f64; 2]), space: &Space) -> Result<(),
 }
 
 fn check_inputs(radii: &[f64], floor: f64, space: &Space) -> Result<f64, String> {
-    if let Some((i, r)) = radii
-        .iter()
-        .enumerate()
-        .find(|(_, r)| !(r.is_finite() && **r > 0.0))
-    {
-        return Err(format!("radii[{i}] must be positive and finite (got {r})"));
-    }
+    each_positive_finite("radii", radii)?;
     if !floor.is_finite() {
         return Err(format!("floor must be finite (got {floor})"));
     }

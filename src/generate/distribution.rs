@@ -64,11 +64,23 @@ pub enum SizeDistribution {
     },
 }
 
+fn is_positive_finite(x: f64) -> bool {
+    x.is_finite() && x > 0.0
+}
+
 fn positive_finite(name: &str, x: f64) -> Result<(), String> {
-    if x.is_finite() && x > 0.0 {
+    if is_positive_finite(x) {
         Ok(())
     } else {
         Err(format!("{name} must be positive and finite (got {x})"))
+    }
+}
+
+/// `positive_finite` for every element; the first offender is named `name[i]`.
+pub(crate) fn each_positive_finite(name: &str, values: &[f64]) -> Result<(), String> {
+    match values.iter().position(|&x| !is_positive_finite(x)) {
+        Some(i) => positive_finite(&format!("{name}[{i}]"), values[i]),
+        None => Ok(()),
     }
 }
 
@@ -98,9 +110,7 @@ impl SizeDistribution {
                         number_fractions.len()
                     ));
                 }
-                for (i, r) in radii.iter().enumerate() {
-                    positive_finite(&format!("radii[{i}]"), *r)?;
-                }
+                each_positive_finite("radii", radii)?;
                 for (i, f) in number_fractions.iter().enumerate() {
                     if !(f.is_finite() && *f >= 0.0) {
                         return Err(format!(
@@ -160,9 +170,7 @@ impl SizeDistribution {
                         cumulative.len()
                     ));
                 }
-                for (i, r) in radius.iter().enumerate() {
-                    positive_finite(&format!("radius[{i}]"), *r)?;
-                }
+                each_positive_finite("radius", radius)?;
                 if radius.windows(2).any(|w| w[1] <= w[0]) {
                     return Err("radius must be strictly increasing".into());
                 }
