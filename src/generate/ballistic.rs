@@ -121,7 +121,6 @@ pub fn deposit_at(
         grid: CellGrid::new(space, 2.0 * r_max, floor),
         centres: Vec::with_capacity(radii.len()),
         radii: Vec::with_capacity(radii.len()),
-        top_layer: 0,
         top_z: floor,
         scratch: Vec::new(),
     };
@@ -192,7 +191,7 @@ struct Pile {
     grid: CellGrid,
     centres: Vec<Vec3>,
     radii: Vec<f64>,
-    top_layer: i64,
+    /// Highest centre placed (the floor before the first).
     top_z: f64,
     scratch: Vec<usize>,
 }
@@ -261,7 +260,6 @@ impl Pile {
         self.space.wrap(&mut p);
         let id = self.centres.len();
         self.grid.insert(&p, id);
-        self.top_layer = self.top_layer.max(self.grid.cell_of(&p)[2]);
         self.top_z = self.top_z.max(p[2]);
         self.centres.push(p);
         self.radii.push(a);
@@ -284,10 +282,11 @@ impl Pile {
             let Some((active, v)) = descent_direction(&p, &contacts)? else {
                 return Ok(p);
             };
-            let outcome = match active.len() {
-                0 => self.fall(p, a),
-                1 => self.roll(p, a, &active, &contacts, v),
-                _ => self.groove(p, a, &active, &contacts, v),
+            let outcome = match active[..] {
+                [] => self.fall(p, a),
+                [j] => self.roll(p, a, contacts[j], v),
+                [j, k] => self.groove(p, a, contacts[j], contacts[k], v),
+                _ => unreachable!("at most two contacts support a moving sphere"),
             };
             match outcome {
                 Outcome::Rest(q) => return Ok(q),
@@ -309,7 +308,8 @@ impl Pile {
         let reach_max = a + self.r_max;
         let mut best = floor_z;
         let mut hits: Vec<(usize, f64)> = Vec::new();
-        let mut layer = self.grid.cell_of(&p)[2].min(self.top_layer);
+        // Centres lie at or below top_z: layers above its own are empty.
+        let mut layer = self.grid.layer_of(p[2].min(self.top_z));
         let mut ids = std::mem::take(&mut self.scratch);
         while layer >= 0 {
             // Centres in this layer lie below its top edge, so no contact from here
@@ -358,15 +358,8 @@ impl Pile {
         Outcome::Continue(q, touching)
     }
 
-    fn roll(
-        &mut self,
-        p: Vec3,
-        a: f64,
-        active: &[usize],
-        contacts: &[Contact],
-        v: Vec3,
-    ) -> Outcome {
-        let support = contacts[active[0]];
+    /// Rolling on `support` in the direction `v`.
+    fn roll(&mut self, p: Vec3, a: f64, support: Contact, v: Vec3) -> Outcome {
         let e1 = (p - support.centre).normalize();
         // v ⊥ e₁ already, up to rounding, except when leaving the top along an
         // arbitrary horizontal; the projection keeps the arc on the sphere.
@@ -382,15 +375,8 @@ impl Pile {
         self.follow(&arc, a, &[support.id], None)
     }
 
-    fn groove(
-        &mut self,
-        p: Vec3,
-        a: f64,
-        active: &[usize],
-        contacts: &[Contact],
-        v: Vec3,
-    ) -> Outcome {
-        let (j, k) = (contacts[active[0]], contacts[active[1]]);
+    /// Rolling in the groove of `j` and `k` in the direction `v`.
+    fn groove(&mut self, p: Vec3, a: f64, j: Contact, k: Contact, v: Vec3) -> Outcome {
         let axis = k.centre - j.centre;
         let gap = axis.norm();
         let u = axis / gap;
