@@ -51,6 +51,7 @@
 //! Along an open axis nothing confines them: they may roll beyond the footprint,
 //! forming a heap on an unbounded floor.
 
+use super::distribution::each_positive_finite;
 use super::grid::CellGrid;
 use crate::particles::Vec3;
 use crate::space::Space;
@@ -120,7 +121,6 @@ pub fn deposit_at(
         grid: CellGrid::new(space, 2.0 * r_max, floor),
         centres: Vec::with_capacity(radii.len()),
         radii: Vec::with_capacity(radii.len()),
-        top_layer: 0,
         top_z: floor,
         scratch: Vec::new(),
     };
@@ -161,13 +161,7 @@ fn check_footprint(footprint: ([f64; 2], [f64; 2]), space: &Space) -> Result<(),
 }
 
 fn check_inputs(radii: &[f64], floor: f64, space: &Space) -> Result<f64, String> {
-    if let Some((i, r)) = radii
-        .iter()
-        .enumerate()
-        .find(|(_, r)| !(r.is_finite() && **r > 0.0))
-    {
-        return Err(format!("radii[{i}] must be positive and finite (got {r})"));
-    }
+    each_positive_finite("radii", radii)?;
     if !floor.is_finite() {
         return Err(format!("floor must be finite (got {floor})"));
     }
@@ -197,7 +191,7 @@ struct Pile {
     grid: CellGrid,
     centres: Vec<Vec3>,
     radii: Vec<f64>,
-    top_layer: i64,
+    /// Highest centre placed (the floor before the first).
     top_z: f64,
     scratch: Vec<usize>,
 }
@@ -266,7 +260,6 @@ impl Pile {
         self.space.wrap(&mut p);
         let id = self.centres.len();
         self.grid.insert(&p, id);
-        self.top_layer = self.top_layer.max(self.grid.cell_of(&p)[2]);
         self.top_z = self.top_z.max(p[2]);
         self.centres.push(p);
         self.radii.push(a);
@@ -289,10 +282,11 @@ impl Pile {
             let Some((active, v)) = descent_direction(&p, &contacts)? else {
                 return Ok(p);
             };
-            let outcome = match active.len() {
-                0 => self.fall(p, a),
-                1 => self.roll(p, a, &active, &contacts, v),
-                _ => self.groove(p, a, &active, &contacts, v),
+            let outcome = match active[..] {
+                [] => self.fall(p, a),
+                [j] => self.roll(p, a, contacts[j], v),
+                [j, k] => self.groove(p, a, contacts[j], contacts[k], v),
+                _ => unreachable!("at most two contacts support a moving sphere"),
             };
             match outcome {
                 Outcome::Rest(q) => return Ok(q),
@@ -314,7 +308,8 @@ impl Pile {
         let reach_max = a + self.r_max;
         let mut best = floor_z;
         let mut hits: Vec<(usize, f64)> = Vec::new();
-        let mut layer = self.grid.cell_of(&p)[2].min(self.top_layer);
+        // Centres lie at or below top_z: layers above its own are empty.
+        let mut layer = self.grid.layer_of(p[2].min(self.top_z));
         let mut ids = std::mem::take(&mut self.scratch);
         while layer >= 0 {
             // Centres in this layer lie below its top edge, so no contact from here
@@ -363,15 +358,8 @@ impl Pile {
         Outcome::Continue(q, touching)
     }
 
-    fn roll(
-        &mut self,
-        p: Vec3,
-        a: f64,
-        active: &[usize],
-        contacts: &[Contact],
-        v: Vec3,
-    ) -> Outcome {
-        let support = contacts[active[0]];
+    /// Rolling on `support` in the direction `v`.
+    fn roll(&mut self, p: Vec3, a: f64, support: Contact, v: Vec3) -> Outcome {
         let e1 = (p - support.centre).normalize();
         // v ⊥ e₁ already, up to rounding, except when leaving the top along an
         // arbitrary horizontal; the projection keeps the arc on the sphere.
@@ -387,15 +375,8 @@ impl Pile {
         self.follow(&arc, a, &[support.id], None)
     }
 
-    fn groove(
-        &mut self,
-        p: Vec3,
-        a: f64,
-        active: &[usize],
-        contacts: &[Contact],
-        v: Vec3,
-    ) -> Outcome {
-        let (j, k) = (contacts[active[0]], contacts[active[1]]);
+    /// Rolling in the groove of `j` and `k` in the direction `v`.
+    fn groove(&mut self, p: Vec3, a: f64, j: Contact, k: Contact, v: Vec3) -> Outcome {
         let axis = k.centre - j.centre;
         let gap = axis.norm();
         let u = axis / gap;

@@ -64,11 +64,23 @@ pub enum SizeDistribution {
     },
 }
 
+fn is_positive_finite(x: f64) -> bool {
+    x.is_finite() && x > 0.0
+}
+
 fn positive_finite(name: &str, x: f64) -> Result<(), String> {
-    if x.is_finite() && x > 0.0 {
+    if is_positive_finite(x) {
         Ok(())
     } else {
         Err(format!("{name} must be positive and finite (got {x})"))
+    }
+}
+
+/// `positive_finite` for every element; the first offender is named `name[i]`.
+pub(crate) fn each_positive_finite(name: &str, values: &[f64]) -> Result<(), String> {
+    match values.iter().position(|&x| !is_positive_finite(x)) {
+        Some(i) => positive_finite(&format!("{name}[{i}]"), values[i]),
+        None => Ok(()),
     }
 }
 
@@ -98,9 +110,7 @@ impl SizeDistribution {
                         number_fractions.len()
                     ));
                 }
-                for (i, r) in radii.iter().enumerate() {
-                    positive_finite(&format!("radii[{i}]"), *r)?;
-                }
+                each_positive_finite("radii", radii)?;
                 for (i, f) in number_fractions.iter().enumerate() {
                     if !(f.is_finite() && *f >= 0.0) {
                         return Err(format!(
@@ -137,7 +147,7 @@ impl SizeDistribution {
                 {
                     return Err(format!("max must be > min (got min {a}, max {b})"));
                 }
-                let kept = self.log_normal_kept_probability();
+                let kept = log_normal_kept_probability(*median, *sigma, *min, *max);
                 if kept < MIN_KEPT_PROBABILITY {
                     return Err(format!(
                         "truncation to [min, max] keeps only {kept:.3e} of the log-normal; \
@@ -160,9 +170,7 @@ impl SizeDistribution {
                         cumulative.len()
                     ));
                 }
-                for (i, r) in radius.iter().enumerate() {
-                    positive_finite(&format!("radius[{i}]"), *r)?;
-                }
+                each_positive_finite("radius", radius)?;
                 if radius.windows(2).any(|w| w[1] <= w[0]) {
                     return Err("radius must be strictly increasing".into());
                 }
@@ -249,66 +257,57 @@ impl SizeDistribution {
         }
     }
 
-    /// Largest radius that can be drawn (`f64::INFINITY` for a log-normal without `max`).
-    pub fn max_radius(&self) -> f64 {
+    /// Smallest and largest radius that can be drawn (0 and `f64::INFINITY` for a
+    /// log-normal without `min` and `max`).
+    pub fn radius_range(&self) -> (f64, f64) {
         match self {
-            SizeDistribution::Mono { radius } => *radius,
-            SizeDistribution::Uniform { max, .. } => *max,
+            SizeDistribution::Mono { radius } => (*radius, *radius),
+            SizeDistribution::Uniform { min, max } => (*min, *max),
             SizeDistribution::Discrete {
                 radii,
                 number_fractions,
             } => radii
                 .iter()
                 .zip(number_fractions)
+                // A class with a zero fraction is never drawn.
                 .filter(|(_, f)| **f > 0.0)
-                .map(|(r, _)| *r)
-                .fold(0.0, f64::max),
+                .fold((f64::INFINITY, 0.0), |(lo, hi), (r, _)| {
+                    (lo.min(*r), hi.max(*r))
+                }),
             SizeDistribution::LogNormal {
-                sigma, median, max, ..
+                median,
+                sigma,
+                min,
+                max,
             } => {
                 if *sigma == 0.0 {
-                    *median
+                    (*median, *median)
                 } else {
-                    max.unwrap_or(f64::INFINITY)
+                    (min.unwrap_or(0.0), max.unwrap_or(f64::INFINITY))
                 }
             }
             SizeDistribution::Tabulated { radius, cumulative } => {
-                let last = cumulative[cumulative.len() - 1];
-                let i = cumulative.partition_point(|c| *c < last);
-                radius[i.min(radius.len() - 1)]
+                // Flat ends of the table carry no probability: the range runs from
+                // the last node still at F₀ to the first already at F_last.
+                let (first, last) = (cumulative[0], cumulative[cumulative.len() - 1]);
+                let lo = cumulative.partition_point(|c| *c <= first);
+                let hi = cumulative.partition_point(|c| *c < last);
+                (
+                    radius[lo.saturating_sub(1)],
+                    radius[hi.min(radius.len() - 1)],
+                )
             }
         }
     }
 
     /// Smallest radius that can be drawn (0 for a log-normal without `min`).
     pub fn min_radius(&self) -> f64 {
-        match self {
-            SizeDistribution::Mono { radius } => *radius,
-            SizeDistribution::Uniform { min, .. } => *min,
-            SizeDistribution::Discrete {
-                radii,
-                number_fractions,
-            } => radii
-                .iter()
-                .zip(number_fractions)
-                .filter(|(_, f)| **f > 0.0)
-                .map(|(r, _)| *r)
-                .fold(f64::INFINITY, f64::min),
-            SizeDistribution::LogNormal {
-                sigma, median, min, ..
-            } => {
-                if *sigma == 0.0 {
-                    *median
-                } else {
-                    min.unwrap_or(0.0)
-                }
-            }
-            SizeDistribution::Tabulated { radius, cumulative } => {
-                let first = cumulative[0];
-                let i = cumulative.partition_point(|c| *c <= first);
-                radius[i.saturating_sub(1)]
-            }
-        }
+        self.radius_range().0
+    }
+
+    /// Largest radius that can be drawn (`f64::INFINITY` for a log-normal without `max`).
+    pub fn max_radius(&self) -> f64 {
+        self.radius_range().1
     }
 
     /// Number-weighted mean particle volume (4π/3) E[r³].
@@ -342,7 +341,7 @@ impl SizeDistribution {
                 if s == 0.0 {
                     return median.powi(3);
                 }
-                let (lo, hi) = self.log_normal_standard_bounds();
+                let (lo, hi) = log_normal_standard_bounds(*median, s, *min, *max);
                 untruncated * normal_probability(lo - 3.0 * s, hi - 3.0 * s)
                     / normal_probability(lo, hi)
             }
@@ -353,42 +352,31 @@ impl SizeDistribution {
                 .sum(),
         }
     }
+}
 
-    /// Standardised truncation bounds (ln a − ln m)/s, (ln b − ln m)/s of a log-normal.
-    fn log_normal_standard_bounds(&self) -> (f64, f64) {
-        let SizeDistribution::LogNormal {
-            median,
-            sigma,
-            min,
-            max,
-        } = self
-        else {
-            unreachable!("only called on LogNormal")
-        };
-        let z = |x: f64| (x.ln() - median.ln()) / sigma;
-        (
-            min.map_or(f64::NEG_INFINITY, z),
-            max.map_or(f64::INFINITY, z),
-        )
-    }
+/// Standardised truncation bounds (ln a − ln m)/s, (ln b − ln m)/s of a log-normal
+/// with median m and s > 0; infinite where a bound is absent.
+fn log_normal_standard_bounds(
+    median: f64,
+    sigma: f64,
+    min: Option<f64>,
+    max: Option<f64>,
+) -> (f64, f64) {
+    let z = |x: f64| (x.ln() - median.ln()) / sigma;
+    (
+        min.map_or(f64::NEG_INFINITY, z),
+        max.map_or(f64::INFINITY, z),
+    )
+}
 
-    fn log_normal_kept_probability(&self) -> f64 {
-        let SizeDistribution::LogNormal {
-            median,
-            sigma,
-            min,
-            max,
-        } = self
-        else {
-            unreachable!("only called on LogNormal")
-        };
-        if *sigma == 0.0 {
-            let inside = min.is_none_or(|a| a <= *median) && max.is_none_or(|b| b >= *median);
-            return if inside { 1.0 } else { 0.0 };
-        }
-        let (lo, hi) = self.log_normal_standard_bounds();
-        normal_probability(lo, hi)
+/// Probability that a draw of the untruncated log-normal lies in [min, max].
+fn log_normal_kept_probability(median: f64, sigma: f64, min: Option<f64>, max: Option<f64>) -> f64 {
+    if sigma == 0.0 {
+        let inside = min.is_none_or(|a| a <= median) && max.is_none_or(|b| b >= median);
+        return if inside { 1.0 } else { 0.0 };
     }
+    let (lo, hi) = log_normal_standard_bounds(median, sigma, min, max);
+    normal_probability(lo, hi)
 }
 
 /// E[r³] for r uniform on [a, b]; the limit a³ when the interval is empty.

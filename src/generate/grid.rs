@@ -78,12 +78,17 @@ impl CellGrid {
         }
     }
 
-    pub(crate) fn cell_of(&self, x: &Vec3) -> [i64; 3] {
+    fn cell_of(&self, x: &Vec3) -> [i64; 3] {
         [
             self.index(0, x[0]),
             self.index(1, x[1]),
             self.index(2, x[2]),
         ]
+    }
+
+    /// The z layer holding height z.
+    pub(crate) fn layer_of(&self, z: f64) -> i64 {
+        self.index(2, z)
     }
 
     /// Lower edge of the z layer `layer`.

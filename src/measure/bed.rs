@@ -27,6 +27,7 @@
 //! (`Region::Slab`), every particle counted once per periodic cell.
 
 use crate::error::{Result, TampError};
+use crate::measure::packing::lateral_cell_area;
 use crate::measure::region::{Region, ball_volume};
 use crate::particles::Vec3;
 use crate::space::Space;
@@ -59,20 +60,14 @@ pub fn bulk_packing_fraction(
             ),
         ));
     }
-    let mut area = 1.0;
-    for k in (0..3).filter(|&k| k != axis) {
-        match space.periodic[k] {
-            Some((_, length)) => area *= length,
-            None => {
-                return Err(TampError::input(
-                    "space",
-                    format!(
-                        "a bed's bulk fraction needs axis {k} periodic (the bed's area is its periodic cell)"
-                    ),
-                ));
-            }
-        }
-    }
+    let area = lateral_cell_area(space, axis).map_err(|k| {
+        TampError::input(
+            "space",
+            format!(
+                "a bed's bulk fraction needs axis {k} periodic (the bed's area is its periodic cell)"
+            ),
+        )
+    })?;
     let d = 2.0 * radii.iter().cloned().fold(0.0, f64::max);
     let top = positions
         .iter()

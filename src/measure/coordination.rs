@@ -37,7 +37,9 @@ use crate::measure::region::Region;
 use crate::particles::Vec3;
 use crate::space::Space;
 
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// The default (tolerance 0, no rattler filter, no interior) counts the overlapping
+/// pairs of every particle.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct CoordinationOptions {
     /// Gap still counted as a contact, m (≥ 0).
     pub tolerance: f64,
@@ -45,16 +47,6 @@ pub struct CoordinationOptions {
     pub rattler_below: Option<usize>,
     /// Count only particles whose centre lies in this region.
     pub interior: Option<Region>,
-}
-
-impl Default for CoordinationOptions {
-    fn default() -> Self {
-        CoordinationOptions {
-            tolerance: 0.0,
-            rattler_below: None,
-            interior: None,
-        }
-    }
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -247,48 +239,23 @@ mod tests {
         let r = vec![0.5; x.len()];
         let space = Space::open();
         let pairs = candidate_pairs(&x, &r, 0.1, &space);
-        let tol = 1e-9;
-        let all = coordination(
-            &x,
-            &r,
-            &space,
-            &pairs,
-            &CoordinationOptions {
-                tolerance: tol,
-                ..Default::default()
-            },
-        )
-        .unwrap();
+        let with_rattlers_below = |rattler_below| {
+            let options = CoordinationOptions {
+                tolerance: 1e-9,
+                rattler_below,
+                interior: None,
+            };
+            coordination(&x, &r, &space, &pairs, &options).unwrap()
+        };
+        let all = with_rattlers_below(None);
         assert_eq!(all.contacts, vec![1, 2, 2, 1, 3, 3, 3, 3, 0]);
         assert_eq!(all.histogram, vec![1, 2, 2, 4]);
         assert!((all.mean - 18.0 / 9.0).abs() < 1e-15);
-        let two = coordination(
-            &x,
-            &r,
-            &space,
-            &pairs,
-            &CoordinationOptions {
-                tolerance: tol,
-                rattler_below: Some(2),
-                interior: None,
-            },
-        )
-        .unwrap();
+        let two = with_rattlers_below(Some(2));
         assert_eq!(two.rattlers, 5);
         assert_eq!(two.counted, 4);
         assert_eq!(two.mean, 3.0);
-        let four = coordination(
-            &x,
-            &r,
-            &space,
-            &pairs,
-            &CoordinationOptions {
-                tolerance: tol,
-                rattler_below: Some(4),
-                interior: None,
-            },
-        )
-        .unwrap();
+        let four = with_rattlers_below(Some(4));
         assert_eq!((four.rattlers, four.counted, four.mean), (9, 0, 0.0));
     }
 

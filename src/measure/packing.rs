@@ -50,21 +50,15 @@ pub fn solid_volume(
         return Err(TampError::input("region", defect));
     }
     if let Region::Slab { axis, lo, hi } = *region {
-        let mut cell_area = 1.0;
-        for k in (0..3).filter(|&k| k != axis) {
-            match space.periodic[k] {
-                Some((_, length)) => cell_area *= length,
-                None => {
-                    return Err(TampError::input(
-                        "region",
-                        format!(
-                            "a slab normal to axis {axis} has infinite volume unless axis {k} \
-                             is periodic; use a box or a cylinder"
-                        ),
-                    ));
-                }
-            }
-        }
+        let cell_area = lateral_cell_area(space, axis).map_err(|k| {
+            TampError::input(
+                "region",
+                format!(
+                    "a slab normal to axis {axis} has infinite volume unless axis {k} \
+                     is periodic; use a box or a cylinder"
+                ),
+            )
+        })?;
         let along = Space {
             periodic: {
                 let mut p = [None; 3];
@@ -79,6 +73,15 @@ pub fn solid_volume(
         sum_over_images(positions, radii, region, space),
         region.volume(),
     ))
+}
+
+/// Area of the periodic cell across `axis`: the product of the periods of the two
+/// other axes, or `Err(k)` with the first of them that is not periodic (then the
+/// cell, and any slab across `axis`, is unbounded).
+pub(crate) fn lateral_cell_area(space: &Space, axis: usize) -> std::result::Result<f64, usize> {
+    (0..3).filter(|&k| k != axis).try_fold(1.0, |area, k| {
+        space.periodic[k].map(|(_, length)| area * length).ok_or(k)
+    })
 }
 
 /// φ = Σ V(ball ∩ region) / V(region); see the module comment for overlaps, periodic

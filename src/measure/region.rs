@@ -604,39 +604,28 @@ mod tests {
         assert!(rel(q1, q2) < 1e-14);
     }
 
+    /// `region ∩ ball(c, r)` has volume `want` to relative `tol`.
+    fn check(region: &Region, c: Vec3, r: f64, want: f64, tol: f64) {
+        let got = region.intersection_volume(&c, r);
+        assert!(
+            rel(got, want) < tol,
+            "{region:?}, ball at {c:?} r {r}: {got} vs {want}"
+        );
+    }
+
     #[test]
     fn closed_form_special_cases() {
         let r = 0.25;
         let full = ball_volume(r);
         let b = unit_box();
-        assert!(rel(b.intersection_volume(&Vec3::new(0.5, 1.0, 1.5), r), full) < 1e-15);
+        check(&b, Vec3::new(0.5, 1.0, 1.5), r, full, 1e-15);
         // Centred on a face, an edge and a corner.
-        assert!(
-            rel(
-                b.intersection_volume(&Vec3::new(0.0, 1.0, 1.5), r),
-                full / 2.0
-            ) < 1e-14
-        );
-        assert!(
-            rel(
-                b.intersection_volume(&Vec3::new(0.0, 2.0, 1.5), r),
-                full / 4.0
-            ) < 1e-13
-        );
-        assert!(
-            rel(
-                b.intersection_volume(&Vec3::new(1.0, 2.0, 3.0), r),
-                full / 8.0
-            ) < 1e-13
-        );
-        assert!(
-            rel(
-                b.intersection_volume(&Vec3::new(0.0, 0.0, 0.0), r),
-                full / 8.0
-            ) < 1e-13
-        );
+        check(&b, Vec3::new(0.0, 1.0, 1.5), r, full / 2.0, 1e-14);
+        check(&b, Vec3::new(0.0, 2.0, 1.5), r, full / 4.0, 1e-13);
+        check(&b, Vec3::new(1.0, 2.0, 3.0), r, full / 8.0, 1e-13);
+        check(&b, Vec3::new(0.0, 0.0, 0.0), r, full / 8.0, 1e-13);
         // A ball swallowing the box.
-        assert!(rel(b.intersection_volume(&Vec3::new(0.5, 1.0, 1.5), 10.0), 6.0) < 1e-14);
+        check(&b, Vec3::new(0.5, 1.0, 1.5), 10.0, 6.0, 1e-14);
         // Ball just outside a corner, its bounding box touching the box.
         assert_eq!(b.intersection_volume(&Vec3::repeat(-0.2), r), 0.0);
 
@@ -645,40 +634,32 @@ mod tests {
             lo: 0.0,
             hi: 1.0,
         };
-        assert!(
-            rel(
-                slab.intersection_volume(&Vec3::new(5.0, 0.0, 7.0), r),
-                full / 2.0
-            ) < 1e-15
-        );
-        assert!(
-            rel(
-                slab.intersection_volume(&Vec3::new(5.0, 0.5, 7.0), 10.0),
-                PI * (100.0 - 1.0 / 12.0)
-            ) < 1e-14
+        check(&slab, Vec3::new(5.0, 0.0, 7.0), r, full / 2.0, 1e-15);
+        check(
+            &slab,
+            Vec3::new(5.0, 0.5, 7.0),
+            10.0,
+            PI * (100.0 - 1.0 / 12.0),
+            1e-14,
         );
 
         let s = Region::Sphere {
             centre: Vec3::zeros(),
             radius: 1.0,
         };
-        assert!(rel(s.intersection_volume(&Vec3::new(0.1, 0.2, 0.0), r), full) < 1e-15);
-        assert!(
-            rel(
-                s.intersection_volume(&Vec3::new(0.1, 0.2, 0.0), 3.0),
-                ball_volume(1.0)
-            ) < 1e-15
-        );
+        check(&s, Vec3::new(0.1, 0.2, 0.0), r, full, 1e-15);
+        check(&s, Vec3::new(0.1, 0.2, 0.0), 3.0, ball_volume(1.0), 1e-15);
         // Equal balls one radius apart: lens = 5/12 π r³.
         let s1 = Region::Sphere {
             centre: Vec3::zeros(),
             radius: r,
         };
-        assert!(
-            rel(
-                s1.intersection_volume(&Vec3::new(0.0, 0.0, r), r),
-                5.0 / 12.0 * PI * r.powi(3)
-            ) < 1e-14
+        check(
+            &s1,
+            Vec3::new(0.0, 0.0, r),
+            r,
+            5.0 / 12.0 * PI * r.powi(3),
+            1e-14,
         );
 
         let cyl = Region::Cylinder {
@@ -687,19 +668,9 @@ mod tests {
             radius: 1.0,
             height: 2.0,
         };
-        assert!(rel(cyl.intersection_volume(&Vec3::new(0.2, 0.0, 1.0), r), full) < 1e-15);
-        assert!(
-            rel(
-                cyl.intersection_volume(&Vec3::new(0.2, 0.0, 0.0), r),
-                full / 2.0
-            ) < 1e-15
-        );
-        assert!(
-            rel(
-                cyl.intersection_volume(&Vec3::new(0.0, 0.0, 1.0), 10.0),
-                2.0 * PI
-            ) < 1e-14
-        );
+        check(&cyl, Vec3::new(0.2, 0.0, 1.0), r, full, 1e-15);
+        check(&cyl, Vec3::new(0.2, 0.0, 0.0), r, full / 2.0, 1e-15);
+        check(&cyl, Vec3::new(0.0, 0.0, 1.0), 10.0, 2.0 * PI, 1e-14);
         // Coaxial ball larger than the radius, cylinder taller than the ball: the ball
         // minus a napkin ring, 4/3 π (r³ − (r² − R²)^{3/2}).
         let big = 1.5;
@@ -710,8 +681,7 @@ mod tests {
             radius: 1.0,
             height: 10.0,
         };
-        let got = tall.intersection_volume(&Vec3::zeros(), big);
-        assert!(rel(got, napkin) < 1e-14, "{got} {napkin}");
+        check(&tall, Vec3::zeros(), big, napkin, 1e-14);
         // Large cylinder radius: the lateral wall is locally a plane, the base a plane;
         // centred on the rim of the base the ball is cut to ≈ 1/4.
         let wide = Region::Cylinder {
