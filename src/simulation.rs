@@ -372,16 +372,10 @@ impl Simulation {
         let torques = ROT && self.law.tangential.is_some();
         let law_reach = self.law.reach();
         let space = self.neighbors.space;
-        // Open scenes skip the minimum image (a branch the CPU predicts perfectly).
-        let periodic = space.is_periodic();
 
         for (k, &(i, j)) in self.neighbors.pairs.iter().enumerate() {
             let (i, j) = (i as usize, j as usize);
-            let d = if periodic {
-                space.displacement(&p.position[i], &p.position[j])
-            } else {
-                p.position[i] - p.position[j]
-            };
+            let d = space.displacement(&p.position[i], &p.position[j]);
             let reach = p.radius[i] + p.radius[j];
             let dist2 = d.norm_squared();
             if dist2 >= (reach + law_reach).powi(2) {
