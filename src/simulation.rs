@@ -476,15 +476,11 @@ impl Simulation {
                         relative_velocity,
                     };
                     let pair = self.pair_table.get(p.material[i], wall.material);
-                    let mut history = if HIST {
-                        previous
-                            .iter()
-                            .find(|(f, _)| *f == c.facet)
-                            .map(|(_, h)| *h)
-                            .unwrap_or_default()
-                    } else {
-                        ContactHistory::default()
-                    };
+                    // `previous` is only filled when contacts have history.
+                    let mut history = previous
+                        .iter()
+                        .find(|(f, _)| *f == c.facet)
+                        .map_or_else(ContactHistory::default, |(_, h)| *h);
                     let f = self
                         .law
                         .evaluate(&g, pair, HIST.then_some(&mut history), dt);
