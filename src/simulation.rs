@@ -36,6 +36,15 @@ fn contact_mass(p: &Particles, i: usize, j: usize) -> f64 {
     }
 }
 
+/// Add the weight m g of every free particle to its force.
+fn add_weights(p: &mut Particles, g: Vec3) {
+    for i in 0..p.len() {
+        if p.motion[i] == Motion::Free {
+            p.force[i] += g * p.mass[i];
+        }
+    }
+}
+
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StabilityLimits {
     /// Largest overlap allowed, as a fraction of the smaller radius of the contact.
@@ -221,11 +230,11 @@ impl Simulation {
     pub fn set_growth(&mut self, growth: Growth, target_radius: Vec<f64>) -> Result<()> {
         self.growth = Some(growth);
         self.target_radius = target_radius;
-        // The forces of `new` included gravity, which waits for the end of growth.
-        let dt = self.dt;
-        self.dt = 0.0;
-        self.compute_forces()?;
-        self.dt = dt;
+        // The forces of `new` included the weights, which wait for the end of growth:
+        // take them off again instead of evaluating every contact a second time.
+        if let Some(g) = self.gravity.filter(|_| self.is_growing()) {
+            add_weights(&mut self.particles, -g);
+        }
         self.restart_energy_book();
         Ok(())
     }
@@ -355,11 +364,7 @@ impl Simulation {
             p.torque.iter_mut().for_each(|t| *t = Vec3::zeros());
         }
         if let Some(g) = gravity {
-            for i in 0..n {
-                if p.motion[i] == Motion::Free {
-                    p.force[i] += g * p.mass[i];
-                }
-            }
+            add_weights(p, g);
         }
         let dt = self.dt;
         let max_fraction = self.limits.max_overlap_fraction;
@@ -367,16 +372,10 @@ impl Simulation {
         let torques = ROT && self.law.tangential.is_some();
         let law_reach = self.law.reach();
         let space = self.neighbors.space;
-        // Open scenes skip the minimum image (a branch the CPU predicts perfectly).
-        let periodic = space.is_periodic();
 
         for (k, &(i, j)) in self.neighbors.pairs.iter().enumerate() {
             let (i, j) = (i as usize, j as usize);
-            let d = if periodic {
-                space.displacement(&p.position[i], &p.position[j])
-            } else {
-                p.position[i] - p.position[j]
-            };
+            let d = space.displacement(&p.position[i], &p.position[j]);
             let reach = p.radius[i] + p.radius[j];
             let dist2 = d.norm_squared();
             if dist2 >= (reach + law_reach).powi(2) {
@@ -390,13 +389,9 @@ impl Simulation {
             let ratio = overlap / p.radius[i].min(p.radius[j]);
             worst = worst.max(ratio);
             if ratio > max_fraction || dist == 0.0 {
-                return Err(TampError::Unstable {
-                    step: self.step,
-                    time: self.time,
-                    what: format!(
-                        "contact {i}-{j}: overlap {overlap:.4e} m is {ratio:.3} of the smaller radius (limit {max_fraction})"
-                    ),
-                });
+                return Err(self.unstable(format!(
+                    "contact {i}-{j}: overlap {overlap:.4e} m is {ratio:.3} of the smaller radius (limit {max_fraction})"
+                )));
             }
             let normal = d / dist;
             // Contact point in the middle of the overlap: the two lever arms add up to
@@ -424,13 +419,9 @@ impl Simulation {
             let f = self.law.evaluate(&g, pair, history, dt);
             let total = normal * f.normal + f.tangential;
             if !total.iter().all(|c| c.is_finite()) {
-                return Err(TampError::Unstable {
-                    step: self.step,
-                    time: self.time,
-                    what: format!(
-                        "contact {i}-{j}: non-finite contact force at overlap {overlap:.4e} m"
-                    ),
-                });
+                return Err(self.unstable(format!(
+                    "contact {i}-{j}: non-finite contact force at overlap {overlap:.4e} m"
+                )));
             }
             p.force[i] += total;
             p.force[j] -= total;
@@ -466,14 +457,10 @@ impl Simulation {
                     let ratio = overlap / p.radius[i];
                     worst = worst.max(ratio);
                     if ratio > max_fraction {
-                        return Err(TampError::Unstable {
-                            step: self.step,
-                            time: self.time,
-                            what: format!(
-                                "contact {i}-wall '{}' (facet {}): overlap {overlap:.4e} m is {ratio:.3} of the radius (limit {max_fraction})",
-                                wall.name, c.facet
-                            ),
-                        });
+                        return Err(self.unstable(format!(
+                            "contact {i}-wall '{}' (facet {}): overlap {overlap:.4e} m is {ratio:.3} of the radius (limit {max_fraction})",
+                            wall.name, c.facet
+                        )));
                     }
                     let normal = c.normal;
                     let lever = p.radius[i] - 0.5 * overlap;
@@ -489,15 +476,11 @@ impl Simulation {
                         relative_velocity,
                     };
                     let pair = self.pair_table.get(p.material[i], wall.material);
-                    let mut history = if HIST {
-                        previous
-                            .iter()
-                            .find(|(f, _)| *f == c.facet)
-                            .map(|(_, h)| *h)
-                            .unwrap_or_default()
-                    } else {
-                        ContactHistory::default()
-                    };
+                    // `previous` is only filled when contacts have history.
+                    let mut history = previous
+                        .iter()
+                        .find(|(f, _)| *f == c.facet)
+                        .map_or_else(ContactHistory::default, |(_, h)| *h);
                     let f = self
                         .law
                         .evaluate(&g, pair, HIST.then_some(&mut history), dt);
@@ -506,14 +489,10 @@ impl Simulation {
                     }
                     let total = normal * f.normal + f.tangential;
                     if !total.iter().all(|c| c.is_finite()) {
-                        return Err(TampError::Unstable {
-                            step: self.step,
-                            time: self.time,
-                            what: format!(
-                                "contact {i}-wall '{}' (facet {}): non-finite contact force",
-                                wall.name, c.facet
-                            ),
-                        });
+                        return Err(self.unstable(format!(
+                            "contact {i}-wall '{}' (facet {}): non-finite contact force",
+                            wall.name, c.facet
+                        )));
                     }
                     p.force[i] += total;
                     on_wall -= total;

@@ -32,10 +32,15 @@ impl Space {
         for k in 0..3 {
             if let Some((_, length)) = self.periodic[k] {
                 // Positions are wrapped every step, so |d| < length and the nearest
-                // image is at most one period away; `round` (a libm call, 13 % of a
-                // 9000-sphere periodic run) is kept for the rare farther case.
-                if d[k].abs() > 0.5 * length {
-                    d[k] -= length * (d[k] / length).round();
+                // image is one period away: shifting by ±L is what d − L·round(d/L)
+                // gives there, without the libm call (a pair straddling a face pays
+                // it every step). `round` is kept for the rare farther case.
+                let half = 0.5 * length;
+                if d[k].abs() > half {
+                    d[k] -= length.copysign(d[k]);
+                    if d[k].abs() > half {
+                        d[k] -= length * (d[k] / length).round();
+                    }
                 }
             }
         }
@@ -69,6 +74,9 @@ mod tests {
         };
         let d = s.displacement(&Vec3::new(0.95, 0.0, 0.0), &Vec3::new(0.05, 0.0, 0.0));
         assert!((d[0] + 0.1).abs() < 1e-15);
+        // More than a period apart (unwrapped positions): still the nearest image.
+        let far = s.displacement(&Vec3::new(1.75, 0.0, 0.0), &Vec3::new(0.0, 0.0, 0.0));
+        assert!((far[0] + 0.25).abs() < 1e-15);
         let mut x = Vec3::new(-0.25, 7.0, 0.0);
         s.wrap(&mut x);
         assert!((x[0] - 0.75).abs() < 1e-15 && x[1] == 7.0);

@@ -87,11 +87,8 @@ proptest! {
     #![proptest_config(ProptestConfig::with_cases(300))]
     #[test]
     fn fast_detectors_match_brute_force(c in cloud()) {
-        let reference = brute::candidate_pairs(&c.position, &c.radius, c.margin, &c.space);
-        for detector in [Detector::Cells, Detector::Multigrid] {
-            let found = detector.candidate_pairs(&c.position, &c.radius, c.margin, &c.space);
-            prop_assert_eq!(&found, &reference, "{:?}", detector);
-        }
+        // proptest catches the assertion's panic and shrinks the cloud as usual.
+        assert_all_match(&c.position, &c.radius, c.margin, &c.space);
     }
 }
 

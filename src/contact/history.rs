@@ -35,11 +35,12 @@ pub struct ContactHistory {
 
 impl ContactHistory {
     /// Forget the tangential state (force, axis, branch, turning point) while the
-    /// bodies stay in contact; δ_max belongs to the normal law and is kept.
-    pub fn forget_tangential(&mut self, normal_force: f64) {
+    /// bodies stay in contact; δ_max and the previous normal force record the normal
+    /// force and are kept.
+    pub fn forget_tangential(&mut self) {
         *self = ContactHistory {
             max_overlap: self.max_overlap,
-            previous_normal_force: normal_force,
+            previous_normal_force: self.previous_normal_force,
             ..ContactHistory::default()
         };
     }

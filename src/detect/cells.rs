@@ -7,17 +7,9 @@
 //! `multigrid.rs`, removes that dependence). The grid itself is `grid.rs` with a
 //! single level.
 
-use super::grid::{self, Level};
+use super::grid::{self, Level, MAX_CELLS};
 use crate::particles::Vec3;
 use crate::space::Space;
-
-/// Cap on the number of cells so a sparse cloud in a large box cannot exhaust memory.
-pub(crate) const MAX_CELLS: usize = 1 << 22;
-
-/// Pairs in open space (no periodic axis); see [`candidate_pairs_in`].
-pub fn candidate_pairs(position: &[Vec3], radius: &[f64], margin: f64) -> Vec<(u32, u32)> {
-    candidate_pairs_in(position, radius, margin, &Space::open())
-}
 
 /// All pairs (i < j) whose surfaces are closer than `margin` through the nearest
 /// periodic image, in lexicographic order. Positions along a periodic axis are read

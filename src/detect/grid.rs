@@ -28,6 +28,10 @@
 use crate::particles::Vec3;
 use crate::space::Space;
 
+/// Cap on the number of cells of one search, so a sparse cloud in a large box
+/// cannot exhaust memory (levels coarsen instead; see [`Level::build`]).
+pub(crate) const MAX_CELLS: usize = 1 << 22;
+
 /// Relative widening of the search reach, so that rounding in `(x - lo) / edge`
 /// cannot leave out the cell of a partner at a distance a few ulp below the reach
 /// (the rounding is a few ulp of the coordinate; 1e-8 covers coordinates up to
@@ -185,31 +189,16 @@ impl Level {
             .map(|&i| flat([0, 1, 2].map(|k| axes[k].home(position[i as usize][k]))))
             .collect();
         let ncell = axes[0].dims * axes[1].dims * axes[2].dims;
-        let mut start = vec![0usize; ncell + 1];
-        for &c in &home {
-            start[c + 1] += 1;
-        }
-        for c in 0..ncell {
-            start[c + 1] += start[c];
-        }
-        let mut fill = start.clone();
-        let mut level = Level {
+        let (start, order) = counting_sort(&home, ncell);
+        let id: Vec<u32> = order.iter().map(|&m| members[m as usize]).collect();
+        Level {
             axes,
-            start: Vec::new(),
-            id: vec![0; members.len()],
-            centre: vec![Vec3::zeros(); members.len()],
-            radius: vec![0.0; members.len()],
+            start,
+            centre: id.iter().map(|&i| position[i as usize]).collect(),
+            radius: id.iter().map(|&i| radius[i as usize]).collect(),
+            id,
             r_max,
-        };
-        for (&i, &c) in members.iter().zip(&home) {
-            let slot = fill[c];
-            fill[c] += 1;
-            level.id[slot] = i;
-            level.centre[slot] = position[i as usize];
-            level.radius[slot] = radius[i as usize];
         }
-        level.start = start;
-        level
     }
 
     /// Call `visit` with the slot range of every cell overlapping the cube of
@@ -235,6 +224,26 @@ impl Level {
             }
         }
     }
+}
+
+/// Stable counting sort of the items `0..keys.len()` by their key (< `buckets`):
+/// returns `(start, order)`, where `order[start[b]..start[b + 1]]` are the items
+/// with key `b` in increasing order.
+pub(crate) fn counting_sort(keys: &[usize], buckets: usize) -> (Vec<usize>, Vec<u32>) {
+    let mut start = vec![0usize; buckets + 1];
+    for &b in keys {
+        start[b + 1] += 1;
+    }
+    for b in 0..buckets {
+        start[b + 1] += start[b];
+    }
+    let mut fill = start.clone();
+    let mut order = vec![0u32; keys.len()];
+    for (item, &b) in keys.iter().enumerate() {
+        order[fill[b]] = item as u32;
+        fill[b] += 1;
+    }
+    (start, order)
 }
 
 /// All pairs closer than `margin` between surfaces, from levels ordered fine to

@@ -21,8 +21,7 @@
 //! occupied levels from its own up — at most about log₂ of the size ratio — and in
 //! a dense packing each coarse cell holds O(1) particles of its level.
 
-use super::cells::MAX_CELLS;
-use super::grid::{self, Level};
+use super::grid::{self, Level, MAX_CELLS, counting_sort};
 use crate::particles::Vec3;
 use crate::space::Space;
 
@@ -60,21 +59,11 @@ pub fn candidate_pairs(
         })
         .collect();
 
-    // Counting sort of particle ids by class gives each level's members in id order.
-    let mut start = vec![0usize; MAX_CLASS + 2];
-    for &k in &class {
-        start[k + 1] += 1;
-    }
-    for k in 0..=MAX_CLASS {
-        start[k + 1] += start[k];
-    }
-    let mut fill = start.clone();
-    let mut member = vec![0u32; position.len()];
+    // Sorting the particle ids by class gives each level's members in id order.
+    let (start, member) = counting_sort(&class, MAX_CLASS + 1);
     let mut class_size = [0.0f64; MAX_CLASS + 1];
-    for (i, &k) in class.iter().enumerate() {
-        member[fill[k]] = i as u32;
-        fill[k] += 1;
-        class_size[k] = class_size[k].max(size[i]);
+    for (&k, &s) in class.iter().zip(&size) {
+        class_size[k] = class_size[k].max(s);
     }
 
     let occupied: Vec<usize> = (0..=MAX_CLASS)

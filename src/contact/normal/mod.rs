@@ -92,7 +92,8 @@ impl NormalLaw {
         }
     }
 
-    /// Force and stiffness at this step; updates δ_max for laws with memory.
+    /// Force and stiffness at this step; updates δ_max for laws with memory. Only the
+    /// rate-dependent laws differ from the stored state (`state`) of their contact.
     #[inline]
     pub fn response(
         &self,
@@ -102,25 +103,20 @@ impl NormalLaw {
         pair: &PairProperties,
         max_overlap: &mut f64,
     ) -> NormalResponse {
-        let e = pair.effective_modulus.unwrap_or(0.0);
         let (force, stiffness) = match *self {
-            NormalLaw::Linear { stiffness } => {
-                (linear::linear_force(stiffness, overlap), stiffness)
+            NormalLaw::KuwabaraKono { dissipation_time } => {
+                let e = pair.effective_modulus.unwrap_or(0.0);
+                (
+                    kuwabara_kono::kuwabara_kono_force(
+                        overlap,
+                        overlap_rate,
+                        effective_radius,
+                        e,
+                        dissipation_time,
+                    ),
+                    hertz::hertz_stiffness(overlap, effective_radius, e),
+                )
             }
-            NormalLaw::Hertz => (
-                hertz::hertz_force(overlap, effective_radius, e),
-                hertz::hertz_stiffness(overlap, effective_radius, e),
-            ),
-            NormalLaw::KuwabaraKono { dissipation_time } => (
-                kuwabara_kono::kuwabara_kono_force(
-                    overlap,
-                    overlap_rate,
-                    effective_radius,
-                    e,
-                    dissipation_time,
-                ),
-                hertz::hertz_stiffness(overlap, effective_radius, e),
-            ),
             NormalLaw::Hysteretic {
                 stiffness,
                 hysteresis,
@@ -132,12 +128,16 @@ impl NormalLaw {
                 *max_overlap = max_overlap.max(overlap);
                 self.state(overlap, effective_radius, pair, *max_overlap)
             }
+            NormalLaw::Linear { .. } | NormalLaw::Hertz => {
+                self.state(overlap, effective_radius, pair, *max_overlap)
+            }
         };
         NormalResponse { force, stiffness }
     }
 
     /// Force and stiffness of the stored state (no update); for rate-dependent laws
     /// the elastic part and the largest stiffness.
+    #[inline]
     fn state(
         &self,
         overlap: f64,
@@ -257,8 +257,7 @@ impl NormalLaw {
                 // With the Hertz cap the contact may load elastically all the way: take
                 // the Hertz impact stiffness too, whichever is larger.
                 let k_hertz = if min_with_hertz {
-                    let d = hertz::hertz_max_overlap(effective_mass, speed, effective_radius, e);
-                    hertz::hertz_stiffness(d, effective_radius, e)
+                    NormalLaw::Hertz.impact_stiffness(effective_mass, speed, effective_radius, pair)
                 } else {
                     0.0
                 };

@@ -17,10 +17,10 @@
 //! History: force vector, axis, branch k, turning point F^k, previous N.
 //! Stiffness for the time step: k₀ = 8 G* a (θ = 1, the largest).
 
-use super::incremental::cap_to_cone;
 use super::scalar_axis::{finish, split};
 use crate::contact::history::{ContactHistory, TangentialBranch};
 use crate::particles::Vec3;
+use std::ops::ControlFlow;
 
 #[inline]
 pub fn mindlin_deresiewicz_force(
@@ -36,12 +36,9 @@ pub fn mindlin_deresiewicz_force(
     let dn = n - history.previous_normal_force;
     history.previous_normal_force = n;
     let mu_n = friction * n;
-    if mu_n <= 0.0 {
-        history.forget_tangential(n);
-        return Vec3::zeros();
-    }
-    let Some(step) = split(history, normal, tangential_velocity, dt) else {
-        return cap_to_cone(history.tangential, friction, n);
+    let step = match split(history, normal, tangential_velocity, dt, mu_n) {
+        ControlFlow::Continue(step) => step,
+        ControlFlow::Break(force) => return force,
     };
     let f = step.force_along;
     use TangentialBranch::*;

@@ -16,6 +16,7 @@ use super::cundall_strack::rotate_into_plane;
 use super::incremental::cap_to_cone;
 use crate::contact::history::{ContactHistory, TangentialBranch};
 use crate::particles::Vec3;
+use std::ops::ControlFlow;
 
 /// Displacement increment split on the axis: (ê, along, across).
 pub struct AxisIncrement {
@@ -26,26 +27,33 @@ pub struct AxisIncrement {
 }
 
 /// Rotate the stored force and axis into the current plane and split the increment
-/// the force follows (−v_t Δt). Returns `None` when there is neither a force nor a
-/// displacement to define an axis.
+/// the force follows (−v_t Δt) on the axis. `Break` is a force to return at once:
+/// zero, with the tangential state forgotten, when there is no friction cone
+/// (`limit` = μN ≤ 0); the stored force on the cone when there is neither a force
+/// nor a displacement to define an axis.
 pub fn split(
     history: &mut ContactHistory,
     normal: &Vec3,
     tangential_velocity: &Vec3,
     dt: f64,
-) -> Option<AxisIncrement> {
+    limit: f64,
+) -> ControlFlow<Vec3, AxisIncrement> {
+    if limit <= 0.0 {
+        history.forget_tangential();
+        return ControlFlow::Break(Vec3::zeros());
+    }
     history.tangential = rotate_into_plane(history.tangential, normal);
     let increment = -tangential_velocity * dt;
     let mut axis = rotate_into_plane(history.axis, normal);
     if axis.norm_squared() == 0.0 {
         let n = increment.norm();
         if n == 0.0 {
-            return None;
+            return ControlFlow::Break(cap_to_cone(history.tangential, 1.0, limit));
         }
         axis = increment / n;
     }
     let along = increment.dot(&axis);
-    Some(AxisIncrement {
+    ControlFlow::Continue(AxisIncrement {
         axis,
         force_along: history.tangential.dot(&axis),
         along,

@@ -12,10 +12,10 @@
 //! neglected in the stiffness, as the model assumes. |F| ≤ μN.
 //! History: force vector, axis, direction, F*. Stiffness for the time step: k₀.
 
-use super::incremental::cap_to_cone;
 use super::scalar_axis::{finish, split};
 use crate::contact::history::{ContactHistory, TangentialBranch};
 use crate::particles::Vec3;
+use std::ops::ControlFlow;
 
 #[inline]
 pub fn walton_braun_tangential_force(
@@ -28,12 +28,9 @@ pub fn walton_braun_tangential_force(
     normal_force: f64,
 ) -> Vec3 {
     let mu_n = friction * normal_force.max(0.0);
-    if mu_n <= 0.0 {
-        history.forget_tangential(0.0);
-        return Vec3::zeros();
-    }
-    let Some(step) = split(history, normal, tangential_velocity, dt) else {
-        return cap_to_cone(history.tangential, friction, normal_force);
+    let step = match split(history, normal, tangential_velocity, dt, mu_n) {
+        ControlFlow::Continue(step) => step,
+        ControlFlow::Break(force) => return force,
     };
     let f = step.force_along;
     let was_increasing = history.branch != TangentialBranch::Unloading;
