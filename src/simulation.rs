@@ -227,7 +227,7 @@ impl Simulation {
 
     /// Attach a growth stage to a simulation built with its particles at the starting
     /// size; `target_radius` are the final radii.
-    pub fn set_growth(&mut self, growth: Growth, target_radius: Vec<f64>) -> Result<()> {
+    pub fn set_growth(&mut self, growth: Growth, target_radius: Vec<f64>) {
         self.growth = Some(growth);
         self.target_radius = target_radius;
         // The forces of `new` included the weights, which wait for the end of growth:
@@ -236,7 +236,6 @@ impl Simulation {
             add_weights(&mut self.particles, -g);
         }
         self.restart_energy_book();
-        Ok(())
     }
 
     /// Radius particle i has at the end of any growth stage.
@@ -280,7 +279,7 @@ impl Simulation {
                     .pending_radius
                     .get_or_insert_with(|| src.radius.sample(&mut src.rng));
                 let walls = &self.walls;
-                let clear = |x: &Vec3, r: f64| walls.iter().all(|w| w.deepest_overlap(x, r) <= 0.0);
+                let clear = |x: &Vec3, r: f64| Boundary::clear_of_all(walls, x, r);
                 let p = &self.particles;
                 let Some(x) = rsi::place(
                     r,
@@ -446,7 +445,9 @@ impl Simulation {
                     continue;
                 }
                 // Histories of the facets touched last step, carried to this step's
-                // contacts; both buffers keep their capacity, so no step allocates.
+                // contacts; both buffers keep their capacity, so the walls' loop allocates
+                // nothing of its own (revolved and mesh shapes still gather their
+                // candidate parts in a fresh Vec for each sphere that touches them).
                 if HIST {
                     previous.clear();
                     previous.extend_from_slice(&self.wall_history[w][i]);

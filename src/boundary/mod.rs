@@ -66,6 +66,13 @@ impl Boundary {
             .fold(f64::NEG_INFINITY, f64::max)
     }
 
+    /// Whether a sphere touches none of `walls`: where insertion may put it.
+    pub fn clear_of_all(walls: &[Boundary], centre: &Vec3, radius: f64) -> bool {
+        walls
+            .iter()
+            .all(|w| w.deepest_overlap(centre, radius) <= 0.0)
+    }
+
     /// Move over the step [t, t + dt]; `force_on_boundary` is the force the particles
     /// exerted at t (what a servo reacts to). Fails when a displacement expression
     /// stops being finite (the other motions cannot).

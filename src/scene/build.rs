@@ -346,7 +346,7 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
             duration: g.duration,
             initial_fraction: g.initial_fraction,
         };
-        sim.set_growth(growth, target_radius)?;
+        sim.set_growth(growth, target_radius);
     }
     let ts = &scene.time_step;
     let dt_estimate = sim
@@ -457,7 +457,7 @@ fn insert_random(
 ) -> Result<()> {
     let region = insertion_box(&ins.region);
     let law = ins.radius.distribution();
-    let clear = |x: &Vec3, r: f64| walls.iter().all(|w| w.deepest_overlap(x, r) <= 0.0);
+    let clear = |x: &Vec3, r: f64| Boundary::clear_of_all(walls, x, r);
     for placed in 0..ins.count {
         let r = law.sample(rng);
         let position = rsi::place(

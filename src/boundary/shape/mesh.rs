@@ -353,27 +353,6 @@ impl Mesh {
         Self::from_height_grid(x.0, y.0, dx, dy, nx, ny, &z)
     }
 
-    /// The same mesh scaled by `scale` about the origin, then moved by `offset`
-    /// (an STL in millimetres becomes metres with scale 1e-3).
-    pub fn transformed(&self, scale: f64, offset: Vec3) -> Result<Mesh> {
-        if !(scale > 0.0 && scale.is_finite()) {
-            return Err(TampError::input(
-                "scale",
-                format!("must be positive (got {scale})"),
-            ));
-        }
-        let triangles = self
-            .triangles
-            .iter()
-            .enumerate()
-            .map(|(k, t)| {
-                Triangle::new(t.vertices.map(|v| v * scale + offset))
-                    .ok_or_else(|| triangle_error(k, "became degenerate when scaled"))
-            })
-            .collect::<Result<Vec<_>>>()?;
-        Self::build(triangles, self.skipped)
-    }
-
     pub fn triangles(&self) -> &[Triangle] {
         &self.triangles
     }
@@ -797,16 +776,6 @@ mod tests {
         ]])
         .unwrap();
         assert_eq!(m.len(), 2);
-    }
-
-    #[test]
-    fn transformed_scales_and_moves() {
-        let m = cube().transformed(2.0, v(1.0, 0.0, 0.0)).unwrap();
-        let (lo, hi) = m.bounding_box();
-        assert_eq!((lo, hi), (v(1.0, 0.0, 0.0), v(3.0, 2.0, 2.0)));
-        let out = query(&m, v(2.0, 1.0, 1.95), 0.1, 0.0);
-        assert_eq!(out.len(), 1);
-        assert!((out[0].overlap - 0.05).abs() < 1e-14);
     }
 
     #[test]
