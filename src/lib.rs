@@ -2,6 +2,7 @@
 //! powder packing and cold die compaction. See README.md and docs/architecture.md.
 
 pub mod boundary;
+pub mod compare;
 pub mod contact;
 pub mod detect;
 pub mod error;
@@ -9,6 +10,7 @@ pub mod expression;
 pub mod generate;
 pub mod growth;
 pub mod integrate;
+pub mod liggghts;
 pub mod material;
 pub mod measure;
 pub mod output;

@@ -43,6 +43,45 @@ enum Command {
         #[arg(long, default_value = "report")]
         report: PathBuf,
     },
+    /// Write a LIGGGHTS 3.8 deck (in.tamp, particles.data, meshes) for SCENE into DIR.
+    ExportLiggghts {
+        scene: PathBuf,
+        #[arg(long)]
+        out: PathBuf,
+        /// Steps between frames of dump.liggghts (default: the scene's series_every,
+        /// else about 100 frames); the final state always goes to final.liggghts.
+        #[arg(long)]
+        dump_every: Option<u64>,
+    },
+    /// Convert a LIGGGHTS dump to trajectory.csv and measure its last frame
+    /// (quantities.csv) in DIR.
+    ImportLiggghtsDump {
+        file: PathBuf,
+        #[arg(long)]
+        out: PathBuf,
+        /// Height of the floor under the bed, m (default: the box's lower z bound).
+        #[arg(long)]
+        floor: Option<f64>,
+    },
+    /// Compare run A with the reference run B (layout: docs/compare.md); exit 1
+    /// beyond tolerance.
+    Compare {
+        a: PathBuf,
+        b: PathBuf,
+        /// CSV `item,tolerance,kind` overriding the defaults.
+        #[arg(long)]
+        tolerances: Option<PathBuf>,
+    },
+    /// Run the LIGGGHTS cross-check cases against the recorded LIGGGHTS results, or
+    /// against LIGGGHTS run now (--live).
+    Crosscheck {
+        #[arg(long)]
+        live: bool,
+        #[arg(long, value_enum, default_value_t = Tier::Quick)]
+        tier: Tier,
+        #[arg(long, default_value = "report")]
+        report: PathBuf,
+    },
 }
 
 fn main() -> ExitCode {
@@ -64,6 +103,40 @@ fn main() -> ExitCode {
             json,
             report,
         } => verify::run_cli(tier, &cases, json.as_deref(), &report),
+        Command::ExportLiggghts {
+            scene,
+            out,
+            dump_every,
+        } => tamp::liggghts::export::export_file(&scene, &out, dump_every).map(|x| {
+            for note in &x.notes {
+                eprintln!("note: {note}");
+            }
+            println!(
+                "exported {} particles, {} steps of {:e} s to {} ({}); run: cd {} && liggghts -in in.tamp",
+                x.particles,
+                x.steps,
+                x.dt,
+                out.display(),
+                x.files.join(", "),
+                out.display()
+            );
+            0
+        }),
+        Command::ImportLiggghtsDump { file, out, floor } => {
+            tamp::liggghts::import::run_cli(&file, &out, floor).map(|q| {
+                for (name, value) in q {
+                    println!("{name} = {value:e}");
+                }
+                println!("wrote {}/trajectory.csv and quantities.csv", out.display());
+                0
+            })
+        }
+        Command::Compare { a, b, tolerances } => {
+            tamp::compare::run_cli(&a, &b, tolerances.as_deref())
+        }
+        Command::Crosscheck { live, tier, report } => {
+            tamp::liggghts::crosscheck::run_cli(live, tier, &report)
+        }
     };
     match result {
         Ok(code) => ExitCode::from(code),

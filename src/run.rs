@@ -27,6 +27,27 @@ pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool) -> Result<Summa
         output::create_dir(&vtk_dir)?;
         output::vtk::remove_frames(&vtk_dir)?;
     }
+    let trajectory_every = scene.output.trajectory_every;
+    let mut trajectory = String::new();
+    let record_trajectory = |sim: &crate::simulation::Simulation, out: &mut String| {
+        let p = &sim.particles;
+        for i in 0..p.len() {
+            crate::compare::trajectory_row(
+                out,
+                sim.step,
+                i as u64 + 1,
+                p.radius[i],
+                &p.position[i],
+                &p.velocity[i],
+                &p.omega[i],
+            );
+        }
+    };
+    if trajectory_every > 0 {
+        trajectory.push_str(crate::compare::TRAJECTORY_HEADER);
+        trajectory.push('\n');
+        record_trajectory(&sim, &mut trajectory);
+    }
     let mut frames = 0usize;
     let mut write_frame = |sim: &crate::simulation::Simulation| -> Result<()> {
         let path = vtk_dir.join(format!("frame_{frames:06}.vtk"));
@@ -51,6 +72,9 @@ pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool) -> Result<Summa
         if sim.step % every == 0 {
             series.record(&sim);
         }
+        if trajectory_every > 0 && (sim.step % trajectory_every == 0 || sim.step == built.steps) {
+            record_trajectory(&sim, &mut trajectory);
+        }
         if scene.output.vtk_every > 0 && sim.step % scene.output.vtk_every == 0 {
             write_frame(&sim)?;
         }
@@ -71,5 +95,12 @@ pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool) -> Result<Summa
     output::write_atomic(&out_dir.join("series.csv"), &series.to_csv()?)?;
     let json = serde_json::to_vec_pretty(&summary).expect("summary serialises");
     output::write_atomic(&out_dir.join("summary.json"), &json)?;
+    output::write_atomic(
+        &out_dir.join("quantities.csv"),
+        crate::compare::quantities_csv(&summary.quantities()).as_bytes(),
+    )?;
+    if trajectory_every > 0 {
+        output::write_atomic(&out_dir.join("trajectory.csv"), trajectory.as_bytes())?;
+    }
     Ok(summary)
 }

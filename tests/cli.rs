@@ -165,3 +165,98 @@ fn every_verification_scene_parses() {
         }
     }
 }
+
+#[test]
+fn export_liggghts_refuses_what_liggghts_cannot_express_naming_every_field() {
+    let mut scene = base();
+    scene["contact"]["normal"] =
+        json!({"law": "walton_braun", "loading_stiffness": 1e3, "unloading_stiffness": 2e3});
+    scene["contact"]["cohesion"] =
+        json!({"law": "van_der_waals", "hamaker": 1e-19, "min_separation": 4e-10, "cutoff": 1e-6});
+    scene["growth"] = json!({"duration": 0.01, "initial_fraction": 0.5});
+    let (_dir, path, out) = scene_in_tempdir(&scene);
+    let o = tamp(&[
+        "export-liggghts",
+        path.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    for field in [
+        "contact.normal.law",
+        "contact.tangential.law",
+        "contact.cohesion",
+        "growth",
+    ] {
+        assert!(
+            err.contains(&format!("{field}: cannot export to LIGGGHTS 3.8")),
+            "{field}: {err}"
+        );
+    }
+    assert!(
+        !out.join("in.tamp").exists(),
+        "a refused export writes nothing"
+    );
+}
+
+#[test]
+fn export_liggghts_writes_a_deck_with_the_same_particles() {
+    let mut scene = base();
+    scene["contact"] = json!({"normal": {"law": "hertz"},
+        "damping": {"kind": "liggghts_restitution", "restitution": 0.5}});
+    let (_dir, path, out) = scene_in_tempdir(&scene);
+    let o = tamp(&[
+        "export-liggghts",
+        path.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let deck = std::fs::read_to_string(out.join("in.tamp")).unwrap();
+    for line in [
+        "read_data    particles.data",
+        "pair_style   gran model hertz tangential history",
+        "coefficientRestitution peratomtypepair 1 5e-1",
+        "fix          integr all nve/sphere",
+        "write_dump   all custom final.liggghts",
+    ] {
+        assert!(deck.contains(line), "missing '{line}' in\n{deck}");
+    }
+    let data = std::fs::read_to_string(out.join("particles.data")).unwrap();
+    let n = scene["particles"].as_array().map_or(0, Vec::len);
+    assert!(data.contains(&format!("\n{n} atoms\n")), "{data}");
+}
+
+#[test]
+fn compare_exits_1_beyond_tolerance_and_0_within() {
+    let dir = tempfile::tempdir().unwrap();
+    let write = |name: &str, text: &str| {
+        let p = dir.path().join(name);
+        std::fs::write(&p, text).unwrap();
+        p
+    };
+    let a = write("a.csv", "quantity,value\npacking_fraction,0.640\n");
+    let b = write("b.csv", "quantity,value\npacking_fraction,0.637\n");
+    let tol = write(
+        "tol.csv",
+        "item,tolerance,kind\npacking_fraction,0.005,absolute\n",
+    );
+    let (a, b, tol) = (
+        a.to_str().unwrap(),
+        b.to_str().unwrap(),
+        tol.to_str().unwrap(),
+    );
+    assert_eq!(tamp(&["compare", a, b]).status.code(), Some(1));
+    let o = tamp(&["compare", a, b, "--tolerances", tol]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stdout)
+    );
+    let bad = write("bad.csv", "quantity,value\npacking_fraction,lots\n");
+    let o = tamp(&["compare", bad.to_str().unwrap(), b]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("'lots' is not a number"));
+}

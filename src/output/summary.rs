@@ -62,4 +62,29 @@ impl Summary {
             warnings,
         }
     }
+
+    /// The scalar results as `quantities.csv` rows (docs/compare.md).
+    pub fn quantities(&self) -> Vec<(String, f64)> {
+        let mut q: Vec<(String, f64)> = [
+            ("particles", self.particles as f64),
+            ("time", self.time),
+            ("steps", self.steps as f64),
+            ("kinetic_energy", self.kinetic_energy),
+            ("rotational_energy", self.rotational_energy),
+            ("stored_energy", self.stored_energy),
+            ("external_work", self.external_work),
+            ("dissipated_energy", self.dissipated_energy),
+            ("contact_count", self.contact_count as f64),
+            ("max_overlap_ratio", self.max_overlap_ratio),
+        ]
+        .into_iter()
+        .map(|(k, v)| (k.to_string(), v))
+        .collect();
+        for w in &self.wall_forces {
+            for (axis, f) in ["x", "y", "z"].iter().zip(w.force) {
+                q.push((format!("wall_force_{}_{axis}", w.wall), f));
+            }
+        }
+        q
+    }
 }

@@ -477,4 +477,8 @@ pub struct OutputSpec {
     /// Steps between VTK frames; 0 writes none.
     #[serde(default)]
     pub vtk_every: u64,
+    /// Steps between rows of trajectory.csv (every particle; docs/compare.md); 0
+    /// writes none. The last step is always written when this is set.
+    #[serde(default)]
+    pub trajectory_every: u64,
 }

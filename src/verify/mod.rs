@@ -80,12 +80,17 @@ pub struct CaseContext<'a> {
     pub dir: PathBuf,
     /// Where a case may write extra artefacts (CSV curves, plots).
     pub report_dir: PathBuf,
+    /// Replaces `reference_data/` (the live cross-check points it at fresh LIGGGHTS runs).
+    pub reference_data: Option<PathBuf>,
 }
 
 impl CaseContext<'_> {
     /// `reference_data/` beside the verification directory: results recorded by
     /// other codes (LIGGGHTS), with their decks, logs and provenance.
     pub fn reference_data_dir(&self) -> PathBuf {
+        if let Some(dir) = &self.reference_data {
+            return dir.clone();
+        }
         self.dir
             .parent()
             .unwrap_or(&self.dir)
@@ -205,12 +210,18 @@ fn judge(spec: &QuantitySpec, m: &Measured) -> QuantityResult {
     }
 }
 
-pub fn run_case(spec: &CaseSpec, dir: &Path, report_dir: &Path) -> CaseResult {
+pub fn run_case(
+    spec: &CaseSpec,
+    dir: &Path,
+    report_dir: &Path,
+    reference_data: Option<&Path>,
+) -> CaseResult {
     let started = Instant::now();
     let ctx = CaseContext {
         spec,
         dir: dir.to_path_buf(),
         report_dir: report_dir.to_path_buf(),
+        reference_data: reference_data.map(Path::to_path_buf),
     };
     let outcome = match cases::find(&spec.name) {
         Some(f) => f(&ctx),
@@ -263,6 +274,17 @@ pub fn run_case(spec: &CaseSpec, dir: &Path, report_dir: &Path) -> CaseResult {
 
 /// `tamp verify`: returns the exit code (0 all pass, 1 otherwise).
 pub fn run_cli(tier: Tier, names: &[String], json: Option<&Path>, report_dir: &Path) -> Result<u8> {
+    run_cases(tier, names, json, report_dir, None)
+}
+
+/// `run_cli` with `reference_data/` replaced by `reference_data` when given.
+pub fn run_cases(
+    tier: Tier,
+    names: &[String],
+    json: Option<&Path>,
+    report_dir: &Path,
+    reference_data: Option<&Path>,
+) -> Result<u8> {
     let dir = verification_dir();
     let specs = load_specs(&dir)?;
     for n in names {
@@ -284,7 +306,7 @@ pub fn run_cli(tier: Tier, names: &[String], json: Option<&Path>, report_dir: &P
     let mut results = Vec::new();
     for spec in selected {
         eprint!("{:<32} ", spec.name);
-        let r = run_case(spec, &dir, report_dir);
+        let r = run_case(spec, &dir, report_dir, reference_data);
         eprintln!(
             "{:?} ({:.2} s){}",
             r.status,

@@ -1,0 +1,170 @@
+//! `tamp crosscheck [--live] [--tier quick|full]`: the LIGGGHTS cross-check cases
+//! (the verification cases named `liggghts_*`).
+//!
+//! Without `--live` they run against the results recorded in
+//! `reference_data/liggghts/<case>/`, exactly as `tamp verify` runs them. With
+//! `--live`, LIGGGHTS is run now: each case directory holds `regenerate.sh OUTDIR`,
+//! which exports or uses the deck, runs `liggghts` and writes `results.csv` to OUTDIR.
+//! Two checks follow, so that the recorded data cannot drift from what LIGGGHTS
+//! really does:
+//! 1. every CSV file recorded for the case (`results.csv`, `trajectory.csv`) comes
+//!    out of the fresh run equal to the recorded one (every number to 1e-9
+//!    relative: the same deck on the same LIGGGHTS version is deterministic, and
+//!    1e-9 only leaves room for another machine's libm);
+//! 2. the case passes against the fresh results.
+
+use crate::error::{Result, TampError};
+use crate::verify::{self, Tier};
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// Numbers in the fresh and the recorded results must agree to this (relative).
+pub const DRIFT_TOLERANCE: f64 = 1e-9;
+
+fn reference_root() -> PathBuf {
+    verify::verification_dir()
+        .parent()
+        .map(Path::to_path_buf)
+        .unwrap_or_default()
+        .join("reference_data")
+}
+
+/// Whether an executable `name` is on PATH.
+pub fn on_path(name: &str) -> bool {
+    std::env::var_os("PATH")
+        .is_some_and(|paths| std::env::split_paths(&paths).any(|dir| dir.join(name).is_file()))
+}
+
+/// The largest relative difference between the numeric cells of two CSV files with
+/// the same header and rows, or why they cannot be compared.
+pub fn csv_drift(fresh: &Path, recorded: &Path) -> Result<f64> {
+    let read = |p: &Path| -> Result<Vec<Vec<String>>> {
+        let mut r = csv::Reader::from_path(p)
+            .map_err(|e| TampError::Other(format!("{}: {e}", p.display())))?;
+        let mut rows = vec![
+            r.headers()
+                .map_err(|e| TampError::Other(e.to_string()))?
+                .iter()
+                .map(String::from)
+                .collect(),
+        ];
+        for rec in r.records() {
+            let rec = rec.map_err(|e| TampError::Other(format!("{}: {e}", p.display())))?;
+            rows.push(rec.iter().map(String::from).collect());
+        }
+        Ok(rows)
+    };
+    let (a, b) = (read(fresh)?, read(recorded)?);
+    if a.len() != b.len() || a[0] != b[0] {
+        return Err(TampError::Other(format!(
+            "{} and {} differ in header or row count",
+            fresh.display(),
+            recorded.display()
+        )));
+    }
+    let mut worst: f64 = 0.0;
+    for (ra, rb) in a.iter().zip(&b).skip(1) {
+        for (x, y) in ra.iter().zip(rb) {
+            match (x.parse::<f64>(), y.parse::<f64>()) {
+                (Ok(u), Ok(v)) if u != v => {
+                    worst = worst.max((u - v).abs() / v.abs().max(f64::MIN_POSITIVE));
+                }
+                (Ok(_), Ok(_)) => {}
+                _ if x == y => {}
+                _ => {
+                    return Err(TampError::Other(format!(
+                        "{}: '{x}' where the recorded results have '{y}'",
+                        fresh.display()
+                    )));
+                }
+            }
+        }
+    }
+    Ok(worst)
+}
+
+/// The CSV files recorded for a case (results.csv, trajectory.csv, ...), sorted.
+fn recorded_csv_files(dir: &Path) -> Result<Vec<std::ffi::OsString>> {
+    let mut files: Vec<std::ffi::OsString> = std::fs::read_dir(dir)
+        .map_err(|e| TampError::io(format!("reading {}", dir.display()), e))?
+        .filter_map(|e| e.ok())
+        .map(|e| e.file_name())
+        .filter(|n| n.to_string_lossy().ends_with(".csv"))
+        .collect();
+    files.sort();
+    Ok(files)
+}
+
+pub fn run_cli(live: bool, tier: Tier, report_dir: &Path) -> Result<u8> {
+    let specs = verify::load_specs(&verify::verification_dir())?;
+    let names: Vec<String> = specs
+        .iter()
+        .filter(|s| {
+            s.name.starts_with("liggghts_") && (tier == Tier::Full || s.tier == Tier::Quick)
+        })
+        .map(|s| s.name.clone())
+        .collect();
+    if !live {
+        return verify::run_cases(tier, &names, None, report_dir, None);
+    }
+    if !on_path("liggghts") {
+        return Err(TampError::input(
+            "--live",
+            "needs the LIGGGHTS executable 'liggghts' on PATH (apt-get install -y liggghts)",
+        ));
+    }
+    let recorded_root = reference_root();
+    let live_root = std::path::absolute(report_dir.join("liggghts_live"))
+        .map_err(|e| TampError::io("resolving the report directory", e))?;
+    let tamp =
+        std::env::current_exe().map_err(|e| TampError::io("locating the tamp executable", e))?;
+    let mut drifted = 0;
+    for name in &names {
+        let recorded = recorded_root.join("liggghts").join(name);
+        let script = recorded.join("regenerate.sh");
+        if !script.is_file() {
+            return Err(TampError::Other(format!(
+                "{}: missing; every cross-check case needs one",
+                script.display()
+            )));
+        }
+        let out = live_root.join("liggghts").join(name);
+        crate::output::create_dir(&out)?;
+        eprintln!("{name}: running LIGGGHTS ({})", script.display());
+        let status = Command::new("bash")
+            .arg(&script)
+            .arg(&out)
+            .env("TAMP", &tamp)
+            .current_dir(&recorded)
+            .status()
+            .map_err(|e| TampError::io(format!("running {}", script.display()), e))?;
+        if !status.success() {
+            return Err(TampError::Other(format!(
+                "{} failed ({status}); its LIGGGHTS logs are in {}",
+                script.display(),
+                out.display()
+            )));
+        }
+        let mut drift: f64 = 0.0;
+        for file in recorded_csv_files(&recorded)? {
+            drift = drift.max(csv_drift(&out.join(&file), &recorded.join(&file))?);
+        }
+        let verdict = if drift <= DRIFT_TOLERANCE {
+            "same"
+        } else {
+            drifted += 1;
+            "DRIFTED"
+        };
+        eprintln!(
+            "{name}: fresh LIGGGHTS results vs recorded: largest relative difference {drift:e} ({verdict}, tolerance {DRIFT_TOLERANCE:e})"
+        );
+    }
+    let code = verify::run_cases(tier, &names, None, report_dir, Some(&live_root))?;
+    if drifted > 0 {
+        eprintln!(
+            "{drifted} case(s) drifted from the recorded LIGGGHTS results: re-record them (regenerate.sh) and say why"
+        );
+        return Ok(1);
+    }
+    Ok(code)
+}

@@ -1,0 +1,775 @@
+//! `tamp export-liggghts SCENE --out DIR`: the same scene as a LIGGGHTS-PUBLIC 3.8
+//! deck, or a refusal listing every field LIGGGHTS cannot express (exit 2).
+//!
+//! What the deck holds, and why it is written this way:
+//! - The particles as tamp placed them at t = 0 (`particles.data`, read with
+//!   `read_data`): tamp's seeded insertion and deposition run first, so both codes
+//!   start from the same state. LIGGGHTS's own insertion would draw other positions.
+//! - One atom type per tamp material (type k + 1 = `materials[k]`); a wall's type is
+//!   its material's, so LIGGGHTS mixes E*, G* and μ for walls as tamp does.
+//! - `model hertz` for `hertz`; `model hooke` for `linear` with a restitution-based
+//!   damping, `characteristicVelocity` chosen so that LIGGGHTS's k_n equals tamp's k
+//!   (refused when the k_n LIGGGHTS derives per contact kind differs: it depends on
+//!   m*, R*); `model hooke/stiffness absolute_damping on` for `linear` with a
+//!   constant γ_n. The damping is LIGGGHTS's `coefficientRestitution` e, obtained
+//!   from tamp's ξ by inverting the mapping of contact/damping/liggghts.rs.
+//! - `tangential history` for tamp's `liggghts_history`; no friction is
+//!   `coefficientFriction 0`, which makes the history force exactly zero.
+//! - Axis-aligned planes, box faces and axis-aligned cylinders as LIGGGHTS primitive
+//!   walls (two-sided and infinite in LIGGGHTS: the same as tamp's one-sided, finite
+//!   ones as long as the particles stay inside); every other boundary, and every
+//!   moving one, as an ASCII STL mesh (`meshes/`), moved by `fix move/mesh`.
+//! - `hard_particles yes` when some E > 1e9 Pa and `soft_particles yes` when some
+//!   E < 5e6 Pa: LIGGGHTS 3.8 refuses such moduli in SI units otherwise.
+//! - Dumps at `%.17g` so that trajectories compare to the last bit: every
+//!   `dump_every` steps to `dump.liggghts`, and the final state to `final.liggghts`.
+
+use crate::boundary::shape::{Revolved, Shape, Triangle};
+use crate::contact::damping::liggghts::{SQRT_FIVE_SIXTHS, hooke_stiffness};
+use crate::error::{Result, TampError};
+use crate::material::{effective_mass, effective_modulus, effective_radius};
+use crate::particles::Vec3;
+use crate::scene::schema::{DampingSpec, NormalSpec};
+use crate::scene::walls::MotionSpec;
+use crate::scene::{self, Scene};
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// Columns of every dump the deck writes (`dump::Frame` reads them back).
+pub const DUMP_COLUMNS: &str = "id type radius mass x y z vx vy vz omegax omegay omegaz fx fy fz";
+
+/// Facets around a revolved boundary written as STL (cone, funnel, tilted cylinder).
+const REVOLVED_SEGMENTS: usize = 96;
+
+/// What an export wrote.
+#[derive(Debug)]
+pub struct Exported {
+    pub particles: usize,
+    pub steps: u64,
+    pub dt: f64,
+    pub files: Vec<String>,
+    /// Differences the deck cannot avoid (printed, and written into the deck).
+    pub notes: Vec<String>,
+}
+
+/// The contact model line and its material properties.
+struct ContactModel {
+    pair_style: String,
+    properties: Vec<String>,
+}
+
+/// e for LIGGGHTS from a β ≤ 0: inverts β = ln e / √(ln²e + π²).
+fn restitution_from_beta(beta: f64) -> f64 {
+    (beta * std::f64::consts::PI / (1.0 - beta * beta).sqrt()).exp()
+}
+
+/// LIGGGHTS's restitution for the scene's damping, or why there is none.
+fn restitution(scene: &Scene) -> std::result::Result<f64, (String, String)> {
+    let hertz = matches!(scene.contact.normal, NormalSpec::Hertz {});
+    let e = match &scene.contact.damping {
+        None => 1.0,
+        Some(DampingSpec::LiggghtsRestitution { restitution }) => *restitution,
+        Some(DampingSpec::CriticalFraction { xi }) => {
+            // ξ = −√(5/6) β for hertz, −β for linear (contact/damping/liggghts.rs).
+            let beta = if hertz { -xi / SQRT_FIVE_SIXTHS } else { -xi };
+            if beta <= -1.0 {
+                return Err((
+                    "contact.damping.xi".into(),
+                    format!(
+                        "{xi} is beyond what a LIGGGHTS restitution coefficient can express (ξ < {} for this law)",
+                        if hertz { SQRT_FIVE_SIXTHS } else { 1.0 }
+                    ),
+                ));
+            }
+            restitution_from_beta(beta)
+        }
+        Some(DampingSpec::Constant { .. }) => unreachable!("handled by the caller"),
+    };
+    if !(e > 0.05 && e <= 1.0) {
+        return Err((
+            "contact.damping".into(),
+            format!("gives restitution {e}, outside LIGGGHTS's 0.05 < e <= 1"),
+        ));
+    }
+    Ok(e)
+}
+
+/// Every field of `scene` LIGGGHTS 3.8 cannot express, as (path, reason).
+pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
+    let mut out: Vec<(String, String)> = Vec::new();
+    let mut refuse = |path: &str, why: &str| out.push((path.to_string(), why.to_string()));
+    match &scene.contact.normal {
+        NormalSpec::Hertz {} | NormalSpec::Linear { .. } => {}
+        other => refuse(
+            "contact.normal.law",
+            &format!(
+                "LIGGGHTS 3.8 has no counterpart of '{}' (exportable: hertz → model hertz, linear → model hooke)",
+                other.law()
+            ),
+        ),
+    }
+    match (&scene.contact.normal, &scene.contact.damping) {
+        (NormalSpec::Hertz {}, Some(DampingSpec::Constant { .. })) => refuse(
+            "contact.damping.kind",
+            "a constant gamma_n has no LIGGGHTS form with model hertz (use liggghts_restitution or critical_fraction)",
+        ),
+        (NormalSpec::Linear { .. }, Some(DampingSpec::Constant { .. }))
+            if scene.contact.tangential.is_some() =>
+        {
+            refuse(
+                "contact.tangential",
+                "a constant gamma_n exports as model hooke/stiffness, which tamp exports only without friction",
+            )
+        }
+        (_, Some(DampingSpec::Constant { .. })) | (_, None) => {}
+        _ => {
+            if let Err((path, why)) = restitution(scene) {
+                refuse(&path, &why);
+            }
+        }
+    }
+    if let Some(t) = &scene.contact.tangential {
+        // By name: the law lives in contact/tangential/liggghts_history.rs.
+        if t.law.name() != "liggghts_history" {
+            refuse(
+                "contact.tangential.law",
+                &format!(
+                    "'{}' is not LIGGGHTS's tangential model; 'liggghts_history' is (tangential history)",
+                    t.law.name()
+                ),
+            );
+        }
+        match &scene.rotation {
+            None => refuse(
+                "rotation",
+                "LIGGGHTS's fix nve/sphere always integrates rotation: a scene with friction must enable rotation",
+            ),
+            Some(r) if r.inertia_scale != 1.0 => refuse(
+                "rotation.inertia_scale",
+                "LIGGGHTS uses the moment of inertia of a solid sphere (scale 1)",
+            ),
+            _ => {}
+        }
+    }
+    if scene.contact.cohesion.is_some() {
+        refuse(
+            "contact.cohesion",
+            "LIGGGHTS 3.8 has no van der Waals (Hamaker) cohesion model",
+        );
+    }
+    if scene.growth.is_some() {
+        refuse(
+            "growth",
+            "LIGGGHTS has no radius growth stage; export the grown state instead",
+        );
+    }
+    for (k, ins) in scene.insert.iter().enumerate() {
+        if ins.schedule.is_some() {
+            refuse(
+                &format!("insert[{k}].schedule"),
+                "LIGGGHTS pours with its own random placement; export scenes whose particles are all placed at t = 0",
+            );
+        }
+    }
+    for (k, p) in scene.particles.iter().enumerate() {
+        if p.prescribed_velocity.is_some() {
+            refuse(
+                &format!("particles[{k}].prescribed_velocity"),
+                "not exported (LIGGGHTS would need a separate fix for each driven particle)",
+            );
+        }
+    }
+    for (k, m) in scene.materials.iter().enumerate() {
+        if m.youngs_modulus.is_none() {
+            refuse(
+                &format!("materials[{k}].youngs_modulus"),
+                "LIGGGHTS needs youngsModulus for every atom type",
+            );
+        }
+        match m.poisson_ratio {
+            None => refuse(
+                &format!("materials[{k}].poisson_ratio"),
+                "LIGGGHTS needs poissonsRatio for every atom type",
+            ),
+            Some(nu) if !(0.0..=0.5).contains(&nu) => refuse(
+                &format!("materials[{k}].poisson_ratio"),
+                "LIGGGHTS requires 0 <= poissonsRatio <= 0.5",
+            ),
+            _ => {}
+        }
+    }
+    for (k, w) in scene.walls.iter().enumerate() {
+        match &w.motion {
+            MotionSpec::Fixed | MotionSpec::Velocity { .. } => {}
+            MotionSpec::Displacement { .. } => refuse(
+                &format!("walls[{k}].motion"),
+                "displacement expressions are not exported (only fixed and constant-velocity walls)",
+            ),
+            MotionSpec::Servo { .. } => refuse(
+                &format!("walls[{k}].motion"),
+                "servo walls are not exported (LIGGGHTS's mesh/surface/stress/servo has another control law)",
+            ),
+        }
+    }
+    out
+}
+
+fn refuse_all(list: Vec<(String, String)>) -> TampError {
+    let mut errors: Vec<TampError> = list
+        .into_iter()
+        .map(|(path, why)| TampError::input(path, format!("cannot export to LIGGGHTS 3.8: {why}")))
+        .collect();
+    if errors.len() == 1 {
+        errors.pop().expect("one error")
+    } else {
+        TampError::InputMany(errors)
+    }
+}
+
+/// Write the deck for the scene file at `scene_path` into `out_dir`.
+pub fn export_file(scene_path: &Path, out_dir: &Path, dump_every: Option<u64>) -> Result<Exported> {
+    let (scene, sha) = scene::load(scene_path)?;
+    export(&scene, &sha, out_dir, dump_every)
+}
+
+/// Axis index of a unit vector along ±x, ±y or ±z.
+fn axis_of(v: &Vec3) -> Option<usize> {
+    (0..3).find(|&a| v[a].abs() == v.norm() && v.norm() > 0.0)
+}
+
+const AXES: [&str; 3] = ["x", "y", "z"];
+
+/// `%.17g`-equivalent: Rust's shortest round-trip form.
+fn g(x: f64) -> String {
+    format!("{x:e}")
+}
+
+/// The contact model of the deck (after `refusals` came back empty).
+fn contact_model(scene: &Scene, sim: &crate::simulation::Simulation) -> Result<ContactModel> {
+    let n = sim.materials.len();
+    let mut properties = Vec::new();
+    let per_type = |f: &dyn Fn(&crate::material::Material) -> f64| -> String {
+        sim.materials
+            .iter()
+            .map(|m| g(f(m)))
+            .collect::<Vec<_>>()
+            .join(" ")
+    };
+    properties.push(format!(
+        "fix m1 all property/global youngsModulus peratomtype {}",
+        per_type(&|m| m.youngs_modulus.expect("checked"))
+    ));
+    properties.push(format!(
+        "fix m2 all property/global poissonsRatio peratomtype {}",
+        per_type(&|m| m.poisson_ratio.expect("checked"))
+    ));
+    let friction = |a: usize, b: usize| sim.pair_table.get(a, b).friction;
+    let pair_matrix = |f: &dyn Fn(usize, usize) -> f64| -> String {
+        let mut s = format!("{n}");
+        for a in 0..n {
+            for b in 0..n {
+                s.push(' ');
+                s.push_str(&g(f(a, b)));
+            }
+        }
+        s
+    };
+    let mu = if scene.contact.tangential.is_some() {
+        pair_matrix(&friction)
+    } else {
+        pair_matrix(&|_, _| 0.0)
+    };
+    let tangential = "tangential history";
+    let pair_style = match (&scene.contact.normal, &scene.contact.damping) {
+        (NormalSpec::Linear { stiffness }, Some(DampingSpec::Constant { gamma_n })) => {
+            properties.push(format!(
+                "fix m3 all property/global kn peratomtypepair {}",
+                pair_matrix(&|_, _| *stiffness)
+            ));
+            properties.push(format!(
+                "fix m4 all property/global kt peratomtypepair {}",
+                pair_matrix(&|_, _| *stiffness)
+            ));
+            properties.push(format!(
+                "fix m5 all property/global gamman_abs peratomtypepair {}",
+                pair_matrix(&|_, _| *gamma_n)
+            ));
+            properties.push(format!(
+                "fix m6 all property/global gammat_abs peratomtypepair {}",
+                pair_matrix(&|_, _| 0.0)
+            ));
+            properties.push(format!(
+                "fix m7 all property/global coefficientFriction peratomtypepair {mu}"
+            ));
+            format!("model hooke/stiffness {tangential} absolute_damping on")
+        }
+        (normal, _) => {
+            let e = restitution(scene).map_err(|(p, w)| TampError::input(p, w))?;
+            properties.push(format!(
+                "fix m3 all property/global coefficientRestitution peratomtypepair {}",
+                pair_matrix(&|_, _| e)
+            ));
+            properties.push(format!(
+                "fix m4 all property/global coefficientFriction peratomtypepair {mu}"
+            ));
+            match normal {
+                NormalSpec::Linear { stiffness } => {
+                    let v = characteristic_velocity(sim, *stiffness)?;
+                    properties.push(format!(
+                        "fix m5 all property/global characteristicVelocity scalar {}",
+                        g(v)
+                    ));
+                    format!("model hooke {tangential}")
+                }
+                _ => format!("model hertz {tangential}"),
+            }
+        }
+    };
+    Ok(ContactModel {
+        pair_style,
+        properties,
+    })
+}
+
+/// The contact kinds of a scene: (m*, R*, E*) of every pair of particle classes and
+/// of every class against every wall.
+fn contact_kinds(sim: &crate::simulation::Simulation) -> Vec<(f64, f64, f64)> {
+    let p = &sim.particles;
+    let mut classes: Vec<(f64, f64, usize)> = Vec::new();
+    for i in 0..p.len() {
+        let c = (p.mass[i], p.radius[i], p.material[i]);
+        if !classes.contains(&c) {
+            classes.push(c);
+            if classes.len() > 64 {
+                break;
+            }
+        }
+    }
+    let e_star = |a: usize, b: usize| {
+        effective_modulus(&sim.materials[a], &sim.materials[b]).expect("checked")
+    };
+    let mut kinds = Vec::new();
+    for (k, a) in classes.iter().enumerate() {
+        for b in &classes[k..] {
+            kinds.push((
+                effective_mass(a.0, b.0),
+                effective_radius(a.1, b.1),
+                e_star(a.2, b.2),
+            ));
+        }
+        for w in &sim.walls {
+            kinds.push((a.0, a.1, e_star(a.2, w.material)));
+        }
+    }
+    kinds
+}
+
+/// The `characteristicVelocity` V for which LIGGGHTS's `model hooke` gives k_n =
+/// `stiffness` (normal_model_hooke.h l. 269–275 solved for V), refused unless that
+/// holds for every contact kind of the scene.
+fn characteristic_velocity(sim: &crate::simulation::Simulation, stiffness: f64) -> Result<f64> {
+    let kinds = contact_kinds(sim);
+    let Some(&(m, r, e)) = kinds.first() else {
+        return Ok(1.0);
+    };
+    let a = 16.0 * r.sqrt() * e;
+    let v = (a / (15.0 * m) * (15.0 * stiffness / a).powi(5)).sqrt();
+    for &(m, r, e) in &kinds {
+        let k = hooke_stiffness(m, r, e, v);
+        if ((k - stiffness) / stiffness).abs() > 1e-9 {
+            return Err(TampError::input(
+                "contact.normal.stiffness",
+                format!(
+                    "cannot export to LIGGGHTS 3.8: model hooke derives k_n from m*, R*, E* and one characteristicVelocity; with V = {v:e} m/s it gives {k:e} N/m for a contact with m* = {m:e} kg, R* = {r:e} m (a wall contact, or another size or material), not {stiffness:e} N/m"
+                ),
+            ));
+        }
+    }
+    Ok(v)
+}
+
+fn stl(name: &str, triangles: &[[Vec3; 3]]) -> String {
+    let mut s = format!("solid {name}\n");
+    for t in triangles {
+        let n = (t[1] - t[0]).cross(&(t[2] - t[0])).normalize();
+        let _ = writeln!(s, "  facet normal {} {} {}", g(n.x), g(n.y), g(n.z));
+        s.push_str("    outer loop\n");
+        for v in t {
+            let _ = writeln!(s, "      vertex {} {} {}", g(v.x), g(v.y), g(v.z));
+        }
+        s.push_str("    endloop\n  endfacet\n");
+    }
+    let _ = writeln!(s, "endsolid {name}");
+    s
+}
+
+/// Two unit vectors completing `axis` to a right-handed basis.
+fn perpendicular_basis(axis: &Vec3) -> (Vec3, Vec3) {
+    let trial = if axis.x.abs() < 0.9 {
+        Vec3::x()
+    } else {
+        Vec3::y()
+    };
+    let u = axis.cross(&trial).normalize();
+    (u, axis.cross(&u))
+}
+
+/// Facets of a surface of revolution, REVOLVED_SEGMENTS around.
+fn revolved_triangles(shape: &Revolved) -> Vec<[Vec3; 3]> {
+    let axis = shape.axis();
+    let (u, w) = perpendicular_basis(&axis);
+    let point = |h: f64, r: f64, k: usize| {
+        let phi = std::f64::consts::TAU * k as f64 / REVOLVED_SEGMENTS as f64;
+        shape.origin() + axis * h + (u * phi.cos() + w * phi.sin()) * r
+    };
+    let mut out = Vec::new();
+    for pair in shape.profile().windows(2) {
+        let ((h0, r0), (h1, r1)) = (pair[0], pair[1]);
+        for k in 0..REVOLVED_SEGMENTS {
+            let (a, b) = (point(h0, r0, k), point(h0, r0, k + 1));
+            let (c, d) = (point(h1, r1, k), point(h1, r1, k + 1));
+            out.push([a, b, d]);
+            out.push([a, d, c]);
+        }
+    }
+    out
+}
+
+/// A square of half-width `half` in the plane through `point` with normal `normal`.
+fn plane_triangles(point: &Vec3, normal: &Vec3, half: f64) -> Vec<[Vec3; 3]> {
+    let (u, w) = perpendicular_basis(normal);
+    let c = |a: f64, b: f64| point + u * (a * half) + w * (b * half);
+    vec![
+        [c(-1.0, -1.0), c(1.0, -1.0), c(1.0, 1.0)],
+        [c(-1.0, -1.0), c(1.0, 1.0), c(-1.0, 1.0)],
+    ]
+}
+
+/// The scene's extent: the particles' bounding box, widened by the periodic box.
+fn extent(sim: &crate::simulation::Simulation, scene: &Scene) -> (Vec3, Vec3) {
+    let p = &sim.particles;
+    let mut lo = Vec3::repeat(f64::INFINITY);
+    let mut hi = Vec3::repeat(f64::NEG_INFINITY);
+    for (x, r) in p.position.iter().zip(&p.radius) {
+        lo = lo.inf(&(x - Vec3::repeat(*r)));
+        hi = hi.sup(&(x + Vec3::repeat(*r)));
+    }
+    if let Some(per) = &scene.periodic {
+        for (a, range) in per.axes().iter().enumerate() {
+            if let Some([l, h]) = range {
+                lo[a] = *l;
+                hi[a] = *h;
+            }
+        }
+    }
+    if p.is_empty() {
+        lo = Vec3::repeat(-1.0);
+        hi = Vec3::repeat(1.0);
+    }
+    (lo, hi)
+}
+
+/// Write the deck, the data file and the meshes for `scene` into `out_dir`.
+pub fn export(
+    scene: &Scene,
+    sha: &str,
+    out_dir: &Path,
+    dump_every: Option<u64>,
+) -> Result<Exported> {
+    let list = refusals(scene);
+    if !list.is_empty() {
+        return Err(refuse_all(list));
+    }
+    let built = scene::build(scene)?;
+    let sim = built.sim;
+    let model = contact_model(scene, &sim)?;
+    crate::output::create_dir(out_dir)?;
+    let mut files = Vec::new();
+    let mut notes = Vec::new();
+    let p = &sim.particles;
+    let n_types = sim.materials.len();
+
+    // Box: periodic axes exactly; the others shrink-wrap (`m`) around a start box.
+    let (lo, hi) = extent(&sim, scene);
+    let max_r = p.radius.iter().copied().fold(0.0, f64::max);
+    let margin = (hi - lo).max() * 0.05 + 2.0 * max_r;
+    let periodic = scene.periodic.clone().unwrap_or_default().axes();
+    let mut boundary = Vec::new();
+    let mut data = format!(
+        "LIGGGHTS data file exported by tamp {} ({}) from scene sha256 {sha}\n\n{} atoms\n{n_types} atom types\n\n",
+        crate::VERSION,
+        crate::GIT_COMMIT,
+        p.len()
+    );
+    for a in 0..3 {
+        let (l, h, flag) = match periodic[a] {
+            Some([l, h]) => (l, h, "p"),
+            None => (lo[a] - margin, hi[a] + margin, "m"),
+        };
+        boundary.push(flag);
+        let _ = writeln!(data, "{} {} {}lo {}hi", g(l), g(h), AXES[a], AXES[a]);
+    }
+    data.push_str("\nAtoms\n\n");
+    let density = |i: usize| sim.materials[p.material[i]].density;
+    for i in 0..p.len() {
+        let x = p.position[i];
+        let _ = writeln!(
+            data,
+            "{} {} {} {} {} {} {}",
+            i + 1,
+            p.material[i] + 1,
+            g(2.0 * p.radius[i]),
+            g(density(i)),
+            g(x.x),
+            g(x.y),
+            g(x.z)
+        );
+    }
+    data.push_str("\nVelocities\n\n");
+    for i in 0..p.len() {
+        let (v, w) = (p.velocity[i], p.omega[i]);
+        let _ = writeln!(
+            data,
+            "{} {} {} {} {} {} {}",
+            i + 1,
+            g(v.x),
+            g(v.y),
+            g(v.z),
+            g(w.x),
+            g(w.y),
+            g(w.z)
+        );
+    }
+    crate::output::write_atomic(&out_dir.join("particles.data"), data.as_bytes())?;
+    files.push("particles.data".to_string());
+
+    let moduli: Vec<f64> = sim
+        .materials
+        .iter()
+        .filter_map(|m| m.youngs_modulus)
+        .collect();
+    let min_r = p.radius.iter().copied().fold(f64::INFINITY, f64::min);
+    let skin = if min_r.is_finite() {
+        scene.broad_phase.skin_fraction * min_r
+    } else {
+        1e-3
+    };
+    let every = dump_every.unwrap_or(match scene.output.series_every {
+        0 => (built.steps / 100).max(1),
+        n => n,
+    });
+
+    let mut deck = String::new();
+    let _ = writeln!(
+        deck,
+        "# LIGGGHTS-PUBLIC 3.8 deck exported by tamp {} (commit {})",
+        crate::VERSION,
+        crate::GIT_COMMIT
+    );
+    let _ = writeln!(
+        deck,
+        "# scene '{}', sha256 {sha}, seed {}\n# run: liggghts -in in.tamp",
+        scene.name, scene.seed
+    );
+    deck.push_str("atom_style   granular\natom_modify  map array\n");
+    let _ = writeln!(deck, "boundary     {}", boundary.join(" "));
+    deck.push_str("newton       off\ncommunicate  single vel yes\nunits        si\n");
+    if moduli.iter().any(|&e| e > 1e9) {
+        deck.push_str("# LIGGGHTS 3.8 refuses youngsModulus > 1e9 Pa in SI units without this.\nhard_particles yes\n");
+    }
+    if moduli.iter().any(|&e| e < 5e6) {
+        deck.push_str("# LIGGGHTS 3.8 refuses youngsModulus < 5e6 Pa in SI units without this.\nsoft_particles yes\n");
+    }
+    deck.push_str("read_data    particles.data\n");
+    let _ = writeln!(deck, "neighbor     {} bin\nneigh_modify delay 0", g(skin));
+    for line in &model.properties {
+        let _ = writeln!(deck, "{line}");
+    }
+    let _ = writeln!(
+        deck,
+        "# limitForce off and tangential_damping on are the 3.8 defaults and tamp's behaviour."
+    );
+    let _ = writeln!(
+        deck,
+        "pair_style   gran {}\npair_coeff   * *",
+        model.pair_style
+    );
+    let _ = writeln!(deck, "timestep     {}", g(sim.dt));
+    if let Some(gv) = sim.gravity {
+        let norm = gv.norm();
+        if norm > 0.0 {
+            let d = gv / norm;
+            let _ = writeln!(
+                deck,
+                "fix          gravi all gravity {} vector {} {} {}",
+                g(norm),
+                g(d.x),
+                g(d.y),
+                g(d.z)
+            );
+        }
+    }
+
+    // Walls.
+    let (ext_lo, ext_hi) = extent(&sim, scene);
+    let half = (ext_hi - ext_lo).norm() * 2.0 + 10.0 * max_r;
+    let wall_model = format!(
+        "model {}",
+        model
+            .pair_style
+            .replace(" absolute_damping on", "")
+            .replace("model ", "")
+    );
+    let wall_model = if model.pair_style.contains("absolute_damping") {
+        format!("{wall_model} absolute_damping on")
+    } else {
+        wall_model
+    };
+    let mut meshes: Vec<String> = Vec::new();
+    for (k, (wall, spec)) in sim.walls.iter().zip(&scene.walls).enumerate() {
+        let wtype = wall.material + 1;
+        let velocity = match &spec.motion {
+            MotionSpec::Velocity { velocity } => Some(*velocity),
+            _ => None,
+        };
+        let mut primitives: Vec<String> = Vec::new();
+        let mut triangles: Vec<[Vec3; 3]> = Vec::new();
+        match &wall.shape {
+            Shape::Plane(pl) => match (axis_of(&pl.normal), velocity) {
+                (Some(a), None) => primitives.push(format!("{}plane {}", AXES[a], g(pl.point[a]))),
+                _ => triangles = plane_triangles(&pl.point, &pl.normal, half),
+            },
+            Shape::Box(b) => {
+                for f in 0..6 {
+                    if !b.faces[f] {
+                        continue;
+                    }
+                    let a = f / 2;
+                    let c = if f % 2 == 0 { b.lower[a] } else { b.upper[a] };
+                    if velocity.is_none() {
+                        primitives.push(format!("{}plane {}", AXES[a], g(c)));
+                    } else {
+                        let mut normal = Vec3::zeros();
+                        normal[a] = 1.0;
+                        let mut point = (b.lower + b.upper) * 0.5;
+                        point[a] = c;
+                        let span = (b.upper - b.lower).max() * 0.5;
+                        triangles.extend(plane_triangles(&point, &normal, span));
+                    }
+                }
+            }
+            Shape::Revolved(r) => {
+                let profile = r.profile();
+                let cylinder = profile.len() == 2 && profile[0].1 == profile[1].1;
+                match (axis_of(&r.axis()), cylinder, velocity) {
+                    (Some(a), true, None) => {
+                        let o = r.origin();
+                        let (b, c) = ((a + 1) % 3, (a + 2) % 3);
+                        primitives.push(format!(
+                            "{}cylinder {} {} {}",
+                            AXES[a],
+                            g(profile[0].1),
+                            g(o[b]),
+                            g(o[c])
+                        ));
+                        notes.push(format!(
+                            "walls[{k}]: a LIGGGHTS primitive cylinder is infinite along its axis; tamp's ends at heights {} and {}",
+                            profile[0].0, profile[1].0
+                        ));
+                    }
+                    _ => {
+                        triangles = revolved_triangles(r);
+                        notes.push(format!(
+                            "walls[{k}]: a surface of revolution, written as {} flat facets: LIGGGHTS meets facets, tamp the exact surface",
+                            triangles.len()
+                        ));
+                    }
+                }
+            }
+            Shape::Mesh(m) => {
+                triangles = m
+                    .triangles()
+                    .iter()
+                    .map(|t: &Triangle| t.vertices)
+                    .collect();
+            }
+        }
+        for (j, prim) in primitives.iter().enumerate() {
+            let _ = writeln!(
+                deck,
+                "fix          w{k}_{j} all wall/gran {wall_model} primitive type {wtype} {prim}"
+            );
+        }
+        if !triangles.is_empty() {
+            let name = format!("mesh{k}");
+            let file = format!("meshes/{name}.stl");
+            crate::output::create_dir(&out_dir.join("meshes"))?;
+            crate::output::write_atomic(&out_dir.join(&file), stl(&name, &triangles).as_bytes())?;
+            files.push(file.clone());
+            let _ = writeln!(
+                deck,
+                "fix          {name} all mesh/surface file {file} type {wtype}"
+            );
+            if let Some(v) = velocity {
+                let _ = writeln!(
+                    deck,
+                    "fix          move{k} all move/mesh mesh {name} linear {} {} {}",
+                    g(v[0]),
+                    g(v[1]),
+                    g(v[2])
+                );
+            }
+            meshes.push(name);
+        }
+    }
+    if !meshes.is_empty() {
+        let _ = writeln!(
+            deck,
+            "fix          meshwalls all wall/gran {wall_model} mesh n_meshes {} meshes {}",
+            meshes.len(),
+            meshes.join(" ")
+        );
+    }
+    deck.push_str("fix          integr all nve/sphere\n");
+    let format = std::iter::once("%d %d")
+        .chain(std::iter::repeat_n("%.17g", 14))
+        .collect::<Vec<_>>()
+        .join(" ");
+    let _ = writeln!(
+        deck,
+        "dump         dmp all custom {every} dump.liggghts {DUMP_COLUMNS}\ndump_modify  dmp format \"{format}\" sort id"
+    );
+    deck.push_str("thermo_style custom step time atoms ke\nthermo_modify norm no lost ignore\n");
+    let _ = writeln!(deck, "thermo       {}", (built.steps / 20).max(1));
+    let _ = writeln!(deck, "run          {}", built.steps);
+    let _ = writeln!(
+        deck,
+        "write_dump   all custom final.liggghts {DUMP_COLUMNS} modify format \"{format}\" sort id"
+    );
+    for note in &notes {
+        deck.insert_str(0, &format!("# note: {note}\n"));
+    }
+    crate::output::write_atomic(&out_dir.join("in.tamp"), deck.as_bytes())?;
+    files.insert(0, "in.tamp".to_string());
+    Ok(Exported {
+        particles: p.len(),
+        steps: built.steps,
+        dt: sim.dt,
+        files,
+        notes,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::contact::damping::liggghts::beta;
+
+    #[test]
+    fn restitution_inverts_beta() {
+        for e in [0.06, 0.3, 0.5, 0.9, 0.99, 1.0] {
+            let back = restitution_from_beta(beta(e));
+            assert!((back - e).abs() < 1e-14 * e.max(1e-300), "{e} -> {back}");
+        }
+    }
+}
