@@ -48,6 +48,24 @@ pub struct Run {
     pub trajectory: BTreeMap<(u64, u64), State>,
 }
 
+impl Run {
+    /// Add the simulation's present state to the trajectory (ids = index + 1).
+    pub fn record(&mut self, sim: &crate::simulation::Simulation) {
+        let p = &sim.particles;
+        for i in 0..p.len() {
+            self.trajectory.insert(
+                (sim.step, i as u64 + 1),
+                State {
+                    radius: p.radius[i],
+                    position: p.position[i],
+                    velocity: Some(p.velocity[i]),
+                    omega: Some(p.omega[i]),
+                },
+            );
+        }
+    }
+}
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Kind {
     Relative,

@@ -48,10 +48,14 @@ enum Command {
         scene: PathBuf,
         #[arg(long)]
         out: PathBuf,
-        /// Steps between frames of dump.liggghts (default: the scene's series_every,
-        /// else about 100 frames); the final state always goes to final.liggghts.
+        /// Steps between frames of dump.liggghts (default: the scene's
+        /// trajectory_every, else its series_every, else about 100 frames); the final
+        /// state always goes to final.liggghts.
         #[arg(long)]
         dump_every: Option<u64>,
+        /// Replace the scene's seed (a new random placement, the same scene otherwise).
+        #[arg(long)]
+        seed: Option<u64>,
     },
     /// Convert a LIGGGHTS dump to trajectory.csv and measure its last frame
     /// (quantities.csv) in DIR.
@@ -59,9 +63,12 @@ enum Command {
         file: PathBuf,
         #[arg(long)]
         out: PathBuf,
-        /// Height of the floor under the bed, m (default: the box's lower z bound).
+        /// Height of the floor under the bed, m (default: the lowest sphere bottom).
         #[arg(long)]
         floor: Option<f64>,
+        /// Gravity along −z, m/s²: adds floor_force_over_weight (needs mass and fz).
+        #[arg(long)]
+        gravity: Option<f64>,
     },
     /// Compare run A with the reference run B (layout: docs/compare.md); exit 1
     /// beyond tolerance.
@@ -107,7 +114,8 @@ fn main() -> ExitCode {
             scene,
             out,
             dump_every,
-        } => tamp::liggghts::export::export_file(&scene, &out, dump_every).map(|x| {
+            seed,
+        } => tamp::liggghts::export::export_file(&scene, &out, dump_every, seed).map(|x| {
             for note in &x.notes {
                 eprintln!("note: {note}");
             }
@@ -122,8 +130,13 @@ fn main() -> ExitCode {
             );
             0
         }),
-        Command::ImportLiggghtsDump { file, out, floor } => {
-            tamp::liggghts::import::run_cli(&file, &out, floor).map(|q| {
+        Command::ImportLiggghtsDump {
+            file,
+            out,
+            floor,
+            gravity,
+        } => {
+            tamp::liggghts::import::run_cli(&file, &out, floor, gravity).map(|q| {
                 for (name, value) in q {
                     println!("{name} = {value:e}");
                 }

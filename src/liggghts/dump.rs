@@ -37,6 +37,10 @@ pub struct Frame {
     pub velocity: Vec<Vec3>,
     /// Zero when the dump has no `omegax omegay omegaz`.
     pub omega: Vec<Vec3>,
+    /// Zero when the dump has no `mass`.
+    pub mass: Vec<f64>,
+    /// Total force on the atom (pair, wall and body forces); zero without `fx fy fz`.
+    pub force: Vec<Vec3>,
 }
 
 impl Frame {
@@ -144,7 +148,9 @@ pub fn parse(text: &str, path: &Path) -> Result<Vec<Frame>> {
         let ct = col("type");
         let vel = [col("vx"), col("vy"), col("vz")];
         let omg = [col("omegax"), col("omegay"), col("omegaz")];
-        let mut rows: Vec<(u64, u32, f64, Vec3, Vec3, Vec3)> = Vec::with_capacity(n);
+        let frc = [col("fx"), col("fy"), col("fz")];
+        let cm = col("mass");
+        let mut rows: Vec<(u64, u32, f64, Vec3, Vec3, Vec3, f64, Vec3)> = Vec::with_capacity(n);
         for r in 0..n {
             let at = k + 9 + r;
             let line = lines
@@ -184,16 +190,23 @@ pub fn parse(text: &str, path: &Path) -> Result<Vec<Frame>> {
                 Vec3::new(f(cx)?, f(cy)?, f(cz)?),
                 opt3(vel)?,
                 opt3(omg)?,
+                match cm {
+                    Some(c) => f(c)?,
+                    None => 0.0,
+                },
+                opt3(frc)?,
             ));
         }
         rows.sort_by_key(|r| r.0);
-        for (id, t, r, x, v, w) in rows {
+        for (id, t, r, x, v, w, m, force) in rows {
             frame.id.push(id);
             frame.atom_type.push(t);
             frame.radius.push(r);
             frame.position.push(x);
             frame.velocity.push(v);
             frame.omega.push(w);
+            frame.mass.push(m);
+            frame.force.push(force);
         }
         frames.push(frame);
         k += 9 + n;
@@ -219,6 +232,8 @@ mod tests {
         assert_eq!(f.atom_type, vec![2, 1]);
         assert_eq!(f.radius, vec![0.2, 0.1]);
         assert_eq!(f.velocity[0], Vec3::new(0.0, 0.0, -1.0));
+        assert_eq!(f.mass, vec![1.0, 1.0]);
+        assert_eq!(frames[1].force, vec![Vec3::zeros()]);
         assert_eq!(f.periodic, [true, true, false]);
         assert_eq!(f.space().periodic[1], Some((0.0, 2.0)));
         assert_eq!(frames[1].step, 10);

@@ -227,8 +227,16 @@ fn refuse_all(list: Vec<(String, String)>) -> TampError {
 }
 
 /// Write the deck for the scene file at `scene_path` into `out_dir`.
-pub fn export_file(scene_path: &Path, out_dir: &Path, dump_every: Option<u64>) -> Result<Exported> {
-    let (scene, sha) = scene::load(scene_path)?;
+pub fn export_file(
+    scene_path: &Path,
+    out_dir: &Path,
+    dump_every: Option<u64>,
+    seed: Option<u64>,
+) -> Result<Exported> {
+    let (mut scene, sha) = scene::load(scene_path)?;
+    if let Some(seed) = seed {
+        scene.seed = seed;
+    }
     export(&scene, &sha, out_dir, dump_every)
 }
 
@@ -554,10 +562,13 @@ pub fn export(
     } else {
         1e-3
     };
-    let every = dump_every.unwrap_or(match scene.output.series_every {
-        0 => (built.steps / 100).max(1),
-        n => n,
-    });
+    // Frames as the scene's own trajectory.csv has them, so that the two compare row by row.
+    let every = dump_every.unwrap_or(
+        match (scene.output.trajectory_every, scene.output.series_every) {
+            (0, 0) => (built.steps / 100).max(1),
+            (0, n) | (n, _) => n,
+        },
+    );
 
     let mut deck = String::new();
     let _ = writeln!(

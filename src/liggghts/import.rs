@@ -5,59 +5,104 @@
 //! - `trajectory.csv`: every frame of the dump;
 //! - `quantities.csv` (last frame): `particles`, `coordination_number` (overlapping
 //!   pairs per particle, `measure::coordination` with its defaults, nearest images
-//!   through periodic faces), `max_overlap_ratio`, `bed_height` and
+//!   through periodic faces), `max_overlap_ratio_last_frame` (tamp's `max_overlap_ratio`
+//!   is over the whole run), `bed_height` and
 //!   `packing_fraction` (the bulk fraction below the Gibbs surface of a bed on the
-//!   floor `z = floor`, `measure::bed`; only for a box periodic in x and y),
-//!   `mean_speed`.
+//!   floor `z = floor`, by default the lowest sphere bottom; `measure::bed`; only
+//!   for a box periodic in x and y),
+//!   `mean_speed`, and with `--gravity g` `floor_force_over_weight`.
 
 use super::dump;
 use crate::compare::{TRAJECTORY_HEADER, quantities_csv, trajectory_row};
 use crate::error::Result;
 use crate::measure::bed::bulk_packing_fraction;
 use crate::measure::coordination::{CoordinationOptions, coordination};
+use crate::particles::Vec3;
+use crate::space::Space;
 use std::path::Path;
 
 /// tamp's measures of one frame, by name (see the module comment).
 pub fn measures(frame: &dump::Frame, floor: Option<f64>) -> Result<Vec<(String, f64)>> {
-    let space = frame.space();
-    let n = frame.id.len();
-    let pairs: Vec<(u32, u32)> =
-        crate::detect::cells::candidate_pairs_in(&frame.position, &frame.radius, 0.0, &space);
+    let lateral = frame.periodic[0] && frame.periodic[1];
+    state_measures(
+        &frame.position,
+        &frame.radius,
+        &frame.velocity,
+        &frame.space(),
+        lateral,
+        floor,
+    )
+}
+
+/// The measures of a set of spheres, whichever code produced them: LIGGGHTS frames
+/// here, tamp's own state in the cross-check cases. `bed_height` and
+/// `packing_fraction` only when `lateral_periodic` (x and y).
+pub fn state_measures(
+    position: &[Vec3],
+    radius: &[f64],
+    velocity: &[Vec3],
+    space: &Space,
+    lateral_periodic: bool,
+    floor: Option<f64>,
+) -> Result<Vec<(String, f64)>> {
+    let n = position.len();
+    let pairs = crate::detect::cells::candidate_pairs_in(position, radius, 0.0, space);
     let mut max_overlap_ratio: f64 = 0.0;
     for &(i, j) in &pairs {
         let (i, j) = (i as usize, j as usize);
-        let d = space
-            .displacement(&frame.position[i], &frame.position[j])
-            .norm();
-        let overlap = frame.radius[i] + frame.radius[j] - d;
-        max_overlap_ratio = max_overlap_ratio.max(overlap / frame.radius[i].min(frame.radius[j]));
+        let d = space.displacement(&position[i], &position[j]).norm();
+        let overlap = radius[i] + radius[j] - d;
+        max_overlap_ratio = max_overlap_ratio.max(overlap / radius[i].min(radius[j]));
     }
     let z = coordination(
-        &frame.position,
-        &frame.radius,
-        &space,
+        position,
+        radius,
+        space,
         &pairs,
         &CoordinationOptions::default(),
     )?;
     let mut out = vec![
         ("particles".to_string(), n as f64),
         ("coordination_number".to_string(), z.mean),
-        ("max_overlap_ratio".to_string(), max_overlap_ratio),
+        (
+            "max_overlap_ratio_last_frame".to_string(),
+            max_overlap_ratio,
+        ),
         (
             "mean_speed".to_string(),
-            frame.velocity.iter().map(|v| v.norm()).sum::<f64>() / n.max(1) as f64,
+            velocity.iter().map(|v| v.norm()).sum::<f64>() / n.max(1) as f64,
         ),
     ];
-    if frame.periodic[0] && frame.periodic[1] {
-        let floor = floor.unwrap_or(frame.bounds[2][0]);
-        let bed = bulk_packing_fraction(&frame.position, &frame.radius, &space, 2, floor)?;
+    if lateral_periodic {
+        // The box's lower bound is no floor: a shrink-wrapped box starts below it.
+        let lowest = position
+            .iter()
+            .zip(radius)
+            .map(|(x, r)| x.z - r)
+            .fold(f64::INFINITY, f64::min);
+        let floor = floor.unwrap_or(lowest);
+        let bed = bulk_packing_fraction(position, radius, space, 2, floor)?;
         out.push(("bed_height".to_string(), bed.height));
         out.push(("packing_fraction".to_string(), bed.bulk_fraction));
     }
     Ok(out)
 }
 
-pub fn run_cli(file: &Path, out_dir: &Path, floor: Option<f64>) -> Result<Vec<(String, f64)>> {
+/// (force of the floor on the bed)/(weight) from a frame's total forces: the dumped
+/// f includes gravity and the walls, and the pair forces cancel in the sum, so the
+/// floor carries Σf_z + Σm g. Needs the `mass` and `fz` columns.
+pub fn floor_force_over_weight(frame: &dump::Frame, gravity: f64) -> f64 {
+    let weight: f64 = frame.mass.iter().sum::<f64>() * gravity;
+    let net: f64 = frame.force.iter().map(|f| f.z).sum();
+    (net + weight) / weight
+}
+
+pub fn run_cli(
+    file: &Path,
+    out_dir: &Path,
+    floor: Option<f64>,
+    gravity: Option<f64>,
+) -> Result<Vec<(String, f64)>> {
     let frames = dump::read(file)?;
     let mut trajectory = format!("{TRAJECTORY_HEADER}\n");
     for f in &frames {
@@ -76,7 +121,19 @@ pub fn run_cli(file: &Path, out_dir: &Path, floor: Option<f64>) -> Result<Vec<(S
     let last = frames
         .last()
         .expect("dump::read returns at least one frame");
-    let quantities = measures(last, floor)?;
+    let mut quantities = measures(last, floor)?;
+    if let Some(g) = gravity {
+        if last.mass.iter().any(|&m| m <= 0.0) {
+            return Err(crate::error::TampError::input(
+                "--gravity",
+                "needs a dump with a positive 'mass' column for every atom",
+            ));
+        }
+        quantities.push((
+            "floor_force_over_weight".to_string(),
+            floor_force_over_weight(last, g),
+        ));
+    }
     crate::output::create_dir(out_dir)?;
     crate::output::write_atomic(&out_dir.join("trajectory.csv"), trajectory.as_bytes())?;
     crate::output::write_atomic(

@@ -8,6 +8,8 @@ mod hertz_collision_time;
 mod hertz_yield_onset;
 mod hollomon_constants;
 mod kuwabara_kono_restitution;
+mod liggghts_settled_packing;
+mod liggghts_three_sphere_trajectory;
 mod liggghts_two_sphere;
 mod linear_restitution;
 mod momentum_conservation;
@@ -46,6 +48,11 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("density_segregation", density_segregation::run),
     ("binary_packing_ratio10_quick", binary_packing::run),
     ("binary_packing_ratio10", binary_packing::run),
+    ("liggghts_settled_packing", liggghts_settled_packing::run),
+    (
+        "liggghts_three_sphere_trajectory",
+        liggghts_three_sphere_trajectory::run,
+    ),
     ("liggghts_two_sphere_hertz", liggghts_two_sphere::hertz),
     ("liggghts_two_sphere_hooke", liggghts_two_sphere::hooke),
 ];

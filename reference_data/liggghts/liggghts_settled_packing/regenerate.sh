@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Record (or re-run) the LIGGGHTS side of liggghts_settled_packing: for seeds 1-3,
+# export the case's scene with that seed (tamp places the same 2000 spheres both
+# codes start from), run LIGGGHTS, measure the final frame with tamp's measures,
+# and collect one row per seed in results.csv.
+# usage: regenerate.sh [OUTDIR]   (default: this directory, i.e. re-record)
+#   $TAMP is the tamp executable (default: tamp on PATH; crosscheck sets it).
+# The seeds' particles.data and dumps are deleted afterwards (export rewrites them).
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+out=$(mkdir -p "${1:-$here}" && cd "${1:-$here}" && pwd)
+tamp=${TAMP:-tamp}
+scene=$here/../../../verification/liggghts_settled_packing.scene.json
+# The scene's gravity is 9.81 m/s² along -z and its floor the plane z = 0.
+rows=$out/.results.csv.tmp
+echo "seed,packing_fraction,coordination_number,bottom_wall_force_over_weight,bed_height,mean_speed" > "$rows"
+for seed in 1 2 3; do
+  d=$out/seed$seed
+  rm -rf "$d"
+  "$tamp" export-liggghts "$scene" --out "$d" --seed "$seed"
+  (cd "$d" && liggghts -in in.tamp -log log.liggghts -screen none)
+  "$tamp" import-liggghts-dump "$d/final.liggghts" --out "$d/measured" --floor 0 --gravity 9.81
+  awk -F, -v s="$seed" 'NR > 1 { q[$1] = $2 }
+    END { print s "," q["packing_fraction"] "," q["coordination_number"] "," q["floor_force_over_weight"] "," q["bed_height"] "," q["mean_speed"] }' \
+    "$d/measured/quantities.csv" >> "$rows"
+  rm -f "$d/dump.liggghts" "$d/final.liggghts" "$d/particles.data" "$d/measured/trajectory.csv"
+done
+mv "$rows" "$out/results.csv"
+cat "$out/results.csv"

@@ -1,0 +1,136 @@
+//! Cross-check against LIGGGHTS 3.8.0 on a many-body scene, statistically: 2000
+//! spheres placed at random in a laterally periodic column fall onto a floor and
+//! settle (hertz, restitution damping, tangential history, rotation). For each seed
+//! both codes start from the same particles (tamp places them; the deck
+//! `tamp export-liggghts --seed S` writes carries them to LIGGGHTS), but a pile of
+//! 2000 colliding spheres is chaotic: round-off differences between the codes grow
+//! until the two beds are different random packings. So the beds are compared
+//! through their statistics, the mean over seeds of each measure, and the
+//! difference of the means is judged against the seed-to-seed spread of each code.
+//!
+//! Measures (the same code on both beds, `liggghts::import::state_measures`):
+//! `packing_fraction`, the bulk fraction below the bed's Gibbs surface
+//! (`measure::bed`); `coordination_number`, overlapping pairs per particle;
+//! `bottom_wall_force_over_weight`, the floor's force on the bed over its weight
+//! (LIGGGHTS: from the dumped total forces, `import::floor_force_over_weight`).
+//! The LIGGGHTS values are `reference_data/liggghts/<case>/results.csv`, one row
+//! per seed, written by its `regenerate.sh`. The report gets every seed's values
+//! and each code's mean and standard deviation.
+
+use crate::error::{Result, TampError};
+use crate::liggghts::import::state_measures;
+use crate::scene;
+use crate::verify::{CaseContext, Measured};
+use serde::Deserialize;
+use std::fmt::Write as _;
+
+#[derive(Debug, Deserialize)]
+struct Row {
+    seed: u64,
+    packing_fraction: f64,
+    coordination_number: f64,
+    bottom_wall_force_over_weight: f64,
+}
+
+const MEASURES: [&str; 3] = [
+    "packing_fraction",
+    "coordination_number",
+    "bottom_wall_force_over_weight",
+];
+
+fn mean_sd(x: &[f64]) -> (f64, f64) {
+    let n = x.len() as f64;
+    let mean = x.iter().sum::<f64>() / n;
+    let var = x.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0).max(1.0);
+    (mean, var.sqrt())
+}
+
+/// tamp's three measures of the scene run with `seed`.
+fn tamp_measures(base: &scene::Scene, seed: u64) -> Result<[f64; 3]> {
+    let mut scene = base.clone();
+    scene.seed = seed;
+    let built = scene::build(&scene)?;
+    let mut sim = built.sim;
+    sim.run_with(built.steps, |_| {})?;
+    let p = &sim.particles;
+    let q = state_measures(
+        &p.position,
+        &p.radius,
+        &p.velocity,
+        &sim.neighbors.space,
+        true,
+        Some(0.0),
+    )?;
+    let get = |name: &str| q.iter().find(|(n, _)| n == name).map(|(_, v)| *v);
+    let floor = sim
+        .walls
+        .iter()
+        .position(|w| w.name == "floor")
+        .ok_or_else(|| TampError::Other("the scene has no wall named 'floor'".into()))?;
+    let g = sim.gravity.map_or(0.0, |g| g.norm());
+    let weight: f64 = p.mass.iter().sum::<f64>() * g;
+    Ok([
+        get("packing_fraction").expect("a laterally periodic bed"),
+        get("coordination_number").expect("always measured"),
+        // wall_force is the force on the wall; the floor pushes the bed the other way.
+        -sim.wall_force[floor].z / weight,
+    ])
+}
+
+pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
+    let path = ctx
+        .reference_data_dir()
+        .join("liggghts")
+        .join(&ctx.spec.name)
+        .join("results.csv");
+    let bad = |what: String| TampError::Other(format!("{}: {what}", path.display()));
+    let mut reader = csv::Reader::from_path(&path).map_err(|e| bad(e.to_string()))?;
+    let rows = reader
+        .deserialize()
+        .collect::<std::result::Result<Vec<Row>, _>>()
+        .map_err(|e| bad(e.to_string()))?;
+    if rows.len() < 2 {
+        return Err(bad("needs at least two seeds to state a spread".into()));
+    }
+    let base = ctx.scene()?;
+    let mut tamp_values: Vec<[f64; 3]> = Vec::new();
+    for row in &rows {
+        tamp_values.push(tamp_measures(&base, row.seed)?);
+    }
+    let liggghts_values: Vec<[f64; 3]> = rows
+        .iter()
+        .map(|r| {
+            [
+                r.packing_fraction,
+                r.coordination_number,
+                r.bottom_wall_force_over_weight,
+            ]
+        })
+        .collect();
+
+    let mut csv = String::from("measure,code,seed,value\n");
+    let mut summary = String::from("measure,tamp_mean,tamp_sd,liggghts_mean,liggghts_sd\n");
+    let mut out = Vec::new();
+    for (k, name) in MEASURES.iter().enumerate() {
+        let t: Vec<f64> = tamp_values.iter().map(|v| v[k]).collect();
+        let l: Vec<f64> = liggghts_values.iter().map(|v| v[k]).collect();
+        for (row, (a, b)) in rows.iter().zip(t.iter().zip(&l)) {
+            let _ = writeln!(csv, "{name},tamp,{},{a:e}", row.seed);
+            let _ = writeln!(csv, "{name},liggghts,{},{b:e}", row.seed);
+        }
+        let ((tm, ts), (lm, ls)) = (mean_sd(&t), mean_sd(&l));
+        let _ = writeln!(summary, "{name},{tm:e},{ts:e},{lm:e},{ls:e}");
+        out.push(Measured::new(name, tm, lm));
+    }
+    crate::output::create_dir(&ctx.report_dir)?;
+    let name = &ctx.spec.name;
+    crate::output::write_atomic(
+        &ctx.report_dir.join(format!("{name}_seeds.csv")),
+        csv.as_bytes(),
+    )?;
+    crate::output::write_atomic(
+        &ctx.report_dir.join(format!("{name}_spread.csv")),
+        summary.as_bytes(),
+    )?;
+    Ok(out)
+}

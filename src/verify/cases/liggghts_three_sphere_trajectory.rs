@@ -1,0 +1,81 @@
+//! Cross-check against LIGGGHTS 3.8.0, trajectory by trajectory: three spheres in a
+//! chain of off-centre impacts (hertz, restitution damping, tangential history with
+//! friction, rotation), so that the normal, damping, tangential and torque terms all
+//! act, in 3D, and every contact happens once: the trajectories depend smoothly on
+//! the data (no chaos), so two codes running the same algorithm must agree to
+//! round-off at every step.
+//!
+//! The deck is the one `tamp export-liggghts` writes for this case's scene
+//! (reference_data/liggghts/run_exported.sh); the LIGGGHTS dump, converted to tamp's
+//! run layout, is `reference_data/liggghts/<case>/trajectory.csv`. The case refuses
+//! to compare when the recorded deck was exported from another version of the scene
+//! (the scene's SHA-256 is in the deck's header). Deviations are measured as
+//! `tamp compare` measures them (docs/compare.md): position in units of the particle
+//! radius, velocity and spin against the particle's largest value over the run.
+
+use crate::compare::{self, Run};
+use crate::error::{Result, TampError};
+use crate::scene;
+use crate::verify::{CaseContext, Measured};
+use std::collections::BTreeMap;
+
+pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
+    let recorded = ctx
+        .reference_data_dir()
+        .join("liggghts")
+        .join(&ctx.spec.name);
+    let scene_file = ctx
+        .spec
+        .scene
+        .as_ref()
+        .ok_or_else(|| TampError::Other(format!("case {} names no scene", ctx.spec.name)))?;
+    let (scene, sha) = scene::load(&ctx.dir.join(scene_file))?;
+    let deck_path = recorded.join("deck").join("in.tamp");
+    let deck = std::fs::read_to_string(&deck_path)
+        .map_err(|e| TampError::io(format!("reading {}", deck_path.display()), e))?;
+    if !deck.contains(&format!("sha256 {sha}")) {
+        return Err(TampError::Other(format!(
+            "{} was exported from another version of {scene_file} (sha256 {sha}): re-record with regenerate.sh",
+            deck_path.display()
+        )));
+    }
+    let reference = compare::load(&recorded.join("trajectory.csv"))?;
+
+    let every = scene.output.trajectory_every.max(1);
+    let built = scene::build(&scene)?;
+    let mut sim = built.sim;
+    let mut mine = Run::default();
+    mine.record(&sim);
+    for _ in 0..built.steps {
+        sim.step()?;
+        if sim.step % every == 0 || sim.step == built.steps {
+            mine.record(&sim);
+        }
+    }
+    if mine.trajectory.len() != reference.trajectory.len() {
+        return Err(TampError::Other(format!(
+            "tamp recorded {} (step, particle) rows, LIGGGHTS {}: the runs do not cover the same steps",
+            mine.trajectory.len(),
+            reference.trajectory.len()
+        )));
+    }
+    let comparison = compare::compare(&mine, &reference, &BTreeMap::new());
+    crate::output::create_dir(&ctx.report_dir)?;
+    crate::output::write_atomic(
+        &ctx.report_dir.join(format!("{}.txt", ctx.spec.name)),
+        comparison.report().as_bytes(),
+    )?;
+    let worst = |item: &str| {
+        comparison
+            .deviations
+            .iter()
+            .find(|d| d.name == item)
+            .map(|d| d.deviation)
+            .ok_or_else(|| TampError::Other(format!("no {item} in the recorded trajectory")))
+    };
+    Ok(vec![
+        Measured::new("max_position_deviation", worst("position")?, 0.0),
+        Measured::new("max_velocity_deviation", worst("velocity")?, 0.0),
+        Measured::new("max_angular_velocity_deviation", worst("omega")?, 0.0),
+    ])
+}
