@@ -7,12 +7,12 @@
 //! partner's (spins included, at the half step v(n+½) like every contact velocity),
 //! F_n the total normal force (elastic + damping, not clipped: `limitForce off`).
 //!
-//!   s ← s + v_t Δt;  s ← s − (s·n) n        (l. 151–162: projected onto the tangent
+//!   s ← s + v_t Δt;  s ← s − (s·n) n        (l. 147–159: projected onto the tangent
 //!                                            plane, its length NOT restored)
-//!   F_t = −k_t s                             (l. 164–171, with the CURRENT k_t)
-//!   if k_t|s| > μ|F_n|  (slip, l. 178–205):  F_t ← F_t · μ|F_n| / (k_t|s|),
+//!   F_t = −k_t s                             (l. 166–171, with the CURRENT k_t)
+//!   if k_t|s| > μ|F_n|  (slip, l. 174–210):  F_t ← F_t · μ|F_n| / (k_t|s|),
 //!                                            s ← −F_t / k_t,  no damping this step
-//!   else                (stick, l. 207–211): F_t ← F_t − γ_t v_t
+//!   else                (stick, l. 212–226): F_t ← F_t − γ_t v_t
 //!                                            (not re-checked against the cone)
 //!
 //! with, per contact and per step (`tangential_damping on`, the LIGGGHTS default):
@@ -26,7 +26,7 @@
 //! The Coulomb test takes |F_n|, so a contact pulled together by the damping near its
 //! end (F_n < 0) still carries friction μ|F_n|.
 //!
-//! The torque −lever·(n × F_t) with lever R − δ/2 (l. 230–262) is tamp's, applied by
+//! The torque −lever·(n × F_t) with lever R − δ/2 (l. 229–263) is tamp's, applied by
 //! the simulation for every law. History: the shear displacement s (m), reset to zero
 //! when the bodies separate (pairs: `surfacesClose`; primitive walls:
 //! fix_wall_gran.cpp l. 1145–1150), as tamp resets every contact history.
