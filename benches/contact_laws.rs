@@ -19,6 +19,7 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
+use tamp::contact::damping::liggghts::LiggghtsModel;
 use tamp::contact::history::ContactHistory;
 use tamp::contact::van_der_waals::VanDerWaals;
 use tamp::contact::{
@@ -193,6 +194,12 @@ fn bench(c: &mut Criterion) {
         TangentialLaw::WaltonBraun { stiffness: 1e4 },
         TangentialLaw::MindlinNoSlip,
         TangentialLaw::Storakers { beta: 0.5 },
+        // ξ of liggghts_restitution e = 0.5 with Hertz: its tangential dashpot is part of
+        // the law.
+        TangentialLaw::LiggghtsHistory {
+            model: LiggghtsModel::Hertz,
+            xi: 0.196_7,
+        },
     ];
     bench_group(
         c,

@@ -11,6 +11,7 @@
 //! tamp has; a clearly negative D means the integration is adding energy (unstable).
 
 use crate::boundary::{Boundary, shape::ShapeContact};
+use crate::contact::damping::liggghts::LiggghtsModel;
 use crate::contact::{
     ContactGeometry, ContactLaw, history::ContactHistory, normal::NormalLaw,
     tangential::TangentialLaw,
@@ -751,6 +752,14 @@ impl Simulation {
             ) = self.law.tangential
             {
                 k = k.max(stiffness * lever);
+            }
+            if let Some(TangentialLaw::LiggghtsHistory {
+                model: LiggghtsModel::Hooke,
+                ..
+            }) = self.law.tangential
+            {
+                // k_t = k_n of the linear law, known before any contact.
+                k = k.max(impact * lever);
             }
             k = k.max(k_tangential * lever);
             let viscous = match self.law.tangential {

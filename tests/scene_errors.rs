@@ -371,3 +371,88 @@ fn deposited_spheres_that_hit_an_explicit_one_are_named() {
                            "footprint": [[-0.002, -0.002], [0.002, 0.002]], "floor": 0.0}]);
     expect_input_error(s, &["deposit (particle", "overlaps particles[0]"]);
 }
+
+#[test]
+fn liggghts_history_needs_liggghts_normal_law_damping_and_rotation() {
+    let history = json!({"law": "liggghts_history", "friction": 0.3});
+    let mut s = base();
+    s["contact"]["tangential"] = history.clone();
+    s["contact"]["normal"] = json!({"law": "storakers"});
+    s["materials"][0]["hollomon"] = json!({"strength": 1e9, "exponent": 0.3});
+    s["contact"].as_object_mut().unwrap().remove("damping");
+    expect_input_error(
+        s,
+        &[
+            "contact.tangential.law: 'liggghts_history' needs contact.normal.law 'hertz' (model hertz) or 'linear' (model hooke)",
+            "got 'storakers'",
+        ],
+    );
+    let mut s = base();
+    s["contact"]["tangential"] = history.clone();
+    expect_input_error(
+        s,
+        &[
+            "contact.damping: must be absent or of kind 'liggghts_restitution' with contact.tangential.law 'liggghts_history'",
+            "got kind 'critical_fraction'",
+        ],
+    );
+    let mut s = base();
+    s["contact"]["tangential"] = history.clone();
+    s["contact"]["damping"] = json!({"kind": "liggghts_restitution", "restitution": 0.5});
+    s.as_object_mut().unwrap().remove("rotation");
+    expect_input_error(
+        s,
+        &["rotation: is required by contact.tangential.law 'liggghts_history'"],
+    );
+    let mut s = base();
+    s["contact"]["tangential"] =
+        json!({"law": "liggghts_history", "friction": 0.3, "stiffness": 1e3});
+    s["contact"]["damping"] = json!({"kind": "liggghts_restitution", "restitution": 0.5});
+    expect_input_error(
+        s,
+        &[
+            "contact.tangential.stiffness: is not a parameter of contact.tangential.law 'liggghts_history'",
+        ],
+    );
+}
+
+#[test]
+fn liggghts_history_takes_its_model_and_damping_from_the_scene() {
+    use tamp::contact::damping::{Damping, liggghts::LiggghtsModel};
+    use tamp::contact::tangential::TangentialLaw;
+    for (normal, damping, model) in [
+        (
+            json!({"law": "hertz"}),
+            Some(json!({"kind": "liggghts_restitution", "restitution": 0.5})),
+            LiggghtsModel::Hertz,
+        ),
+        (
+            json!({"law": "linear", "stiffness": 1e3}),
+            Some(json!({"kind": "liggghts_restitution", "restitution": 0.9})),
+            LiggghtsModel::Hooke,
+        ),
+        (json!({"law": "hertz"}), None, LiggghtsModel::Hertz),
+    ] {
+        let mut s = base();
+        s["contact"]["normal"] = normal;
+        s["contact"]["tangential"] = json!({"law": "liggghts_history", "friction": 0.3});
+        match damping {
+            Some(d) => s["contact"]["damping"] = d,
+            None => {
+                s["contact"].as_object_mut().unwrap().remove("damping");
+            }
+        }
+        let scene = tamp::scene::parse(&s.to_string()).unwrap();
+        let law = tamp::scene::build(&scene).unwrap().sim.law;
+        // γ_t uses the normal damping's ξ; no damping means e = 1, ξ = 0.
+        let xi = match law.damping {
+            Some(Damping::CriticalFraction { xi }) => xi,
+            None => 0.0,
+            other => panic!("unexpected damping {other:?}"),
+        };
+        assert_eq!(
+            law.tangential,
+            Some(TangentialLaw::LiggghtsHistory { model, xi })
+        );
+    }
+}

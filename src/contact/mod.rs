@@ -90,6 +90,7 @@ impl ContactLaw {
             overlap: g.overlap,
             effective_radius: g.effective_radius,
             effective_shear_modulus: pair.effective_shear_modulus.unwrap_or(0.0),
+            effective_mass: g.effective_mass,
         }
     }
 

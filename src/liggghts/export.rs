@@ -29,7 +29,7 @@ use crate::contact::damping::liggghts::{SQRT_FIVE_SIXTHS, hooke_stiffness};
 use crate::error::{Result, TampError};
 use crate::material::{effective_mass, effective_modulus, effective_radius};
 use crate::particles::Vec3;
-use crate::scene::schema::{DampingSpec, NormalSpec};
+use crate::scene::schema::{DampingSpec, NormalSpec, TangentialLawName};
 use crate::scene::walls::MotionSpec;
 use crate::scene::{self, Scene};
 use std::fmt::Write as _;
@@ -129,8 +129,7 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
         }
     }
     if let Some(t) = &scene.contact.tangential {
-        // By name: the law lives in contact/tangential/liggghts_history.rs.
-        if t.law.name() != "liggghts_history" {
+        if t.law != TangentialLawName::LiggghtsHistory {
             refuse(
                 "contact.tangential.law",
                 &format!(

@@ -8,7 +8,7 @@ use crate::contact::{
     damping::Damping,
     damping::liggghts::{self, LiggghtsModel},
     normal::NormalLaw,
-    tangential::TangentialLaw,
+    tangential::{TangentialLaw, liggghts_history},
     van_der_waals::VanDerWaals,
 };
 use crate::detect::{Detector, NeighborList};
@@ -90,12 +90,11 @@ pub fn contact_law(spec: &ContactSpec) -> Result<ContactLaw> {
             })
         }
     };
-    Ok(ContactLaw {
-        normal,
-        damping,
-        tangential: spec.tangential.as_ref().map(|t| {
+    let tangential = match &spec.tangential {
+        None => None,
+        Some(t) => {
             let parameter = t.stiffness.or(t.damping).or(t.beta).unwrap_or(0.0);
-            match t.law {
+            Some(match t.law {
                 TangentialLawName::MindlinDeresiewicz => TangentialLaw::MindlinDeresiewicz,
                 TangentialLawName::Coulomb => TangentialLaw::Coulomb,
                 TangentialLawName::HaffWerner => TangentialLaw::HaffWerner { damping: parameter },
@@ -107,8 +106,14 @@ pub fn contact_law(spec: &ContactSpec) -> Result<ContactLaw> {
                 },
                 TangentialLawName::MindlinNoSlip => TangentialLaw::MindlinNoSlip,
                 TangentialLawName::Storakers => TangentialLaw::Storakers { beta: parameter },
-            }
-        }),
+                TangentialLawName::LiggghtsHistory => liggghts_history(spec, &normal, &damping)?,
+            })
+        }
+    };
+    Ok(ContactLaw {
+        normal,
+        damping,
+        tangential,
         cohesion: spec.cohesion.as_ref().map(|c| match *c {
             CohesionSpec::VanDerWaals {
                 hamaker,
@@ -121,6 +126,34 @@ pub fn contact_law(spec: &ContactSpec) -> Result<ContactLaw> {
             },
         }),
     })
+}
+
+/// `liggghts_history` for the scene's normal law and damping: the LIGGGHTS model gives
+/// k_t, the normal damping's ξ gives γ_t. Fails on the combinations validation refuses.
+fn liggghts_history(
+    spec: &ContactSpec,
+    normal: &NormalLaw,
+    damping: &Option<Damping>,
+) -> Result<TangentialLaw> {
+    let model = LiggghtsModel::of(normal).ok_or_else(|| {
+        TampError::input(
+            "contact.tangential.law",
+            liggghts_history::unsupported_normal_law(spec.normal.law()),
+        )
+    })?;
+    let xi = match (&spec.damping, damping) {
+        (None, _) => 0.0,
+        (Some(DampingSpec::LiggghtsRestitution { .. }), Some(Damping::CriticalFraction { xi })) => {
+            *xi
+        }
+        (Some(other), _) => {
+            return Err(TampError::input(
+                "contact.damping",
+                liggghts_history::unsupported_damping(other.kind()),
+            ));
+        }
+    };
+    Ok(TangentialLaw::LiggghtsHistory { model, xi })
 }
 
 pub fn build(scene: &Scene) -> Result<BuiltScene> {

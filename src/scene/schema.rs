@@ -137,6 +137,17 @@ pub enum DampingSpec {
     LiggghtsRestitution { restitution: f64 },
 }
 
+impl DampingSpec {
+    /// The `kind` tag as the scene writes it, for messages.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            DampingSpec::CriticalFraction { .. } => "critical_fraction",
+            DampingSpec::Constant { .. } => "constant",
+            DampingSpec::LiggghtsRestitution { .. } => "liggghts_restitution",
+        }
+    }
+}
+
 #[derive(Clone, Copy, Debug, Deserialize, Serialize, PartialEq, Eq)]
 #[serde(rename_all = "snake_case")]
 pub enum TangentialLawName {
@@ -154,6 +165,10 @@ pub enum TangentialLawName {
     MindlinNoSlip,
     /// Rojek eq 21, k_t = β k_n; needs `beta`.
     Storakers,
+    /// LIGGGHTS 3.8 `tangential history` (contact/tangential/liggghts_history.rs); only
+    /// with normal law `hertz` or `linear`, damping `liggghts_restitution` or none, and
+    /// rotation.
+    LiggghtsHistory,
 }
 
 impl TangentialLawName {
@@ -166,6 +181,7 @@ impl TangentialLawName {
             TangentialLawName::WaltonBraun => "walton_braun",
             TangentialLawName::MindlinNoSlip => "mindlin_no_slip",
             TangentialLawName::Storakers => "storakers",
+            TangentialLawName::LiggghtsHistory => "liggghts_history",
         }
     }
 

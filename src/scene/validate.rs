@@ -3,6 +3,7 @@
 
 use super::schema::*;
 use crate::contact::damping::liggghts::{self, LiggghtsModel};
+use crate::contact::tangential::liggghts_history;
 use crate::error::{Result, TampError};
 use std::collections::HashSet;
 
@@ -250,6 +251,25 @@ pub fn validate(scene: &Scene) -> Result<()> {
                 &mut e,
                 &format!("contact.tangential.law '{law}' (G*, Rojek eq 13)"),
             );
+        }
+        if t.law == TangentialLawName::LiggghtsHistory {
+            if LiggghtsModel::of(&super::build::normal_law(&contact.normal)).is_none() {
+                e.push(
+                    "contact.tangential.law",
+                    liggghts_history::unsupported_normal_law(normal_name),
+                );
+            }
+            if let Some(d) = &contact.damping
+                && !matches!(d, DampingSpec::LiggghtsRestitution { .. })
+            {
+                e.push(
+                    "contact.damping",
+                    liggghts_history::unsupported_damping(d.kind()),
+                );
+            }
+            if scene.rotation.is_none() {
+                e.push("rotation", liggghts_history::NEEDS_ROTATION);
+            }
         }
         e.non_negative("contact.tangential.friction", t.friction);
         // A pair is unordered: its key is its two names sorted.

@@ -7,12 +7,15 @@ pub mod coulomb;
 pub mod cundall_strack;
 pub mod haff_werner;
 pub mod incremental;
+pub mod liggghts_history;
 pub mod mindlin_deresiewicz;
 pub mod mindlin_no_slip;
 pub mod scalar_axis;
 pub mod storakers;
 pub mod walton_braun;
 
+use crate::contact::damping::critical_damping;
+use crate::contact::damping::liggghts::LiggghtsModel;
 use crate::contact::history::ContactHistory;
 use crate::particles::Vec3;
 
@@ -32,6 +35,11 @@ pub enum TangentialLaw {
     MindlinNoSlip,
     /// Rojek eq 21: k_t = β k_n.
     Storakers { beta: f64 },
+    /// LIGGGHTS 3.8 `tangential history`: k_t of the LIGGGHTS `model` (8G*√(R*δ) for
+    /// hertz, k_n for hooke) and γ_t = ξ·2√(m* k_t) with ξ the normal damping's
+    /// (`liggghts_restitution`, 0 without damping). Built from the scene's normal law
+    /// and damping.
+    LiggghtsHistory { model: LiggghtsModel, xi: f64 },
 }
 
 /// What a tangential law reads from the contact besides its history.
@@ -48,6 +56,8 @@ pub struct TangentialInput {
     pub overlap: f64,
     pub effective_radius: f64,
     pub effective_shear_modulus: f64,
+    /// m*, kg (the tangential damping of `liggghts_history`).
+    pub effective_mass: f64,
 }
 
 impl TangentialLaw {
@@ -60,6 +70,7 @@ impl TangentialLaw {
             TangentialLaw::WaltonBraun { .. } => "walton_braun",
             TangentialLaw::MindlinNoSlip => "mindlin_no_slip",
             TangentialLaw::Storakers { .. } => "storakers",
+            TangentialLaw::LiggghtsHistory { .. } => "liggghts_history",
         }
     }
 
@@ -75,7 +86,12 @@ impl TangentialLaw {
     pub fn needs_elastic_constants(&self) -> bool {
         matches!(
             self,
-            TangentialLaw::MindlinDeresiewicz | TangentialLaw::MindlinNoSlip
+            TangentialLaw::MindlinDeresiewicz
+                | TangentialLaw::MindlinNoSlip
+                | TangentialLaw::LiggghtsHistory {
+                    model: LiggghtsModel::Hertz,
+                    ..
+                }
         )
     }
 
@@ -119,6 +135,19 @@ impl TangentialLaw {
                 mu,
                 n,
             ),
+            TangentialLaw::LiggghtsHistory { xi, .. } => {
+                let k_t = self.stiffness(input);
+                liggghts_history::liggghts_history_force(
+                    &mut history.tangential,
+                    &input.normal,
+                    v_t,
+                    input.dt,
+                    k_t,
+                    xi * critical_damping(input.effective_mass, k_t),
+                    mu,
+                    n,
+                )
+            }
             TangentialLaw::WaltonBraun { stiffness } => {
                 walton_braun::walton_braun_tangential_force(
                     history,
@@ -140,26 +169,37 @@ impl TangentialLaw {
             TangentialLaw::Coulomb | TangentialLaw::HaffWerner { .. } => 0.0,
             TangentialLaw::CundallStrack { stiffness }
             | TangentialLaw::WaltonBraun { stiffness } => stiffness,
-            TangentialLaw::MindlinNoSlip | TangentialLaw::MindlinDeresiewicz => {
-                mindlin_no_slip::mindlin_no_slip_stiffness(
-                    input.overlap,
-                    input.effective_radius,
-                    input.effective_shear_modulus,
-                )
-            }
+            TangentialLaw::MindlinNoSlip
+            | TangentialLaw::MindlinDeresiewicz
+            | TangentialLaw::LiggghtsHistory {
+                model: LiggghtsModel::Hertz,
+                ..
+            } => mindlin_no_slip::mindlin_no_slip_stiffness(
+                input.overlap,
+                input.effective_radius,
+                input.effective_shear_modulus,
+            ),
+            TangentialLaw::LiggghtsHistory {
+                model: LiggghtsModel::Hooke,
+                ..
+            } => input.normal_stiffness,
             TangentialLaw::Storakers { beta } => {
                 storakers::storakers_tangential_stiffness(beta, input.normal_stiffness)
             }
         }
     }
 
-    /// Energy held in the tangential state, J: ½k|ξ|² for the Cundall–Strack spring,
-    /// ½|F_t|²/k_t for the laws that store the force.
+    /// Energy held in the tangential state, J: ½k|ξ|² for the laws that store a spring
+    /// displacement (Cundall–Strack, LIGGGHTS's shear), ½|F_t|²/k_t for the laws that
+    /// store the force.
     pub fn energy(&self, input: &TangentialInput, history: &ContactHistory) -> f64 {
         match *self {
             TangentialLaw::Coulomb | TangentialLaw::HaffWerner { .. } => 0.0,
             TangentialLaw::CundallStrack { stiffness } => {
                 0.5 * stiffness * history.tangential.norm_squared()
+            }
+            TangentialLaw::LiggghtsHistory { .. } => {
+                0.5 * self.stiffness(input) * history.tangential.norm_squared()
             }
             _ => {
                 let k = self.stiffness(input);

@@ -8,9 +8,11 @@ mod hertz_collision_time;
 mod hertz_yield_onset;
 mod hollomon_constants;
 mod kuwabara_kono_restitution;
+mod liggghts_oblique_wall_impact;
 mod liggghts_settled_packing;
 mod liggghts_three_sphere_trajectory;
 mod liggghts_two_sphere;
+mod liggghts_two_sphere_oblique;
 mod linear_restitution;
 mod momentum_conservation;
 pub mod probe;
@@ -55,6 +57,14 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ),
     ("liggghts_two_sphere_hertz", liggghts_two_sphere::hertz),
     ("liggghts_two_sphere_hooke", liggghts_two_sphere::hooke),
+    (
+        "liggghts_two_sphere_oblique",
+        liggghts_two_sphere_oblique::run,
+    ),
+    (
+        "liggghts_oblique_wall_impact",
+        liggghts_oblique_wall_impact::run,
+    ),
 ];
 
 pub fn find(name: &str) -> Option<CaseFn> {

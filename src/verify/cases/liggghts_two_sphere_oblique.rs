@@ -1,0 +1,228 @@
+//! Cross-check against LIGGGHTS 3.8.0: two equal spheres meet obliquely, so the
+//! `liggghts_history` tangential law (shear spring, Coulomb test on the total normal
+//! force, tangential damping) and the spins take part. One run per (model, e, μ) that
+//! LIGGGHTS was run with; the reference values are the final velocity and spin of the
+//! first sphere, read from `reference_data/liggghts/liggghts_two_sphere_oblique/results.csv`
+//! (written by `reference_data/liggghts/run_two_sphere_oblique.sh`). `model hooke` rows
+//! run tamp's `linear` law with LIGGGHTS's k_n (`hooke_stiffness`). The case refuses to
+//! compare when the scene and the recorded LIGGGHTS inputs disagree.
+
+use crate::contact::damping::liggghts::hooke_stiffness;
+use crate::error::{Result, TampError};
+use crate::material::{Material, effective_mass, effective_modulus, effective_radius};
+use crate::measure::region::ball_volume;
+use crate::scene::{
+    self, Scene,
+    schema::{DampingSpec, NormalSpec},
+};
+use crate::verify::{CaseContext, Measured};
+use serde::Deserialize;
+
+/// One LIGGGHTS run, as `two_sphere_oblique_extract.py` writes it (`final_overlap` is
+/// for people and is not read).
+#[derive(Debug, Deserialize)]
+struct Row {
+    model: String,
+    restitution_in: f64,
+    friction: f64,
+    time_step: f64,
+    steps: u64,
+    youngs_modulus: f64,
+    poisson_ratio: f64,
+    density: f64,
+    radius: f64,
+    normal_speed: f64,
+    tangential_speed: f64,
+    initial_gap: f64,
+    characteristic_velocity: f64,
+    vx: f64,
+    vy: f64,
+    omega_z: f64,
+}
+
+/// The rows of `reference_data/liggghts/<case>/results.csv`.
+pub(super) fn read_rows<T: serde::de::DeserializeOwned>(ctx: &CaseContext) -> Result<Vec<T>> {
+    let path = ctx
+        .reference_data_dir()
+        .join("liggghts")
+        .join(&ctx.spec.name)
+        .join("results.csv");
+    let bad = |what: String| TampError::Other(format!("{}: {what}", path.display()));
+    let mut reader = csv::Reader::from_path(&path).map_err(|e| bad(e.to_string()))?;
+    let rows = reader
+        .deserialize()
+        .collect::<std::result::Result<Vec<T>, _>>()
+        .map_err(|e| bad(e.to_string()))?;
+    if rows.is_empty() {
+        return Err(bad("no LIGGGHTS runs recorded".into()));
+    }
+    Ok(rows)
+}
+
+/// Collects "what: scene …, LIGGGHTS …" for inputs that differ by more than 1e-12.
+#[derive(Default)]
+pub(super) struct Mismatches(pub Vec<String>);
+
+impl Mismatches {
+    pub fn check(&mut self, what: &str, tamp: f64, liggghts: f64) {
+        // Written so that a NaN on either side is a mismatch.
+        let close = (tamp - liggghts).abs() <= 1e-12 * liggghts.abs();
+        if !close {
+            self.0
+                .push(format!("{what}: scene {tamp:e}, LIGGGHTS {liggghts:e}"));
+        }
+    }
+
+    /// The material, time step and tangential law every LIGGGHTS case shares.
+    pub fn check_common(&mut self, scene: &Scene, row: Common) {
+        let m = &scene.materials[0];
+        self.check("density", m.density, row.density);
+        self.check(
+            "youngs_modulus",
+            m.youngs_modulus.unwrap_or(f64::NAN),
+            row.youngs_modulus,
+        );
+        self.check(
+            "poisson_ratio",
+            m.poisson_ratio.unwrap_or(f64::NAN),
+            row.poisson_ratio,
+        );
+        self.check(
+            "time_step",
+            scene.time_step.fixed.unwrap_or(f64::NAN),
+            row.time_step,
+        );
+        if !scene.contact.tangential.as_ref().is_some_and(|t| {
+            t.law == crate::scene::schema::TangentialLawName::LiggghtsHistory
+                && t.friction_pairs.is_empty()
+        }) {
+            self.0.push(
+                "contact.tangential: LIGGGHTS ran tangential history, the scene needs law 'liggghts_history' with one friction".into(),
+            );
+        }
+        if scene.rotation.as_ref().map(|r| r.inertia_scale) != Some(1.0) {
+            self.0.push(
+                "rotation: LIGGGHTS integrates spins with I = 0.4 m R^2 (inertia_scale 1)".into(),
+            );
+        }
+        if scene.gravity.is_some() {
+            self.0.push("gravity: LIGGGHTS ran without gravity".into());
+        }
+    }
+}
+
+/// The inputs every LIGGGHTS row records.
+#[derive(Clone, Copy)]
+pub(super) struct Common {
+    pub density: f64,
+    pub youngs_modulus: f64,
+    pub poisson_ratio: f64,
+    pub time_step: f64,
+}
+
+/// Differences between the scene and the inputs LIGGGHTS ran with.
+fn mismatches(scene: &Scene, row: &Row) -> Vec<String> {
+    let mut out = Mismatches::default();
+    out.check_common(
+        scene,
+        Common {
+            density: row.density,
+            youngs_modulus: row.youngs_modulus,
+            poisson_ratio: row.poisson_ratio,
+            time_step: row.time_step,
+        },
+    );
+    if scene.particles.len() != 2 {
+        out.0.push("particles: LIGGGHTS ran two spheres".into());
+        return out.0;
+    }
+    let [a, b] = [&scene.particles[0], &scene.particles[1]];
+    out.check("radius of particles[0]", a.radius, row.radius);
+    out.check("radius of particles[1]", b.radius, row.radius);
+    // LIGGGHTS puts the centres at ∓(R + gap/2) on x and the velocities at ±(v0, vt0, 0).
+    let x = row.radius + 0.5 * row.initial_gap;
+    let v = [0.5 * row.normal_speed, 0.5 * row.tangential_speed, 0.0];
+    let (va, vb) = (
+        a.velocity.unwrap_or([0.0; 3]),
+        b.velocity.unwrap_or([0.0; 3]),
+    );
+    for (k, axis) in ["x", "y", "z"].iter().enumerate() {
+        let x_k = if k == 0 { x } else { 0.0 };
+        out.check(
+            &format!("particles[0].position.{axis}"),
+            a.position[k],
+            -x_k,
+        );
+        out.check(&format!("particles[1].position.{axis}"), b.position[k], x_k);
+        out.check(&format!("particles[0].velocity.{axis}"), va[k], v[k]);
+        out.check(&format!("particles[1].velocity.{axis}"), vb[k], -v[k]);
+    }
+    out.0
+}
+
+/// The scene of one LIGGGHTS row: its restitution, friction and normal model.
+fn scene_of(base: &Scene, row: &Row) -> Result<Scene> {
+    let mut s = base.clone();
+    s.contact.damping = Some(DampingSpec::LiggghtsRestitution {
+        restitution: row.restitution_in,
+    });
+    if let Some(t) = s.contact.tangential.as_mut() {
+        t.friction = row.friction;
+    }
+    s.contact.normal = match row.model.as_str() {
+        "hertz" => NormalSpec::Hertz {},
+        "hooke" => {
+            // model hooke: k_n from the materials and characteristicVelocity.
+            let steel = Material {
+                name: "LIGGGHTS type 1".into(),
+                density: row.density,
+                youngs_modulus: Some(row.youngs_modulus),
+                poisson_ratio: Some(row.poisson_ratio),
+                hollomon: None,
+            };
+            let mass = row.density * ball_volume(row.radius);
+            NormalSpec::Linear {
+                stiffness: hooke_stiffness(
+                    effective_mass(mass, mass),
+                    effective_radius(row.radius, row.radius),
+                    effective_modulus(&steel, &steel).expect("both elastic constants are given"),
+                    row.characteristic_velocity,
+                ),
+            }
+        }
+        other => {
+            return Err(TampError::Other(format!(
+                "LIGGGHTS model '{other}' has no tamp counterpart in this case"
+            )));
+        }
+    };
+    Ok(s)
+}
+
+pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
+    let base = ctx.scene()?;
+    let mut out = Vec::new();
+    for row in read_rows::<Row>(ctx)? {
+        let tag = format!("{}_e{}_mu{}", row.model, row.restitution_in, row.friction);
+        let problems = mismatches(&base, &row);
+        if !problems.is_empty() {
+            return Err(TampError::Other(format!(
+                "the scene is not the one LIGGGHTS ran ({tag}): {}",
+                problems.join("; ")
+            )));
+        }
+        let mut sim = scene::build(&scene_of(&base, &row)?)?.sim;
+        for _ in 0..row.steps {
+            sim.step()?;
+        }
+        let p = &sim.particles;
+        out.push(Measured::new(&format!("{tag}_vx"), p.velocity[0].x, row.vx));
+        out.push(Measured::new(&format!("{tag}_vy"), p.velocity[0].y, row.vy));
+        out.push(Measured::new(
+            &format!("{tag}_omega_z"),
+            p.omega[0].z,
+            row.omega_z,
+        ));
+    }
+    Ok(out)
+}
