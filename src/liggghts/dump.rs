@@ -57,6 +57,18 @@ impl Frame {
     }
 }
 
+/// One atom line, before the frame is sorted by id.
+struct Atom {
+    id: u64,
+    atom_type: u32,
+    radius: f64,
+    position: Vec3,
+    velocity: Vec3,
+    omega: Vec3,
+    mass: f64,
+    force: Vec3,
+}
+
 fn bad(path: &Path, line: usize, rule: impl Into<String>) -> TampError {
     TampError::input(format!("{}:{line}", path.display()), rule)
 }
@@ -150,7 +162,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Vec<Frame>> {
         let omg = [col("omegax"), col("omegay"), col("omegaz")];
         let frc = [col("fx"), col("fy"), col("fz")];
         let cm = col("mass");
-        let mut rows: Vec<(u64, u32, f64, Vec3, Vec3, Vec3, f64, Vec3)> = Vec::with_capacity(n);
+        let mut rows: Vec<Atom> = Vec::with_capacity(n);
         for r in 0..n {
             let at = k + 9 + r;
             let line = lines
@@ -183,30 +195,30 @@ pub fn parse(text: &str, path: &Path) -> Result<Vec<Frame>> {
                     .map_err(|_| bad(path, at + 1, format!("type '{}' is not an integer", v[c])))?,
                 None => 1,
             };
-            rows.push((
+            rows.push(Atom {
                 id,
                 atom_type,
-                f(radius_col)? * scale,
-                Vec3::new(f(cx)?, f(cy)?, f(cz)?),
-                opt3(vel)?,
-                opt3(omg)?,
-                match cm {
+                radius: f(radius_col)? * scale,
+                position: Vec3::new(f(cx)?, f(cy)?, f(cz)?),
+                velocity: opt3(vel)?,
+                omega: opt3(omg)?,
+                mass: match cm {
                     Some(c) => f(c)?,
                     None => 0.0,
                 },
-                opt3(frc)?,
-            ));
+                force: opt3(frc)?,
+            });
         }
-        rows.sort_by_key(|r| r.0);
-        for (id, t, r, x, v, w, m, force) in rows {
-            frame.id.push(id);
-            frame.atom_type.push(t);
-            frame.radius.push(r);
-            frame.position.push(x);
-            frame.velocity.push(v);
-            frame.omega.push(w);
-            frame.mass.push(m);
-            frame.force.push(force);
+        rows.sort_by_key(|a| a.id);
+        for a in rows {
+            frame.id.push(a.id);
+            frame.atom_type.push(a.atom_type);
+            frame.radius.push(a.radius);
+            frame.position.push(a.position);
+            frame.velocity.push(a.velocity);
+            frame.omega.push(a.omega);
+            frame.mass.push(a.mass);
+            frame.force.push(a.force);
         }
         frames.push(frame);
         k += 9 + n;

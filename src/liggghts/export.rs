@@ -591,7 +591,16 @@ pub fn export(
         deck.push_str("# LIGGGHTS 3.8 refuses youngsModulus < 5e6 Pa in SI units without this.\nsoft_particles yes\n");
     }
     deck.push_str("read_data    particles.data\n");
-    let _ = writeln!(deck, "neighbor     {} bin\nneigh_modify delay 0", g(skin));
+    // contact_distance_factor > 1 makes LIGGGHTS reset the tangential history of a
+    // pair that has separated (surfacesClose, pair_gran_base.h l. 414): with the
+    // default 1 the stale shear survives while the pair stays neighbours, and a
+    // contact that re-forms starts from it (docs/liggghts.md). 1.01 is a band of
+    // 0.01 (R_i + R_j) that every separating pair crosses at the speeds of a step.
+    let _ = writeln!(
+        deck,
+        "neighbor     {} bin\nneigh_modify delay 0 contact_distance_factor 1.01",
+        g(skin)
+    );
     for line in &model.properties {
         let _ = writeln!(deck, "{line}");
     }
