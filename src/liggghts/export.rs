@@ -431,7 +431,7 @@ fn revolved_triangles(shape: &Revolved) -> Vec<[Vec3; 3]> {
     };
     let mut out = Vec::new();
     for pair in shape.profile().windows(2) {
-        let ((h0, r0), (h1, r1)) = (pair[0], pair[1]);
+        let ((r0, h0), (r1, h1)) = (pair[0], pair[1]);
         for k in 0..REVOLVED_SEGMENTS {
             let (a, b) = (point(h0, r0, k), point(h0, r0, k + 1));
             let (c, d) = (point(h1, r1, k), point(h1, r1, k + 1));
@@ -679,7 +679,8 @@ pub fn export(
             }
             Shape::Revolved(r) => {
                 let profile = r.profile();
-                let cylinder = profile.len() == 2 && profile[0].1 == profile[1].1;
+                // Profile points are (radius, height along the axis).
+                let cylinder = profile.len() == 2 && profile[0].0 == profile[1].0;
                 match (axis_of(&r.axis()), cylinder, velocity) {
                     (Some(a), true, None) => {
                         let o = r.origin();
@@ -687,13 +688,13 @@ pub fn export(
                         primitives.push(format!(
                             "{}cylinder {} {} {}",
                             AXES[a],
-                            g(profile[0].1),
+                            g(profile[0].0),
                             g(o[b]),
                             g(o[c])
                         ));
                         notes.push(format!(
                             "walls[{k}]: a LIGGGHTS primitive cylinder is infinite along its axis; tamp's ends at heights {} and {}",
-                            profile[0].0, profile[1].0
+                            profile[0].1, profile[1].1
                         ));
                     }
                     _ => {
@@ -765,7 +766,12 @@ pub fn export(
         deck,
         "write_dump   all custom final.liggghts {DUMP_COLUMNS} modify format \"{format}\" sort id"
     );
-    for note in &notes {
+    if !meshes.is_empty() {
+        notes.push(
+            "run LIGGGHTS with its screen output on (not -screen none): LIGGGHTS 3.8 crashes reading an STL mesh without a screen".into(),
+        );
+    }
+    for note in notes.iter().rev() {
         deck.insert_str(0, &format!("# note: {note}\n"));
     }
     crate::output::write_atomic(&out_dir.join("in.tamp"), deck.as_bytes())?;
@@ -783,6 +789,28 @@ pub fn export(
 mod tests {
     use super::*;
     use crate::contact::damping::liggghts::beta;
+
+    #[test]
+    fn revolved_facets_lie_on_the_profile() {
+        // A cone frustum from radius 12 mm at height 0 to 20 mm at height 10 mm.
+        let cone = Revolved::cone(
+            Vec3::new(0.0, 0.0, 0.03),
+            Vec3::z(),
+            (0.012, 0.0),
+            (0.020, 0.01),
+        )
+        .unwrap();
+        let facets = revolved_triangles(&cone);
+        assert_eq!(facets.len(), 2 * REVOLVED_SEGMENTS);
+        for v in facets.iter().flatten() {
+            let (r, h) = ((v.x * v.x + v.y * v.y).sqrt(), v.z - 0.03);
+            let on_profile = 0.012 + (0.020 - 0.012) * h / 0.01;
+            assert!(
+                (r - on_profile).abs() < 1e-12,
+                "vertex {v:?} is off the cone"
+            );
+        }
+    }
 
     #[test]
     fn restitution_inverts_beta() {
