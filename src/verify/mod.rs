@@ -97,6 +97,25 @@ impl CaseContext<'_> {
             .join("reference_data")
     }
 
+    /// The rows of `reference_data/liggghts/<case>/results.csv` (at least one).
+    pub fn liggghts_results<T: serde::de::DeserializeOwned>(&self) -> Result<Vec<T>> {
+        let path = self
+            .reference_data_dir()
+            .join("liggghts")
+            .join(&self.spec.name)
+            .join("results.csv");
+        let bad = |what: String| TampError::Other(format!("{}: {what}", path.display()));
+        let mut reader = csv::Reader::from_path(&path).map_err(|e| bad(e.to_string()))?;
+        let rows = reader
+            .deserialize()
+            .collect::<std::result::Result<Vec<T>, _>>()
+            .map_err(|e| bad(e.to_string()))?;
+        if rows.is_empty() {
+            return Err(bad("no LIGGGHTS runs recorded".into()));
+        }
+        Ok(rows)
+    }
+
     /// The case's scene, parsed and validated like any user scene.
     pub fn scene(&self) -> Result<Scene> {
         let file =

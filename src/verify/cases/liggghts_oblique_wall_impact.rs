@@ -15,7 +15,7 @@
 //! prediction: gross sliding v_t' = v_t − μ(1 + e)v_n, ωR = (5/2)μ(1 + e)v_n while
 //! v_t/v_n ≥ (7/2)μ(1 + e), else rolling at the end, v_t' = ωR = (5/7)v_t.
 
-use super::liggghts_two_sphere_oblique::{Common, Mismatches, read_rows};
+use super::liggghts_two_sphere_oblique::{Common, Mismatches};
 use crate::error::{Result, TampError};
 use crate::output::plot::{Panel, Series, write_svg};
 use crate::scene::{
@@ -127,7 +127,7 @@ fn rigid_body(v_t: f64, v_n: f64, mu: f64, e: f64) -> (f64, f64) {
 
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let base = ctx.scene()?;
-    let rows: Vec<Row> = read_rows(ctx)?;
+    let rows: Vec<Row> = ctx.liggghts_results()?;
     let mut rebounds = Vec::new();
     for row in &rows {
         let problems = mismatches(&base, row);

@@ -78,19 +78,11 @@ fn tamp_measures(base: &scene::Scene, seed: u64) -> Result<[f64; 3]> {
 }
 
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
-    let path = ctx
-        .reference_data_dir()
-        .join("liggghts")
-        .join(&ctx.spec.name)
-        .join("results.csv");
-    let bad = |what: String| TampError::Other(format!("{}: {what}", path.display()));
-    let mut reader = csv::Reader::from_path(&path).map_err(|e| bad(e.to_string()))?;
-    let rows = reader
-        .deserialize()
-        .collect::<std::result::Result<Vec<Row>, _>>()
-        .map_err(|e| bad(e.to_string()))?;
+    let rows: Vec<Row> = ctx.liggghts_results()?;
     if rows.len() < 2 {
-        return Err(bad("needs at least two seeds to state a spread".into()));
+        return Err(TampError::Other(
+            "results.csv: needs at least two seeds to state a spread".into(),
+        ));
     }
     let base = ctx.scene()?;
     let mut tamp_values: Vec<[f64; 3]> = Vec::new();

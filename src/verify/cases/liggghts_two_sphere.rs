@@ -46,24 +46,6 @@ pub fn hooke(ctx: &CaseContext) -> Result<Vec<Measured>> {
     run(ctx, "hooke")
 }
 
-fn read_rows(ctx: &CaseContext) -> Result<Vec<Row>> {
-    let path = ctx
-        .reference_data_dir()
-        .join("liggghts")
-        .join(&ctx.spec.name)
-        .join("results.csv");
-    let bad = |what: String| TampError::Other(format!("{}: {what}", path.display()));
-    let mut reader = csv::Reader::from_path(&path).map_err(|e| bad(e.to_string()))?;
-    let rows = reader
-        .deserialize()
-        .collect::<std::result::Result<Vec<Row>, _>>()
-        .map_err(|e| bad(e.to_string()))?;
-    if rows.is_empty() {
-        return Err(bad("no LIGGGHTS runs recorded".into()));
-    }
-    Ok(rows)
-}
-
 /// Differences between the scene and the inputs LIGGGHTS ran with.
 fn mismatches(scene: &Scene, row: &Row, model: &str) -> Vec<String> {
     let mut out = Vec::new();
@@ -136,7 +118,7 @@ fn mismatches(scene: &Scene, row: &Row, model: &str) -> Vec<String> {
 fn run(ctx: &CaseContext, model: &str) -> Result<Vec<Measured>> {
     let base = ctx.scene()?;
     let mut out = Vec::new();
-    for row in read_rows(ctx)? {
+    for row in ctx.liggghts_results()? {
         let problems = mismatches(&base, &row, model);
         if !problems.is_empty() {
             return Err(TampError::Other(format!(

@@ -40,25 +40,6 @@ struct Row {
     omega_z: f64,
 }
 
-/// The rows of `reference_data/liggghts/<case>/results.csv`.
-pub(super) fn read_rows<T: serde::de::DeserializeOwned>(ctx: &CaseContext) -> Result<Vec<T>> {
-    let path = ctx
-        .reference_data_dir()
-        .join("liggghts")
-        .join(&ctx.spec.name)
-        .join("results.csv");
-    let bad = |what: String| TampError::Other(format!("{}: {what}", path.display()));
-    let mut reader = csv::Reader::from_path(&path).map_err(|e| bad(e.to_string()))?;
-    let rows = reader
-        .deserialize()
-        .collect::<std::result::Result<Vec<T>, _>>()
-        .map_err(|e| bad(e.to_string()))?;
-    if rows.is_empty() {
-        return Err(bad("no LIGGGHTS runs recorded".into()));
-    }
-    Ok(rows)
-}
-
 /// Collects "what: scene …, LIGGGHTS …" for inputs that differ by more than 1e-12.
 #[derive(Default)]
 pub(super) struct Mismatches(pub Vec<String>);
@@ -202,7 +183,7 @@ fn scene_of(base: &Scene, row: &Row) -> Result<Scene> {
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let base = ctx.scene()?;
     let mut out = Vec::new();
-    for row in read_rows::<Row>(ctx)? {
+    for row in ctx.liggghts_results::<Row>()? {
         let tag = format!("{}_e{}_mu{}", row.model, row.restitution_in, row.friction);
         let problems = mismatches(&base, &row);
         if !problems.is_empty() {
