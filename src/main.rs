@@ -69,6 +69,10 @@ enum Command {
         /// Gravity along −z, m/s²: adds floor_force_over_weight (needs mass and fz).
         #[arg(long)]
         gravity: Option<f64>,
+        /// Average floor_force_over_weight over the frames from this step on
+        /// (default: the last frame only).
+        #[arg(long)]
+        average_from: Option<u64>,
     },
     /// Compare run A with the reference run B (layout: docs/compare.md); exit 1
     /// beyond tolerance.
@@ -135,8 +139,9 @@ fn main() -> ExitCode {
             out,
             floor,
             gravity,
+            average_from,
         } => {
-            tamp::liggghts::import::run_cli(&file, &out, floor, gravity).map(|q| {
+            tamp::liggghts::import::run_cli(&file, &out, floor, gravity, average_from).map(|q| {
                 for (name, value) in q {
                     println!("{name} = {value:e}");
                 }

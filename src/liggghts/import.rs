@@ -10,7 +10,8 @@
 //!   `packing_fraction` (the bulk fraction below the Gibbs surface of a bed on the
 //!   floor `z = floor`, by default the lowest sphere bottom; `measure::bed`; only
 //!   for a box periodic in x and y),
-//!   `mean_speed`, and with `--gravity g` `floor_force_over_weight`.
+//!   `mean_speed`, and with `--gravity g` `floor_force_over_weight` (of the last
+//!   frame, or averaged over the frames from step `--average-from` on).
 
 use super::dump;
 use crate::compare::{TRAJECTORY_HEADER, quantities_csv, trajectory_row};
@@ -91,10 +92,21 @@ pub fn state_measures(
 /// (force of the floor on the bed)/(weight) from a frame's total forces: the dumped
 /// f includes gravity and the walls, and the pair forces cancel in the sum, so the
 /// floor carries Σf_z + Σm g. Needs the `mass` and `fz` columns.
-pub fn floor_force_over_weight(frame: &dump::Frame, gravity: f64) -> f64 {
+fn floor_force_over_weight(frame: &dump::Frame, gravity: f64) -> f64 {
     let weight: f64 = frame.mass.iter().sum::<f64>() * gravity;
     let net: f64 = frame.force.iter().map(|f| f.z).sum();
     (net + weight) / weight
+}
+
+/// `floor_force_over_weight` averaged over the frames from step `from` on: a settling
+/// bed rings, and one frame samples a force that fluctuates by a few per cent.
+pub fn mean_floor_force_over_weight(frames: &[dump::Frame], gravity: f64, from: u64) -> f64 {
+    let window: Vec<f64> = frames
+        .iter()
+        .filter(|f| f.step >= from)
+        .map(|f| floor_force_over_weight(f, gravity))
+        .collect();
+    window.iter().sum::<f64>() / window.len() as f64
 }
 
 pub fn run_cli(
@@ -102,6 +114,7 @@ pub fn run_cli(
     out_dir: &Path,
     floor: Option<f64>,
     gravity: Option<f64>,
+    average_from: Option<u64>,
 ) -> Result<Vec<(String, f64)>> {
     let frames = dump::read(file)?;
     let mut trajectory = format!("{TRAJECTORY_HEADER}\n");
@@ -129,9 +142,10 @@ pub fn run_cli(
                 "needs a dump with a positive 'mass' column for every atom",
             ));
         }
+        let from = average_from.unwrap_or(last.step);
         quantities.push((
             "floor_force_over_weight".to_string(),
-            floor_force_over_weight(last, g),
+            mean_floor_force_over_weight(&frames, g, from),
         ));
     }
     crate::output::create_dir(out_dir)?;

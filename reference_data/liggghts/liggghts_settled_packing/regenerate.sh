@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Record (or re-run) the LIGGGHTS side of liggghts_settled_packing: for seeds 1-3,
+# Record (or re-run) the LIGGGHTS side of liggghts_settled_packing: for seeds 1-5,
 # export the case's scene with that seed (tamp places the same 2000 spheres both
 # codes start from), run LIGGGHTS, measure the final frame with tamp's measures,
 # and collect one row per seed in results.csv.
@@ -14,12 +14,13 @@ scene=$here/../../../verification/liggghts_settled_packing.scene.json
 # The scene's gravity is 9.81 m/s² along -z and its floor the plane z = 0.
 rows=$out/.results.csv.tmp
 echo "seed,packing_fraction,coordination_number,bottom_wall_force_over_weight,bed_height,mean_speed" > "$rows"
-for seed in 1 2 3; do
+for seed in 1 2 3 4 5; do
   d=$out/seed$seed
   rm -rf "$d"
-  "$tamp" export-liggghts "$scene" --out "$d" --seed "$seed"
+  # Frames every 500 steps: the floor force is averaged over t = 0.4-0.5 s (step 80000 on).
+  "$tamp" export-liggghts "$scene" --out "$d" --seed "$seed" --dump-every 500
   (cd "$d" && liggghts -in in.tamp -log log.liggghts -screen none)
-  "$tamp" import-liggghts-dump "$d/final.liggghts" --out "$d/measured" --floor 0 --gravity 9.81
+  "$tamp" import-liggghts-dump "$d/dump.liggghts" --out "$d/measured" --floor 0 --gravity 9.81 --average-from 80000
   awk -F, -v s="$seed" 'NR > 1 { q[$1] = $2 }
     END { print s "," q["packing_fraction"] "," q["coordination_number"] "," q["floor_force_over_weight"] "," q["bed_height"] "," q["mean_speed"] }' \
     "$d/measured/quantities.csv" >> "$rows"
