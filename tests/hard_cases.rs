@@ -1,6 +1,9 @@
 //! Hard cases (issue 8): scenes at the edges of what the integrator and the contact
 //! laws must survive. Each test states what it proves; none may end in a NaN.
 
+// NiAl's Poisson ratio 0.318 (Rojek 2016 Table 2) is a material constant, not 1/π.
+#![allow(clippy::approx_constant)]
+
 use serde_json::{Value, json};
 use tamp::error::TampError;
 use tamp::scene;
@@ -216,13 +219,7 @@ fn size_ratio_100_in_one_bed() {
     let start: Vec<f64> = sim.particles.position.iter().map(|x| x.z).collect();
     sim.run_with(b.steps, |_| {}).expect("stable");
     assert!(all_finite(&sim));
-    let p = &sim.particles;
-    for i in 0..p.len() {
-        assert!(
-            p.position[i].z <= start[i] + 1e-6,
-            "sphere {i} rose from {} to {}",
-            start[i],
-            p.position[i].z
-        );
+    for (i, (x, z0)) in sim.particles.position.iter().zip(&start).enumerate() {
+        assert!(x.z <= z0 + 1e-6, "sphere {i} rose from {z0} to {}", x.z);
     }
 }
