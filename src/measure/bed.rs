@@ -26,11 +26,9 @@
 //! its own top layer. The bed must be at least 3d deep.
 //!
 //! The interior fraction. The floor orders the spheres next to it into a looser
-//! layer, and the top diameter is loose too; both are about one large diameter thick,
-//! so their weight in φ_bulk falls as the bed gets deeper (a bed 6.7 d deep of the
-//! Zhong mixture at N_s/N_b = 300 reads 0.767 in bulk and 0.823 inside). The
+//! layer about one large diameter thick, and the top diameter is loose too. The
 //! interior fraction is the solid fraction of the slab [floor + d, floor + H − d],
-//! the measure that does not depend on the depth; a bed at least 3d deep leaves it at
+//! away from both, as the Scott case measures; a bed at least 3d deep leaves it at
 //! least about one diameter thick.
 //!
 //! Each slab's solid is exact: Σ_i V(ball_i ∩ slab) from spherical caps

@@ -17,11 +17,11 @@
 //! Measured: the interior fraction of the settled bed, the slab from one large
 //! diameter above the floor to one below the bed's Gibbs surface (`measure::bed`),
 //! as the Scott case measures away from the floor and the loose top. The bulk
-//! fraction of the whole bed below its surface is written beside it: it includes the
-//! floor's loose layer and the top diameter, whose weight depends on the depth of the
-//! bed (N_b = 200 at N_s/N_b = 300: bulk 0.767, interior 0.823;
-//! docs/paper-discrepancies.md §20). The peak ratio is the vertex of the parabola in
-//! ln(N_s/N_b) through the highest point and its two neighbours.
+//! fraction of the whole bed below its surface is written beside it; it includes the
+//! floor's loose layer and the top diameter. At the peak the two agree to 0.004, and
+//! the interior one varies less from seed to seed (docs/paper-discrepancies.md §20).
+//! The peak ratio is the vertex of the parabola in ln(N_s/N_b) through the highest
+//! point and its two neighbours.
 //!
 //! Independent reference for the shape: Furnas' limit of an infinite size ratio.
 //! Small spheres filling the voids of a large-sphere packing of fraction φ₀ give
