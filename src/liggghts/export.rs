@@ -579,7 +579,8 @@ pub fn export(
     let _ = writeln!(
         deck,
         "# scene '{}', sha256 {sha}, seed {}\n# run: liggghts -in in.tamp",
-        scene.name, scene.seed
+        scene.name.replace(['\n', '\r'], " "),
+        scene.seed
     );
     deck.push_str("atom_style   granular\natom_modify  map array\n");
     let _ = writeln!(deck, "boundary     {}", boundary.join(" "));
@@ -630,20 +631,9 @@ pub fn export(
     }
 
     // Walls.
-    let (ext_lo, ext_hi) = extent(&sim, scene);
-    let half = (ext_hi - ext_lo).norm() * 2.0 + 10.0 * max_r;
-    let wall_model = format!(
-        "model {}",
-        model
-            .pair_style
-            .replace(" absolute_damping on", "")
-            .replace("model ", "")
-    );
-    let wall_model = if model.pair_style.contains("absolute_damping") {
-        format!("{wall_model} absolute_damping on")
-    } else {
-        wall_model
-    };
+    // Walls take the pair's contact model (fix wall/gran accepts the same keywords).
+    let half = (hi - lo).norm() * 2.0 + 10.0 * max_r;
+    let wall_model = &model.pair_style;
     let mut meshes: Vec<String> = Vec::new();
     for (k, (wall, spec)) in sim.walls.iter().zip(&scene.walls).enumerate() {
         let wtype = wall.material + 1;

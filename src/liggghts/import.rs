@@ -98,15 +98,20 @@ fn floor_force_over_weight(frame: &dump::Frame, gravity: f64) -> f64 {
     (net + weight) / weight
 }
 
-/// `floor_force_over_weight` averaged over the frames from step `from` on: a settling
-/// bed rings, and one frame samples a force that fluctuates by a few per cent.
-pub fn mean_floor_force_over_weight(frames: &[dump::Frame], gravity: f64, from: u64) -> f64 {
+/// `floor_force_over_weight` averaged over the frames from step `from` on (None when
+/// there are none): a settling bed rings, and one frame samples a force that
+/// fluctuates by a few per cent.
+pub fn mean_floor_force_over_weight(
+    frames: &[dump::Frame],
+    gravity: f64,
+    from: u64,
+) -> Option<f64> {
     let window: Vec<f64> = frames
         .iter()
         .filter(|f| f.step >= from)
         .map(|f| floor_force_over_weight(f, gravity))
         .collect();
-    window.iter().sum::<f64>() / window.len() as f64
+    (!window.is_empty()).then(|| window.iter().sum::<f64>() / window.len() as f64)
 }
 
 pub fn run_cli(
@@ -143,10 +148,16 @@ pub fn run_cli(
             ));
         }
         let from = average_from.unwrap_or(last.step);
-        quantities.push((
-            "floor_force_over_weight".to_string(),
-            mean_floor_force_over_weight(&frames, g, from),
-        ));
+        let mean = mean_floor_force_over_weight(&frames, g, from).ok_or_else(|| {
+            crate::error::TampError::input(
+                "--average-from",
+                format!(
+                    "no frame at or after step {from}; the last is step {}",
+                    last.step
+                ),
+            )
+        })?;
+        quantities.push(("floor_force_over_weight".to_string(), mean));
     }
     crate::output::create_dir(out_dir)?;
     crate::output::write_atomic(&out_dir.join("trajectory.csv"), trajectory.as_bytes())?;

@@ -15,7 +15,7 @@
 //! prediction: gross sliding v_t' = v_t − μ(1 + e)v_n, ωR = (5/2)μ(1 + e)v_n while
 //! v_t/v_n ≥ (7/2)μ(1 + e), else rolling at the end, v_t' = ωR = (5/7)v_t.
 
-use super::liggghts_two_sphere_oblique::{Common, Mismatches};
+use super::liggghts_inputs::Mismatches;
 use crate::error::{Result, TampError};
 use crate::output::plot::{Panel, Series, write_svg};
 use crate::scene::{
@@ -51,15 +51,14 @@ struct Row {
 /// Differences between the scene and the inputs LIGGGHTS ran with.
 fn mismatches(scene: &Scene, row: &Row) -> Vec<String> {
     let mut out = Mismatches::default();
-    out.check_common(
+    out.check_material_and_step(
         scene,
-        Common {
-            density: row.density,
-            youngs_modulus: row.youngs_modulus,
-            poisson_ratio: row.poisson_ratio,
-            time_step: row.time_step,
-        },
+        row.density,
+        row.youngs_modulus,
+        row.poisson_ratio,
+        row.time_step,
     );
+    out.check_history_runs(scene);
     match &scene.contact.damping {
         Some(DampingSpec::LiggghtsRestitution { restitution }) => out.check(
             "contact.damping.restitution",

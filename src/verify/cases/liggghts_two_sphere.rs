@@ -7,6 +7,7 @@
 //! tamp's side is measured with the same definitions as `two_sphere_extract.py`:
 //! interpolated overlap zero crossings, largest sampled overlap, full-step velocities.
 
+use super::liggghts_inputs::Mismatches;
 use super::probe::binary_collision;
 use crate::contact::damping::liggghts::hooke_stiffness;
 use crate::error::{Result, TampError};
@@ -48,40 +49,26 @@ pub fn hooke(ctx: &CaseContext) -> Result<Vec<Measured>> {
 
 /// Differences between the scene and the inputs LIGGGHTS ran with.
 fn mismatches(scene: &Scene, row: &Row, model: &str) -> Vec<String> {
-    let mut out = Vec::new();
+    let mut out = Mismatches::default();
     if row.model != model {
-        out.push(format!("model: case {model}, LIGGGHTS {}", row.model));
+        out.0
+            .push(format!("model: case {model}, LIGGGHTS {}", row.model));
     }
-    let mut check = |what: &str, tamp: f64, liggghts: f64| {
-        if (tamp - liggghts).abs() > 1e-12 * liggghts.abs() {
-            out.push(format!("{what}: scene {tamp:e}, LIGGGHTS {liggghts:e}"));
-        }
-    };
-    let m = &scene.materials[0];
-    check("density", m.density, row.density);
-    check(
-        "youngs_modulus",
-        m.youngs_modulus.unwrap_or(f64::NAN),
+    out.check_material_and_step(
+        scene,
+        row.density,
         row.youngs_modulus,
-    );
-    check(
-        "poisson_ratio",
-        m.poisson_ratio.unwrap_or(f64::NAN),
         row.poisson_ratio,
-    );
-    check(
-        "time_step",
-        scene.time_step.fixed.unwrap_or(f64::NAN),
         row.time_step,
     );
     let [a, b] = [&scene.particles[0], &scene.particles[1]];
-    check("radius of particles[0]", a.radius, row.radius);
-    check("radius of particles[1]", b.radius, row.radius);
+    out.check("radius of particles[0]", a.radius, row.radius);
+    out.check("radius of particles[1]", b.radius, row.radius);
     let d: f64 = (0..3)
         .map(|k| (b.position[k] - a.position[k]).powi(2))
         .sum::<f64>()
         .sqrt();
-    check("initial gap", d - a.radius - b.radius, row.initial_gap);
+    out.check("initial gap", d - a.radius - b.radius, row.initial_gap);
     let (va, vb) = (
         a.velocity.unwrap_or([0.0; 3]),
         b.velocity.unwrap_or([0.0; 3]),
@@ -89,7 +76,7 @@ fn mismatches(scene: &Scene, row: &Row, model: &str) -> Vec<String> {
     let approach: f64 = (0..3)
         .map(|k| (va[k] - vb[k]) * (b.position[k] - a.position[k]) / d)
         .sum();
-    check("relative speed", approach, row.relative_speed);
+    out.check("relative speed", approach, row.relative_speed);
     if let NormalSpec::Linear { stiffness } = scene.contact.normal {
         // model hooke: the scene's k_n must be LIGGGHTS's stiffness at characteristicVelocity.
         let steel = Material {
@@ -106,13 +93,13 @@ fn mismatches(scene: &Scene, row: &Row, model: &str) -> Vec<String> {
             effective_modulus(&steel, &steel).expect("both elastic constants are given"),
             row.characteristic_velocity,
         );
-        check(
+        out.check(
             "contact.normal.stiffness vs model hooke's k_n",
             stiffness,
             k,
         );
     }
-    out
+    out.0
 }
 
 fn run(ctx: &CaseContext, model: &str) -> Result<Vec<Measured>> {

@@ -7,6 +7,7 @@
 //! run tamp's `linear` law with LIGGGHTS's k_n (`hooke_stiffness`). The case refuses to
 //! compare when the scene and the recorded LIGGGHTS inputs disagree.
 
+use super::liggghts_inputs::Mismatches;
 use crate::contact::damping::liggghts::hooke_stiffness;
 use crate::error::{Result, TampError};
 use crate::material::{Material, effective_mass, effective_modulus, effective_radius};
@@ -40,79 +41,17 @@ struct Row {
     omega_z: f64,
 }
 
-/// Collects "what: scene …, LIGGGHTS …" for inputs that differ by more than 1e-12.
-#[derive(Default)]
-pub(super) struct Mismatches(pub Vec<String>);
-
-impl Mismatches {
-    pub fn check(&mut self, what: &str, tamp: f64, liggghts: f64) {
-        // Written so that a NaN on either side is a mismatch.
-        let close = (tamp - liggghts).abs() <= 1e-12 * liggghts.abs();
-        if !close {
-            self.0
-                .push(format!("{what}: scene {tamp:e}, LIGGGHTS {liggghts:e}"));
-        }
-    }
-
-    /// The material, time step and tangential law every LIGGGHTS case shares.
-    pub fn check_common(&mut self, scene: &Scene, row: Common) {
-        let m = &scene.materials[0];
-        self.check("density", m.density, row.density);
-        self.check(
-            "youngs_modulus",
-            m.youngs_modulus.unwrap_or(f64::NAN),
-            row.youngs_modulus,
-        );
-        self.check(
-            "poisson_ratio",
-            m.poisson_ratio.unwrap_or(f64::NAN),
-            row.poisson_ratio,
-        );
-        self.check(
-            "time_step",
-            scene.time_step.fixed.unwrap_or(f64::NAN),
-            row.time_step,
-        );
-        if !scene.contact.tangential.as_ref().is_some_and(|t| {
-            t.law == crate::scene::schema::TangentialLawName::LiggghtsHistory
-                && t.friction_pairs.is_empty()
-        }) {
-            self.0.push(
-                "contact.tangential: LIGGGHTS ran tangential history, the scene needs law 'liggghts_history' with one friction".into(),
-            );
-        }
-        if scene.rotation.as_ref().map(|r| r.inertia_scale) != Some(1.0) {
-            self.0.push(
-                "rotation: LIGGGHTS integrates spins with I = 0.4 m R^2 (inertia_scale 1)".into(),
-            );
-        }
-        if scene.gravity.is_some() {
-            self.0.push("gravity: LIGGGHTS ran without gravity".into());
-        }
-    }
-}
-
-/// The inputs every LIGGGHTS row records.
-#[derive(Clone, Copy)]
-pub(super) struct Common {
-    pub density: f64,
-    pub youngs_modulus: f64,
-    pub poisson_ratio: f64,
-    pub time_step: f64,
-}
-
 /// Differences between the scene and the inputs LIGGGHTS ran with.
 fn mismatches(scene: &Scene, row: &Row) -> Vec<String> {
     let mut out = Mismatches::default();
-    out.check_common(
+    out.check_material_and_step(
         scene,
-        Common {
-            density: row.density,
-            youngs_modulus: row.youngs_modulus,
-            poisson_ratio: row.poisson_ratio,
-            time_step: row.time_step,
-        },
+        row.density,
+        row.youngs_modulus,
+        row.poisson_ratio,
+        row.time_step,
     );
+    out.check_history_runs(scene);
     if scene.particles.len() != 2 {
         out.0.push("particles: LIGGGHTS ran two spheres".into());
         return out.0;

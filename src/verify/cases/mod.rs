@@ -8,6 +8,7 @@ mod hertz_collision_time;
 mod hertz_yield_onset;
 mod hollomon_constants;
 mod kuwabara_kono_restitution;
+mod liggghts_inputs;
 mod liggghts_oblique_wall_impact;
 mod liggghts_settled_packing;
 mod liggghts_three_sphere_trajectory;

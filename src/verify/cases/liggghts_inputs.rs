@@ -1,0 +1,69 @@
+//! The inputs a recorded LIGGGHTS run was made with, checked against the case's
+//! scene before any number is compared: a case refuses to compare when the two
+//! differ (a scene edited without re-recording, or a results file from another deck).
+
+use crate::scene::Scene;
+use crate::scene::schema::TangentialLawName;
+
+/// Collects "what: scene …, LIGGGHTS …" for inputs that differ by more than 1e-12.
+#[derive(Default)]
+pub(super) struct Mismatches(pub Vec<String>);
+
+impl Mismatches {
+    pub fn check(&mut self, what: &str, tamp: f64, liggghts: f64) {
+        // Written so that a NaN on either side is a mismatch.
+        let close = (tamp - liggghts).abs() <= 1e-12 * liggghts.abs();
+        if !close {
+            self.0
+                .push(format!("{what}: scene {tamp:e}, LIGGGHTS {liggghts:e}"));
+        }
+    }
+
+    /// The material and the time step, which every recorded row carries.
+    pub fn check_material_and_step(
+        &mut self,
+        scene: &Scene,
+        density: f64,
+        youngs_modulus: f64,
+        poisson_ratio: f64,
+        time_step: f64,
+    ) {
+        let m = &scene.materials[0];
+        self.check("density", m.density, density);
+        self.check(
+            "youngs_modulus",
+            m.youngs_modulus.unwrap_or(f64::NAN),
+            youngs_modulus,
+        );
+        self.check(
+            "poisson_ratio",
+            m.poisson_ratio.unwrap_or(f64::NAN),
+            poisson_ratio,
+        );
+        self.check(
+            "time_step",
+            scene.time_step.fixed.unwrap_or(f64::NAN),
+            time_step,
+        );
+    }
+
+    /// What the runs with friction share: LIGGGHTS's tangential history with one
+    /// friction coefficient, solid-sphere spins, no gravity.
+    pub fn check_history_runs(&mut self, scene: &Scene) {
+        if !scene.contact.tangential.as_ref().is_some_and(|t| {
+            t.law == TangentialLawName::LiggghtsHistory && t.friction_pairs.is_empty()
+        }) {
+            self.0.push(
+                "contact.tangential: LIGGGHTS ran tangential history, the scene needs law 'liggghts_history' with one friction".into(),
+            );
+        }
+        if scene.rotation.as_ref().map(|r| r.inertia_scale) != Some(1.0) {
+            self.0.push(
+                "rotation: LIGGGHTS integrates spins with I = 0.4 m R^2 (inertia_scale 1)".into(),
+            );
+        }
+        if scene.gravity.is_some() {
+            self.0.push("gravity: LIGGGHTS ran without gravity".into());
+        }
+    }
+}
