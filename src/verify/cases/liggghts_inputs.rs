@@ -2,6 +2,7 @@
 //! scene before any number is compared: a case refuses to compare when the two
 //! differ (a scene edited without re-recording, or a results file from another deck).
 
+use crate::error::{Result, TampError};
 use crate::scene::Scene;
 use crate::scene::schema::TangentialLawName;
 
@@ -17,6 +18,17 @@ impl Mismatches {
             self.0
                 .push(format!("{what}: scene {tamp:e}, LIGGGHTS {liggghts:e}"));
         }
+    }
+
+    /// Refuse to compare when any input differs; `run` names the LIGGGHTS run.
+    pub fn refuse_any(self, run: &str) -> Result<()> {
+        if self.0.is_empty() {
+            return Ok(());
+        }
+        Err(TampError::Other(format!(
+            "the scene is not the one LIGGGHTS ran ({run}): {}",
+            self.0.join("; ")
+        )))
     }
 
     /// The material and the time step, which every recorded row carries.

@@ -49,7 +49,7 @@ struct Row {
 }
 
 /// Differences between the scene and the inputs LIGGGHTS ran with.
-fn mismatches(scene: &Scene, row: &Row) -> Vec<String> {
+fn mismatches(scene: &Scene, row: &Row) -> Mismatches {
     let mut out = Mismatches::default();
     out.check_material_and_step(
         scene,
@@ -74,7 +74,7 @@ fn mismatches(scene: &Scene, row: &Row) -> Vec<String> {
     }
     let [p] = scene.particles.as_slice() else {
         out.0.push("particles: LIGGGHTS ran one sphere".into());
-        return out.0;
+        return out;
     };
     out.check("particles[0].radius", p.radius, row.radius);
     out.check("particles[0].position.x", p.position[0], 0.0);
@@ -96,7 +96,7 @@ fn mismatches(scene: &Scene, row: &Row) -> Vec<String> {
     // The recorded speeds must be the angle's components (they are what both codes use).
     let angle = row.tangential_speed.atan2(row.normal_speed).to_degrees();
     out.check("incidence angle (deg)", angle, row.angle_deg);
-    out.0
+    out
 }
 
 /// One angle: the rebound of both codes.
@@ -129,14 +129,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let rows: Vec<Row> = ctx.liggghts_results()?;
     let mut rebounds = Vec::new();
     for row in &rows {
-        let problems = mismatches(&base, row);
-        if !problems.is_empty() {
-            return Err(TampError::Other(format!(
-                "the scene is not the one LIGGGHTS ran ({}°): {}",
-                row.angle_deg,
-                problems.join("; ")
-            )));
-        }
+        mismatches(&base, row).refuse_any(&format!("{}°", row.angle_deg))?;
         let mut s = base.clone();
         s.particles[0].velocity = Some([row.tangential_speed, 0.0, -row.normal_speed]);
         let mut sim = scene::build(&s)?.sim;

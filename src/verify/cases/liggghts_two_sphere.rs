@@ -10,7 +10,7 @@
 use super::liggghts_inputs::Mismatches;
 use super::probe::binary_collision;
 use crate::contact::damping::liggghts::hooke_stiffness;
-use crate::error::{Result, TampError};
+use crate::error::Result;
 use crate::material::{Material, effective_mass, effective_modulus, effective_radius};
 use crate::measure::region::ball_volume;
 use crate::scene::{
@@ -48,7 +48,7 @@ pub fn hooke(ctx: &CaseContext) -> Result<Vec<Measured>> {
 }
 
 /// Differences between the scene and the inputs LIGGGHTS ran with.
-fn mismatches(scene: &Scene, row: &Row, model: &str) -> Vec<String> {
+fn mismatches(scene: &Scene, row: &Row, model: &str) -> Mismatches {
     let mut out = Mismatches::default();
     if row.model != model {
         out.0
@@ -99,21 +99,14 @@ fn mismatches(scene: &Scene, row: &Row, model: &str) -> Vec<String> {
             k,
         );
     }
-    out.0
+    out
 }
 
 fn run(ctx: &CaseContext, model: &str) -> Result<Vec<Measured>> {
     let base = ctx.scene()?;
     let mut out = Vec::new();
     for row in ctx.liggghts_results()? {
-        let problems = mismatches(&base, &row, model);
-        if !problems.is_empty() {
-            return Err(TampError::Other(format!(
-                "the scene is not the one LIGGGHTS ran (e = {}): {}",
-                row.restitution_in,
-                problems.join("; ")
-            )));
-        }
+        mismatches(&base, &row, model).refuse_any(&format!("e = {}", row.restitution_in))?;
         let mut s = base.clone();
         s.contact.damping = Some(DampingSpec::LiggghtsRestitution {
             restitution: row.restitution_in,

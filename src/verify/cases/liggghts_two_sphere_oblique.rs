@@ -42,7 +42,7 @@ struct Row {
 }
 
 /// Differences between the scene and the inputs LIGGGHTS ran with.
-fn mismatches(scene: &Scene, row: &Row) -> Vec<String> {
+fn mismatches(scene: &Scene, row: &Row) -> Mismatches {
     let mut out = Mismatches::default();
     out.check_material_and_step(
         scene,
@@ -54,7 +54,7 @@ fn mismatches(scene: &Scene, row: &Row) -> Vec<String> {
     out.check_history_runs(scene);
     if scene.particles.len() != 2 {
         out.0.push("particles: LIGGGHTS ran two spheres".into());
-        return out.0;
+        return out;
     }
     let [a, b] = [&scene.particles[0], &scene.particles[1]];
     out.check("radius of particles[0]", a.radius, row.radius);
@@ -77,7 +77,7 @@ fn mismatches(scene: &Scene, row: &Row) -> Vec<String> {
         out.check(&format!("particles[0].velocity.{axis}"), va[k], v[k]);
         out.check(&format!("particles[1].velocity.{axis}"), vb[k], -v[k]);
     }
-    out.0
+    out
 }
 
 /// The scene of one LIGGGHTS row: its restitution, friction and normal model.
@@ -124,13 +124,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let mut out = Vec::new();
     for row in ctx.liggghts_results::<Row>()? {
         let tag = format!("{}_e{}_mu{}", row.model, row.restitution_in, row.friction);
-        let problems = mismatches(&base, &row);
-        if !problems.is_empty() {
-            return Err(TampError::Other(format!(
-                "the scene is not the one LIGGGHTS ran ({tag}): {}",
-                problems.join("; ")
-            )));
-        }
+        mismatches(&base, &row).refuse_any(&tag)?;
         let mut sim = scene::build(&scene_of(&base, &row)?)?.sim;
         for _ in 0..row.steps {
             sim.step()?;
