@@ -661,16 +661,21 @@ impl Simulation {
     /// stiffnesses (for laws with memory, the stiffness of the current branch, Rojek
     /// §3.4); the impact stiffness against a much larger body of any material
     /// (R* = R_i, m* = m_i: walls, and an upper bound on any finite partner); and the
-    /// largest tangential stiffness of its contacts (or the Cundall–Strack k_s) —
+    /// sum of the tangential stiffnesses of its contacts (or the Cundall–Strack k_s) —
     /// times (1 + m R²/I) when rotation is on, because the tangential force then also
-    /// drives the spin of the contact point. Viscous Haff–Werner friction adds the
-    /// explicit limit Δt < 2m/(γ_s (1 + m R²/I)).
+    /// drives the spin of the contact point. The sum, not the largest: in a dense bed
+    /// neighbours spin against each other through all their contacts at once, and
+    /// with the largest alone a 12-contact Mindlin lattice was stable only to
+    /// α = 0.60 (`tamp study stable-alpha`, docs/accuracy-cost.md). Viscous
+    /// Haff–Werner friction adds the explicit limit Δt < 2m/(n_c γ_s (1 + m R²/I)),
+    /// n_c the particle's contacts (at least 1), for the same reason.
     /// Returns `None` when a nonlinear law has neither a characteristic velocity nor
     /// any current contact to take a stiffness from.
     pub fn critical_time_step(&self, characteristic_velocity: Option<f64>) -> Option<f64> {
         let p = &self.particles;
         let mut normal_sum = vec![0.0; p.len()];
-        let mut tangential_max = vec![0.0f64; p.len()];
+        let mut tangential_sum = vec![0.0f64; p.len()];
+        let mut contacts = vec![0usize; p.len()];
         for (k, i, j, overlap) in self.touching_pairs(0.0) {
             let pair = self.pair_table.get(p.material[i], p.material[j]);
             let r_eff = effective_radius(p.radius[i], p.radius[j]);
@@ -679,7 +684,8 @@ impl Simulation {
                 .stiffness(overlap, r_eff, pair, self.pair_history(k));
             for b in [i, j] {
                 normal_sum[b] += k_n;
-                tangential_max[b] = tangential_max[b].max(k_t);
+                tangential_sum[b] += k_t;
+                contacts[b] += 1;
             }
         }
         for (w, i, facet, overlap) in self.touching_walls(0.0) {
@@ -687,12 +693,13 @@ impl Simulation {
             let history = self.wall_contact_history(w, i, facet);
             let (k_n, k_t) = self.law.stiffness(overlap, p.radius[i], pair, history);
             normal_sum[i] += k_n;
-            tangential_max[i] = tangential_max[i].max(k_t);
+            tangential_sum[i] += k_t;
+            contacts[i] += 1;
         }
         // Each body: (mass, radius at full size, moment of inertia, material, Σ k_n
-        // of its contacts, largest k_t). Particles still to be poured count with the
+        // of its contacts, Σ k_t, number of contacts). Particles still to be poured count with the
         // smallest radius their source can draw, the lightest they can be.
-        let mut bodies: Vec<(f64, f64, f64, usize, f64, f64)> = (0..p.len())
+        let mut bodies: Vec<(f64, f64, f64, usize, f64, f64, usize)> = (0..p.len())
             .map(|i| {
                 let r = self.final_radius(i);
                 (
@@ -701,7 +708,8 @@ impl Simulation {
                     p.inertia[i],
                     p.material[i],
                     normal_sum[i],
-                    tangential_max[i],
+                    tangential_sum[i],
+                    contacts[i],
                 )
             })
             .collect();
@@ -718,11 +726,12 @@ impl Simulation {
                     src.material,
                     0.0,
                     0.0,
+                    0,
                 ));
             }
         }
         let mut best: Option<f64> = None;
-        for (mass, radius, inertia, material, k_contacts, k_tangential) in bodies {
+        for (mass, radius, inertia, material, k_contacts, k_tangential, touching) in bodies {
             let impact = match (&self.law.normal, characteristic_velocity) {
                 (NormalLaw::Linear { .. }, _)
                 | (NormalLaw::Hysteretic { .. }, _)
@@ -764,7 +773,8 @@ impl Simulation {
             k = k.max(k_tangential * lever);
             let viscous = match self.law.tangential {
                 Some(TangentialLaw::HaffWerner { damping }) if damping > 0.0 => {
-                    Some(2.0 * mass / (damping * lever))
+                    // The dashpots of all its contacts act on the particle together.
+                    Some(2.0 * mass / (damping * lever * touching.max(1) as f64))
                 }
                 _ => None,
             };

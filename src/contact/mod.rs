@@ -197,7 +197,7 @@ impl ContactLaw {
         let max_overlap = history.map_or(0.0, |h| h.max_overlap);
         let k_n = self
             .normal
-            .stiffness(overlap, effective_radius, pair, max_overlap);
+            .time_step_stiffness(overlap, effective_radius, pair, max_overlap);
         let k_t = self.tangential.map_or(0.0, |t| {
             t.stiffness(&self.resting_input(overlap, effective_radius, pair, k_n))
         });

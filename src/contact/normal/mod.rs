@@ -186,6 +186,35 @@ impl NormalLaw {
             .1
     }
 
+    /// Stiffness the critical time step must resolve (Rojek §3.4): the current
+    /// branch's tangent, and for a contact on a loading branch also the unloading
+    /// branch it turns onto the step its overlap stops growing. Without the second,
+    /// a dense bed estimated while loading under-resolves its first unloading: the
+    /// stable-α study (docs/accuracy-cost.md) found a Walton–Braun lattice with
+    /// k₂ = 2k₁ unstable at α = 0.93 where the linear one held to 1.15.
+    pub fn time_step_stiffness(
+        &self,
+        overlap: f64,
+        effective_radius: f64,
+        pair: &PairProperties,
+        max_overlap: f64,
+    ) -> f64 {
+        let current = self.stiffness(overlap, effective_radius, pair, max_overlap);
+        let max_overlap = max_overlap.max(overlap);
+        let turning = match *self {
+            NormalLaw::WaltonBraun {
+                unloading_stiffness,
+                ..
+            } if overlap > 0.0 => unloading_stiffness,
+            NormalLaw::Storakers { min_with_hertz } if overlap > 0.0 => {
+                Self::storakers(min_with_hertz, effective_radius, pair)
+                    .unloading_stiffness(max_overlap)
+            }
+            _ => 0.0,
+        };
+        current.max(turning)
+    }
+
     /// Energy the contact would give back on elastic unloading, J.
     pub fn energy(
         &self,
@@ -252,8 +281,8 @@ impl NormalLaw {
                 let c = storakers::storakers_prefactor(effective_radius, s.hollomon);
                 let d =
                     ((p + 1.0) * 0.5 * effective_mass * speed * speed / c).powf(1.0 / (p + 1.0));
-                let (peak, k_plastic) = s.loading(d);
-                let k_unloading = (6.0 * effective_radius * e * e * peak).cbrt();
+                let k_plastic = s.loading(d).1;
+                let k_unloading = s.unloading_stiffness(d);
                 // With the Hertz cap the contact may load elastically all the way: take
                 // the Hertz impact stiffness too, whichever is larger.
                 let k_hertz = if min_with_hertz {

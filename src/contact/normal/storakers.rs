@@ -88,6 +88,13 @@ impl Storakers {
         max_overlap - (peak / self.hertz_constant()).powf(2.0 / 3.0)
     }
 
+    /// Tangent of the elastic branch at its top, where unloading from `max_overlap`
+    /// starts: k_unl = ∛(6 R* E*² F_max) (eq 20).
+    pub fn unloading_stiffness(&self, max_overlap: f64) -> f64 {
+        let peak = self.loading(max_overlap).0;
+        (6.0 * self.effective_radius * self.effective_modulus.powi(2) * peak).cbrt()
+    }
+
     /// Force and tangent stiffness at `overlap` given the largest overlap so far.
     pub fn response(&self, overlap: f64, max_overlap: f64) -> (f64, f64) {
         if overlap >= max_overlap {
@@ -145,6 +152,14 @@ mod tests {
             let numeric = (s.loading(d + h).0 - s.loading(d - h).0) / (2.0 * h);
             assert_relative_eq!(s.loading(d).1, numeric, max_relative = 1e-7);
         }
+    }
+
+    #[test]
+    fn unloading_stiffness_at_the_top_is_the_elastic_branch_tangent() {
+        let s = nial(0.2, false);
+        let top = 1e-7;
+        let below = s.response(top * (1.0 - 1e-9), top).1;
+        assert_relative_eq!(s.unloading_stiffness(top), below, max_relative = 1e-6);
     }
 
     #[test]
