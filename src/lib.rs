@@ -19,6 +19,7 @@ pub mod run;
 pub mod scene;
 pub mod simulation;
 pub mod space;
+pub mod study;
 pub mod timestep;
 pub mod verify;
 

@@ -93,6 +93,36 @@ enum Command {
         #[arg(long, default_value = "report")]
         report: PathBuf,
     },
+    /// Numerical studies; `--out docs` rewrites docs/accuracy-cost.md.
+    Study {
+        #[command(subcommand)]
+        study: Study,
+    },
+}
+
+#[derive(Subcommand)]
+enum Study {
+    /// Rerun verification cases with the time step scaled (and each broad phase for
+    /// large beds): error against the case's reference, wall time, observed order.
+    AccuracyCost {
+        /// Only these cases (repeatable; default: every quick case).
+        #[arg(long = "case")]
+        cases: Vec<String>,
+        /// Time-step multipliers of the sweep.
+        #[arg(long, value_delimiter = ',', default_value = "8,4,2,1,0.5,0.25")]
+        scales: Vec<f64>,
+        /// Directory of accuracy-cost.md, accuracy-cost/<case>.csv and img/.
+        #[arg(long, default_value = "study")]
+        out: PathBuf,
+        /// Repeat each run until this much wall time has passed, s.
+        #[arg(long, default_value_t = 0.2)]
+        min_wall: f64,
+    },
+    /// Bisect the largest stable α of each contact law in a loaded FCC lattice.
+    StableAlpha {
+        #[arg(long, default_value = "study")]
+        out: PathBuf,
+    },
 }
 
 fn main() -> ExitCode {
@@ -155,6 +185,26 @@ fn main() -> ExitCode {
         Command::Crosscheck { live, tier, report } => {
             tamp::liggghts::crosscheck::run_cli(live, tier, &report)
         }
+        Command::Study {
+            study:
+                Study::AccuracyCost {
+                    cases,
+                    mut scales,
+                    out,
+                    min_wall,
+                },
+        } => {
+            scales.sort_by(|a, b| b.total_cmp(a));
+            tamp::study::accuracy_cost::run(&tamp::study::accuracy_cost::Options {
+                cases,
+                scales,
+                out,
+                min_wall_s: min_wall,
+            })
+        }
+        Command::Study {
+            study: Study::StableAlpha { out },
+        } => tamp::study::stable_alpha::run(&out),
     };
     match result {
         Ok(code) => ExitCode::from(code),

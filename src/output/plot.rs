@@ -39,14 +39,13 @@ pub struct Panel<'a> {
     pub x_label: &'a str,
     pub y_label: &'a str,
     pub log_y: bool,
+    pub log_x: bool,
     pub series: &'a [Series],
 }
 
-fn bounds(series: &[Series], log_y: bool) -> (f64, f64, f64, f64) {
+fn bounds(series: &[Series], log_x: bool, log_y: bool) -> (f64, f64, f64, f64) {
     let pts = series.iter().flat_map(|s| s.points.iter());
-    let pts: Vec<&(f64, f64)> = pts
-        .filter(|p| p.0.is_finite() && p.1.is_finite() && (!log_y || p.1 > 0.0))
-        .collect();
+    let pts: Vec<&(f64, f64)> = pts.filter(|p| shown(p, log_x, log_y)).collect();
     let fold = |f: fn(&(f64, f64)) -> f64| {
         pts.iter()
             .map(|p| f(p))
@@ -57,6 +56,11 @@ fn bounds(series: &[Series], log_y: bool) -> (f64, f64, f64, f64) {
     let (x0, x1) = fold(|p| p.0);
     let (y0, y1) = fold(|p| p.1);
     (x0, x1, y0, y1)
+}
+
+/// A point a panel can draw: finite, and positive on a logarithmic axis.
+fn shown(p: &(f64, f64), log_x: bool, log_y: bool) -> bool {
+    p.0.is_finite() && p.1.is_finite() && (!log_x || p.0 > 0.0) && (!log_y || p.1 > 0.0)
 }
 
 fn draw_err<E: std::fmt::Debug>(e: E) -> TampError {
@@ -72,7 +76,18 @@ pub fn write_svg(path: &Path, panels: &[Panel]) -> Result<()> {
         root.fill(&WHITE).map_err(draw_err)?;
         let areas = root.split_evenly((1, panels.len()));
         for (area, panel) in areas.iter().zip(panels) {
-            let (x0, x1, y0, y1) = bounds(panel.series, panel.log_y);
+            let (x0, x1, y0, y1) = bounds(panel.series, panel.log_x, panel.log_y);
+            // A log axis over one value would be empty: widen it by a factor 2.
+            let (x0, x1) = if panel.log_x && x0 == x1 {
+                (x0 / 2.0, x1 * 2.0)
+            } else {
+                (x0, x1)
+            };
+            let (y0, y1) = if panel.log_y && y0 == y1 {
+                (y0 / 2.0, y1 * 2.0)
+            } else {
+                (y0, y1)
+            };
             let mut builder = ChartBuilder::on(area);
             builder
                 .caption(panel.title, ("sans-serif", 18))
@@ -95,7 +110,7 @@ pub fn write_svg(path: &Path, panels: &[Panel]) -> Result<()> {
                             s.points
                                 .iter()
                                 .cloned()
-                                .filter(|p| !panel.log_y || p.1 > 0.0)
+                                .filter(|p| shown(p, panel.log_x, panel.log_y))
                         };
                         if s.line {
                             chart
@@ -124,7 +139,19 @@ pub fn write_svg(path: &Path, panels: &[Panel]) -> Result<()> {
                         .map_err(draw_err)?;
                 }};
             }
-            if panel.log_y {
+            if panel.log_x && panel.log_y {
+                draw!(
+                    builder
+                        .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())
+                        .map_err(draw_err)?
+                );
+            } else if panel.log_x {
+                draw!(
+                    builder
+                        .build_cartesian_2d((x0..x1).log_scale(), y0..y1)
+                        .map_err(draw_err)?
+                );
+            } else if panel.log_y {
                 draw!(
                     builder
                         .build_cartesian_2d(x0..x1, (y0..y1).log_scale())

@@ -82,6 +82,48 @@ pub struct CaseContext<'a> {
     pub report_dir: PathBuf,
     /// Replaces `reference_data/` (the live cross-check points it at fresh LIGGGHTS runs).
     pub reference_data: Option<PathBuf>,
+    /// Numerical settings the accuracy-cost study changes; the default leaves the
+    /// case's scene as written.
+    pub variant: Variant,
+}
+
+/// What `tamp study accuracy-cost` varies in a case's scene. Only numerical
+/// settings: the physics a case verifies (laws, damping form, geometry) stays fixed.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Variant {
+    /// Multiplies the time step (α, or the fixed step) and divides `run.steps`, so
+    /// the simulated time stays the same.
+    pub step_scale: f64,
+    /// Replaces the broad phase.
+    pub detector: Option<crate::scene::schema::DetectorSpec>,
+}
+
+impl Default for Variant {
+    fn default() -> Self {
+        Variant {
+            step_scale: 1.0,
+            detector: None,
+        }
+    }
+}
+
+impl Variant {
+    /// Apply to a validated scene (α may then exceed 1: the study looks for the edge).
+    pub fn apply(&self, scene: &mut Scene) {
+        let s = self.step_scale;
+        if s != 1.0 {
+            match &mut scene.time_step.fixed {
+                Some(dt) => *dt *= s,
+                None => scene.time_step.alpha *= s,
+            }
+            if let Some(steps) = &mut scene.run.steps {
+                *steps = ((*steps as f64 / s).round() as u64).max(1);
+            }
+        }
+        if let Some(kind) = self.detector {
+            scene.broad_phase.kind = kind;
+        }
+    }
 }
 
 impl CaseContext<'_> {
@@ -122,7 +164,9 @@ impl CaseContext<'_> {
             self.spec.scene.as_ref().ok_or_else(|| {
                 TampError::Other(format!("case {} names no scene", self.spec.name))
             })?;
-        Ok(scene::load(&self.dir.join(file))?.0)
+        let mut scene = scene::load(&self.dir.join(file))?.0;
+        self.variant.apply(&mut scene);
+        Ok(scene)
     }
 }
 
@@ -234,6 +278,7 @@ pub fn run_case(
     dir: &Path,
     report_dir: &Path,
     reference_data: Option<&Path>,
+    variant: Variant,
 ) -> CaseResult {
     let started = Instant::now();
     let ctx = CaseContext {
@@ -241,6 +286,7 @@ pub fn run_case(
         dir: dir.to_path_buf(),
         report_dir: report_dir.to_path_buf(),
         reference_data: reference_data.map(Path::to_path_buf),
+        variant,
     };
     let outcome = match cases::find(&spec.name) {
         Some(f) => f(&ctx),
@@ -325,7 +371,7 @@ pub fn run_cases(
     let mut results = Vec::new();
     for spec in selected {
         eprint!("{:<32} ", spec.name);
-        let r = run_case(spec, &dir, report_dir, reference_data);
+        let r = run_case(spec, &dir, report_dir, reference_data, Variant::default());
         eprintln!(
             "{:?} ({:.2} s){}",
             r.status,

@@ -236,6 +236,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
             x_label: "N_s / N_b",
             y_label: "packing fraction",
             log_y: false,
+            log_x: false,
             series: &[
                 measured,
                 bulk,

@@ -227,6 +227,7 @@ fn write_table(ctx: &CaseContext, rebounds: &[Rebound], mu: f64, e: f64) -> Resu
                 x_label: "incidence angle from the normal (deg)",
                 y_label: "v_t' / v_t",
                 log_y: false,
+                log_x: false,
                 series: &tangential,
             },
             Panel {
@@ -234,6 +235,7 @@ fn write_table(ctx: &CaseContext, rebounds: &[Rebound], mu: f64, e: f64) -> Resu
                 x_label: "incidence angle from the normal (deg)",
                 y_label: "omega R / v_t",
                 log_y: false,
+                log_x: false,
                 series: &spin,
             },
         ],

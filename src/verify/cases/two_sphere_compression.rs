@@ -77,6 +77,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
                 x_label: "|h|/2R (%)",
                 y_label: "F/4R^2 (MPa)",
                 log_y: false,
+                log_x: false,
                 series: &force_curves,
             },
             Panel {
@@ -84,6 +85,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
                 x_label: "|h|/2R (%)",
                 y_label: "dt_cr (s)",
                 log_y: true,
+                log_x: false,
                 series: &dt_curves,
             },
         ],
