@@ -561,6 +561,16 @@ impl Simulation {
         self.neighbors.history.get(k)
     }
 
+    /// The stored state of the contact between particles `i` and `j` (either order)
+    /// after the last force evaluation; `None` when the pair is not in the neighbour
+    /// list or the law keeps no history. Read-only: for tests and diagnostics that
+    /// follow one contact's tangential state.
+    pub fn contact_history(&self, i: usize, j: usize) -> Option<&ContactHistory> {
+        let key = (i.min(j) as u32, i.max(j) as u32);
+        let k = self.neighbors.pairs.binary_search(&key).ok()?;
+        self.pair_history(k)
+    }
+
     fn wall_contact_history(&self, w: usize, i: usize, facet: u32) -> Option<&ContactHistory> {
         self.wall_history
             .get(w)
