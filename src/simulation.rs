@@ -388,7 +388,14 @@ impl Simulation {
             let overlap = reach - dist;
             let ratio = overlap / p.radius[i].min(p.radius[j]);
             worst = worst.max(ratio);
-            if ratio > max_fraction || dist == 0.0 {
+            if dist == 0.0 {
+                // The build refuses coincident centres, and a pair driven together
+                // meets the overlap limit first unless it is at least (R_i + R_j)/R_min ≥ 2.
+                return Err(self.unstable(format!(
+                    "contact {i}-{j}: the centres coincide (overlap {overlap:.4e} m), so the contact normal is undefined"
+                )));
+            }
+            if ratio > max_fraction {
                 return Err(self.unstable(format!(
                     "contact {i}-{j}: overlap {overlap:.4e} m is {ratio:.3} of the smaller radius (limit {max_fraction})"
                 )));

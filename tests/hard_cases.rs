@@ -542,3 +542,102 @@ fn storakers_perfectly_plastic_at_vanishing_overlap() {
         }
     }
 }
+
+/// Glass spheres (R = 1 mm and 0.5 mm) whose centres are `offset` apart along x.
+fn coincident_pair(offset: f64, stability: Value) -> Value {
+    json!({
+        "materials": [{"name": "glass", "density": 2500, "youngs_modulus": 1e8, "poisson_ratio": 0.25}],
+        "contact": {"normal": {"law": "hertz"}},
+        "particles": [
+            {"position": [0, 0, 0], "radius": 1e-3, "material": "glass"},
+            {"position": [offset, 0, 0], "radius": 0.5e-3, "material": "glass"}
+        ],
+        "stability": stability,
+        "time_step": {"alpha": 0.1, "characteristic_velocity": 1.0},
+        "run": {"duration": 1e-3}
+    })
+}
+
+fn build_error(v: &Value) -> TampError {
+    match scene::build(&scene::parse(&v.to_string()).expect("parses")) {
+        Err(e) => e,
+        Ok(_) => panic!("built: {v}"),
+    }
+}
+
+/// Coincident and nearly coincident centres, as a careful LIGGGHTS or Yade user would
+/// want them handled: two centres at one point have no contact normal (LIGGGHTS divides
+/// by r = 0), so such a pair is refused at build as an input error (exit 2) naming both
+/// particles — whatever `stability` allows, because no tolerance makes it a contact.
+/// Centres 1e-300 m apart count as coincident: the squared distance underflows to 0,
+/// exactly as the force loop would compute it.
+///
+/// Nearly coincident (1e-15 m, and 1e-160 m, whose squared distance is subnormal but
+/// not 0): an overlap of 3 times the smaller radius is refused by the default initial
+/// overlap tolerance, with the same naming. A user who raises both limits above it gets
+/// what they asked for: the pair is pushed apart along the offset, finite, with its
+/// momentum kept.
+///
+/// Driven through each other (both prescribed, so only the checks can stop them, with
+/// the overlap limit above the (R_i + R_j)/R_min = 3 reached at coincidence), the pair stops at the step
+/// its centres coincide (exit 3) with a message saying so. Before the build refused
+/// them, a coincident pair under raised limits stopped the build with exit 3 and
+/// "overlap … is 3.000 of the smaller radius (limit 3.5)", a limit it had not exceeded.
+#[test]
+fn coincident_and_nearly_coincident_centres() {
+    let raised = json!({"initial_overlap_tolerance": 3.5, "max_overlap_fraction": 3.5});
+    for offset in [0.0, 1e-300] {
+        for stability in [json!({}), raised.clone()] {
+            let e = build_error(&coincident_pair(offset, stability));
+            assert_eq!(e.exit_code(), 2, "{e}");
+            let text = e.to_string();
+            assert!(text.starts_with("particles[1].position: "), "{text}");
+            assert!(
+                text.contains("particles[0]") && text.contains("contact normal"),
+                "{text}"
+            );
+        }
+    }
+    let e = build_error(&coincident_pair(1e-15, json!({})));
+    assert_eq!(e.exit_code(), 2, "{e}");
+    let text = e.to_string();
+    assert!(
+        text.starts_with("particles[1].position: overlaps particles[0]"),
+        "{text}"
+    );
+    for offset in [1e-15, 1e-160] {
+        let b = built(&coincident_pair(offset, raised.clone()));
+        let mut sim = b.sim;
+        let start = sim.particles.linear_momentum();
+        assert_eq!(start.norm(), 0.0);
+        sim.run_with(b.steps, |s| assert!(all_finite(s)))
+            .expect("raised limits");
+        let p = &sim.particles;
+        assert!(sim.overlap(0, 1) < 0.0, "still overlapping");
+        assert!(p.velocity[1].x > 0.0 && p.velocity[0].x < 0.0);
+        assert_eq!(p.velocity[0].yz().norm() + p.velocity[1].yz().norm(), 0.0);
+        let scale = p.mass[1] * p.velocity[1].norm();
+        assert!(p.linear_momentum().norm() <= 1e-12 * scale);
+    }
+
+    // Powers of two: 4096 steps of 2^-20 m take the small sphere from 2^-8 m exactly
+    // onto the other centre.
+    let mut through = coincident_pair(0.0, json!({"max_overlap_fraction": 3.5}));
+    through["particles"][0]["prescribed_velocity"] = json!([0, 0, 0]);
+    through["particles"][1]["position"] = json!([2f64.powi(-8), 0, 0]);
+    through["particles"][1]["prescribed_velocity"] = json!([-1.0, 0, 0]);
+    through["time_step"] = json!({"fixed": 2f64.powi(-20)});
+    through["run"] = json!({"steps": 5000});
+    let b = built(&through);
+    let mut sim = b.sim;
+    // The error counts the steps completed: the 4096th drift ends on the centre.
+    match sim.run_with(b.steps, |s| assert!(all_finite(s))) {
+        Err(e @ TampError::Unstable { step: 4095, .. }) => {
+            assert_eq!(e.exit_code(), 3);
+            let text = e.to_string();
+            assert!(text.contains("contact 0-1: the centres coincide"), "{text}");
+        }
+        other => panic!("expected a stop at the 4096th step, got {other:?}"),
+    }
+    assert!(all_finite(&sim));
+}
