@@ -388,7 +388,14 @@ impl Simulation {
             let overlap = reach - dist;
             let ratio = overlap / p.radius[i].min(p.radius[j]);
             worst = worst.max(ratio);
-            if ratio > max_fraction || dist == 0.0 {
+            if dist == 0.0 {
+                // The build refuses coincident centres, and a pair driven together
+                // meets the overlap limit first unless it is at least (R_i + R_j)/R_min ≥ 2.
+                return Err(self.unstable(format!(
+                    "contact {i}-{j}: the centres coincide (overlap {overlap:.4e} m), so the contact normal is undefined"
+                )));
+            }
+            if ratio > max_fraction {
                 return Err(self.unstable(format!(
                     "contact {i}-{j}: overlap {overlap:.4e} m is {ratio:.3} of the smaller radius (limit {max_fraction})"
                 )));
@@ -559,6 +566,16 @@ impl Simulation {
 
     fn pair_history(&self, k: usize) -> Option<&ContactHistory> {
         self.neighbors.history.get(k)
+    }
+
+    /// The stored state of the contact between particles `i` and `j` (either order)
+    /// after the last force evaluation; `None` when the pair is not in the neighbour
+    /// list or the law keeps no history. Read-only: for tests and diagnostics that
+    /// follow one contact's tangential state.
+    pub fn contact_history(&self, i: usize, j: usize) -> Option<&ContactHistory> {
+        let key = (i.min(j) as u32, i.max(j) as u32);
+        let k = self.neighbors.pairs.binary_search(&key).ok()?;
+        self.pair_history(k)
     }
 
     fn wall_contact_history(&self, w: usize, i: usize, facet: u32) -> Option<&ContactHistory> {

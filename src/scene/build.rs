@@ -439,8 +439,29 @@ fn check_initial_overlaps(
     let mut errors = Vec::new();
     for (i, j) in pairs {
         let (i, j) = (i as usize, j as usize);
-        let overlap =
-            p.radius[i] + p.radius[j] - space.displacement(&p.position[i], &p.position[j]).norm();
+        let distance = space
+            .displacement(&p.position[i], &p.position[j])
+            .norm_squared()
+            .sqrt();
+        // Two centres at distance zero (or so close that the squared distance
+        // underflows, as the force loop computes it) leave the contact normal
+        // undefined: no tolerance makes that a contact, so it is bad input whatever
+        // the tolerance, not an instability of a run that never started.
+        if distance == 0.0 {
+            let other = path(i);
+            let other = other.trim_end_matches(".position");
+            let apart = space.displacement(&p.position[i], &p.position[j]).amax();
+            let rule = if apart == 0.0 {
+                format!("has the same centre as {other}: the contact normal is undefined")
+            } else {
+                format!(
+                    "has its centre {apart:e} m from that of {other}, too close for a contact normal (the squared distance underflows)"
+                )
+            };
+            errors.push(TampError::input(path(j), rule));
+            continue;
+        }
+        let overlap = p.radius[i] + p.radius[j] - distance;
         let fraction = overlap / p.radius[i].min(p.radius[j]);
         if fraction > tolerance {
             errors.push(TampError::input(
