@@ -260,3 +260,61 @@ fn compare_exits_1_beyond_tolerance_and_0_within() {
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("'lots' is not a number"));
 }
+
+/// `tamp study accuracy-cost` on one cheap case: a CSV row per quantity and step, the
+/// case's own step passing as in `tamp verify`, the step scale changing Δt by that
+/// factor, and a page with the case's section and plot; a bad scale list is exit 2.
+#[test]
+fn study_accuracy_cost_sweeps_one_case_and_writes_the_page() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().to_str().unwrap();
+    let bad = tamp(&[
+        "study",
+        "accuracy-cost",
+        "--case",
+        "hertz_collision_time",
+        "--scales",
+        "0,1",
+        "--out",
+        out,
+    ]);
+    assert_eq!(bad.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("--scales"));
+
+    let o = tamp(&[
+        "study",
+        "accuracy-cost",
+        "--case",
+        "hertz_collision_time",
+        "--scales",
+        "2,1,0.5",
+        "--min-wall",
+        "0",
+        "--out",
+        out,
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let mut reader =
+        csv::Reader::from_path(dir.path().join("accuracy-cost/hertz_collision_time.csv")).unwrap();
+    let rows: Vec<csv::StringRecord> = reader.records().map(|r| r.unwrap()).collect();
+    let header = reader.headers().unwrap().clone();
+    let col = |name: &str| header.iter().position(|h| h == name).unwrap();
+    let at = |scale: f64| -> Vec<&csv::StringRecord> {
+        rows.iter()
+            .filter(|r| r[col("step_scale")].parse::<f64>().unwrap() == scale)
+            .collect()
+    };
+    assert!(!at(1.0).is_empty());
+    assert!(at(1.0).iter().all(|r| &r[col("status")] == "pass"));
+    let dt = |scale: f64| at(scale)[0][col("dt")].parse::<f64>().unwrap();
+    assert!((dt(2.0) / dt(1.0) - 2.0).abs() < 1e-12);
+    assert!((dt(0.5) / dt(1.0) - 0.5).abs() < 1e-12);
+    assert_eq!(at(2.0).len(), at(1.0).len());
+    let page = std::fs::read_to_string(dir.path().join("accuracy-cost.md")).unwrap();
+    assert!(page.contains("### hertz_collision_time"));
+    assert!(
+        dir.path()
+            .join("img/accuracy-cost/hertz_collision_time.svg")
+            .exists()
+    );
+}

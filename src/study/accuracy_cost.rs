@@ -45,6 +45,9 @@ pub struct Row {
     pub error: Option<f64>,
     pub tolerance: Option<f64>,
     pub note: String,
+    /// The tamp commit that ran it (a CSV may be older than the page).
+    #[serde(default)]
+    pub commit: String,
 }
 
 /// What `tamp study accuracy-cost` was asked to do.
@@ -183,6 +186,7 @@ fn sweep_case(spec: &CaseSpec, dir: &Path, scratch: &Path, opts: &Options) -> Re
             error: None,
             tolerance: None,
             note: result.error.clone().unwrap_or_default(),
+            commit: crate::GIT_COMMIT.to_string(),
         };
         if result.quantities.is_empty() {
             rows.push(common.clone());

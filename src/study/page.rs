@@ -64,9 +64,16 @@ fn sci(x: Option<f64>) -> String {
     x.map(|v| format!("{v:.3e}")).unwrap_or_else(|| "—".into())
 }
 
+/// α and the like: fixed point down to 0.01, scientific below (α = 1e-4 happens).
 fn fixed(x: Option<f64>, digits: usize) -> String {
-    x.map(|v| format!("{v:.digits$}"))
-        .unwrap_or_else(|| "—".into())
+    x.map(|v| {
+        if v != 0.0 && v.abs() < 0.01 {
+            format!("{v:.2e}")
+        } else {
+            format!("{v:.digits$}")
+        }
+    })
+    .unwrap_or_else(|| "—".into())
 }
 
 /// What one case's sweep says, for the summary table.
