@@ -41,7 +41,7 @@
 //! The pair count and the small spheres' local packing fraction of each
 //! configuration are printed once before it is timed, and the two detectors are
 //! checked to agree. Run with
-//! `cargo bench --bench broad_phase` (≈ 6 min; one group: `-- broad_phase_vs_n`,
+//! `cargo bench --bench broad_phase` (≈ 7 min; one group: `-- broad_phase_vs_n`,
 //! though every packing is still made).
 //!
 //! Times are the CPU time of the benchmark thread, not wall time

@@ -36,7 +36,7 @@
 //! Times are the CPU time of the bench thread (`common/cpu_time.rs`); samples span
 //! ≥ 0.4 s. Criterion's throughput (elements/s) is particle-steps per second.
 //!
-//! Run with `cargo bench --bench full_step` (≈ 5 min); docs/performance.md has the
+//! Run with `cargo bench --bench full_step` (≈ 4 min); docs/performance.md has the
 //! table.
 
 #[path = "common/cpu_time.rs"]
