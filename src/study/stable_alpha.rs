@@ -214,6 +214,8 @@ fn sites(a: f64) -> Vec<[f64; 3]> {
     out
 }
 
+// NiAl's Poisson ratio 0.318 (Rojek 2016 Table 2) is a material constant, not 1/π.
+#[allow(clippy::approx_constant)]
 fn scene_json(law: &Law, velocities: &[([f64; 3], [f64; 3])]) -> Value {
     let a = std::f64::consts::SQRT_2 * (2.0 * RADIUS - OVERLAP);
     let material = if law.plastic {
