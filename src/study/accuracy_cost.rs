@@ -102,16 +102,7 @@ pub fn run(opts: &Options) -> Result<u8> {
     crate::output::create_dir(&scratch)?;
     for spec in selected {
         let rows = sweep_case(spec, &dir, &scratch, opts)?;
-        let mut writer = csv::Writer::from_writer(Vec::new());
-        for r in &rows {
-            writer
-                .serialize(r)
-                .map_err(|e| TampError::Other(format!("CSV: {e}")))?;
-        }
-        let bytes = writer
-            .into_inner()
-            .map_err(|e| TampError::Other(format!("CSV: {e}")))?;
-        crate::output::write_atomic(&data_dir.join(format!("{}.csv", spec.name)), &bytes)?;
+        super::write_csv(&data_dir.join(format!("{}.csv", spec.name)), &rows)?;
     }
     let _ = std::fs::remove_dir_all(&scratch);
     super::page::write(&opts.out)?;

@@ -5,3 +5,18 @@
 pub mod accuracy_cost;
 pub mod page;
 pub mod stable_alpha;
+
+use crate::error::{Result, TampError};
+use std::path::Path;
+
+/// Rows as CSV with a header, written atomically (studies are rerun case by case, so a
+/// file is either the old one or the whole new one).
+fn write_csv<T: serde::Serialize>(path: &Path, rows: &[T]) -> Result<()> {
+    let bad = |e: String| TampError::Other(format!("{}: {e}", path.display()));
+    let mut writer = csv::Writer::from_writer(Vec::new());
+    for r in rows {
+        writer.serialize(r).map_err(|e| bad(e.to_string()))?;
+    }
+    let bytes = writer.into_inner().map_err(|e| bad(e.to_string()))?;
+    crate::output::write_atomic(path, &bytes)
+}

@@ -391,16 +391,7 @@ pub fn run(out: &Path) -> Result<u8> {
             note,
         });
     }
-    let mut writer = csv::Writer::from_writer(Vec::new());
-    for r in &rows {
-        writer
-            .serialize(r)
-            .map_err(|e| TampError::Other(format!("CSV: {e}")))?;
-    }
-    let bytes = writer
-        .into_inner()
-        .map_err(|e| TampError::Other(format!("CSV: {e}")))?;
-    crate::output::write_atomic(&data_dir.join("stable_alpha.csv"), &bytes)?;
+    super::write_csv(&data_dir.join("stable_alpha.csv"), &rows)?;
     super::page::write(out)?;
     Ok(0)
 }
