@@ -25,8 +25,36 @@ struct Draw {
 
 const LAWS: [&str; 4] = ["hertz", "hertz+mindlin", "linear+cundall", "hertz+coulomb"];
 const R_MAX: f64 = 1e-3;
-/// Up to 0.1 m/s: well below the stable limit of every modulus drawn.
+/// Up to 0.1 m/s, and less where a draw is too soft for it (`speed`).
 const SPEED: f64 = 0.1;
+
+/// The draw's speed: at most `SPEED`, and low enough that the heaviest sphere, met at
+/// the largest relative speed the chain can have (2.6 × the speed), presses a
+/// contact with the smallest sphere to at most a tenth of its radius. Without the
+/// cap a soft draw (E = 1 MPa) pinches a 10 µm sphere between two of 0.5–0.8 mm
+/// until the overlap passes half its radius and the run stops at the overlap
+/// guard: physics outside the law's range, not a numerical failure (found in CI).
+fn speed(d: &Draw) -> f64 {
+    let radius = |f: f64| f * R_MAX;
+    let smallest = d
+        .spheres
+        .iter()
+        .map(|s| radius(s.0))
+        .fold(f64::INFINITY, f64::min);
+    let largest = d.spheres.iter().map(|s| radius(s.0)).fold(0.0, f64::max);
+    let heaviest = d.density * 4.0 / 3.0 * std::f64::consts::PI * largest.powi(3);
+    let overlap = 0.1 * smallest;
+    let v = match LAWS[d.law] {
+        // ½ m v² = ½ k δ², k = E R_MAX (scene_of).
+        "linear+cundall" => overlap * (d.youngs_modulus * R_MAX / heaviest).sqrt(),
+        // Hertz: δ_max = (15 m v² / (16 E* √R*))^(2/5), R* ≤ the smallest radius.
+        _ => {
+            let e_star = d.youngs_modulus / (2.0 * (1.0 - 0.3f64 * 0.3));
+            (16.0 * e_star * smallest.sqrt() * overlap.powf(2.5) / (15.0 * heaviest)).sqrt()
+        }
+    };
+    SPEED.min(v / 2.6)
+}
 
 fn draw() -> impl Strategy<Value = Draw> {
     let sphere = (
@@ -72,6 +100,7 @@ fn scene_of(d: &Draw, order: &[usize]) -> Value {
         centres.push([at, y, z]);
     }
     let middle = x / 2.0;
+    let speed = speed(d);
     let mut particles = Vec::new();
     for &k in order {
         let (f, _, dir) = d.spheres[k];
@@ -81,7 +110,7 @@ fn scene_of(d: &Draw, order: &[usize]) -> Value {
             "position": c,
             "radius": f * R_MAX,
             "material": "m",
-            "velocity": [(towards + dir[0]) * SPEED, dir[1] * SPEED, dir[2] * SPEED]
+            "velocity": [(towards + dir[0]) * speed, dir[1] * speed, dir[2] * speed]
         }));
     }
     let (normal, tangential) = match LAWS[d.law] {
@@ -137,7 +166,13 @@ fn momenta(sim: &Simulation) -> (Vec3, Vec3, f64) {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 24, ..ProptestConfig::default() })]
+    // A fixed seed: CI must judge the same draws every time (a new failure found by
+    // exploring with PROPTEST_RNG_SEED goes into the regression file or a named test).
+    #![proptest_config(ProptestConfig {
+        cases: 64,
+        rng_seed: proptest::test_runner::RngSeed::Fixed(8),
+        ..ProptestConfig::default()
+    })]
 
     #[test]
     fn random_scenes_conserve_momentum_lose_energy_and_ignore_numbering(d in draw()) {
@@ -152,10 +187,10 @@ proptest! {
         let p = &sim.particles;
         prop_assert!((0..n).all(|i| p.position[i].iter().chain(p.velocity[i].iter()).chain(p.omega[i].iter()).all(|c| c.is_finite())));
         // The draw must have produced collisions, or it proves nothing.
-        let exchanged = (0..n).any(|i| (p.velocity[i] - first.sim.particles.velocity[i]).norm() > 0.01 * SPEED);
+        let exchanged = (0..n).any(|i| (p.velocity[i] - first.sim.particles.velocity[i]).norm() > 0.01 * speed(&d));
         prop_assume!(exchanged, "no collision within the run");
         let (lin, ang, _) = momenta(&sim);
-        let lin_scale: f64 = (0..n).map(|i| p.mass[i] * 0.2).sum();
+        let lin_scale: f64 = (0..n).map(|i| p.mass[i] * 2.0 * speed(&d)).sum();
         prop_assert!((lin - p0.0).norm() <= 1e-12 * lin_scale, "linear momentum moved by {:e}", (lin - p0.0).norm());
         prop_assert!((ang - p0.1).norm() <= 1e-10 * p0.2.max(1e-30), "angular momentum moved by {:e} of {:e}", (ang - p0.1).norm(), p0.2);
         // Every law drawn dissipates (ξ > 0); velocity Verlet may add a first-order
@@ -171,4 +206,33 @@ proptest! {
             prop_assert!(dx <= 1e-9 * p.radius[i], "particle {i} differs by {dx:e} m when renumbered");
         }
     }
+}
+
+/// The draw CI's proptest shrank to on 2026-11-21 (before `speed` capped soft draws):
+/// a 10 µm sphere between spheres of 0.46 and 0.79 mm, E = 1 MPa, Hertz + Mindlin.
+#[test]
+fn soft_pinch_found_in_ci_runs_within_the_overlap_guard() {
+    let d = Draw {
+        spheres: vec![
+            (
+                0.4597561942579398,
+                [0.27292531116486635, -0.07723215866008712],
+                [
+                    -0.0272896490258215,
+                    -0.2787361979646387,
+                    -0.027437837860321727,
+                ],
+            ),
+            (0.01, [0.0, 0.0], [0.0, 0.0, 0.0]),
+            (0.06479751808584545, [0.0, 0.0], [0.0, 0.0, 0.0]),
+            (0.788914868174379, [0.0, 0.0], [0.0, 0.0, 0.0]),
+        ],
+        youngs_modulus: 1e6,
+        density: 1000.0,
+        law: 1,
+        xi: 0.05,
+    };
+    assert!(speed(&d) < SPEED);
+    let sim = run(&scene_of(&d, &[0, 1, 2, 3]));
+    assert!((0..4).all(|i| sim.particles.velocity[i].iter().all(|c| c.is_finite())));
 }
