@@ -451,7 +451,10 @@ Reading the table:
   over the contacts. Until 2026-11-21 the estimate took the *largest* k_t times the lever
   1 + mR²/I, and this lattice was stable only to α = 0.60 with the Mindlin laws
   (k_t ≈ 0.8 k_n) and 1.02 with k_t = 2/7 k_n; the estimate now sums k_t over the contacts
-  like it sums k_n (src/simulation.rs), which moves every row to α_max ≥ 1.
+  like it sums k_n (src/simulation.rs), which moves every row to α_max ≥ 1. Rojek 2016
+  §3.4 makes the same observation (with equal normal and tangential stiffness the
+  rotational eigenfrequency exceeds the translational one) and scales the rotational
+  inertia by 10 instead (`rotation.inertia_scale`), which lowers the lever 1 + mR²/I.
 - **Haff–Werner** viscous friction is explicit: its limit 2m/(γ_s L) was per contact, while a
   particle's 12 dashpots act on it together (α_max was 0.29); the estimate now divides it by
   the number of contacts.
