@@ -675,8 +675,8 @@ impl Simulation {
     /// Critical time step estimate, Rojek eqs 26–29 without the safety factor α.
     ///
     /// k_i is the largest of: the sum of the particle's current normal contact
-    /// stiffnesses (for laws with memory, the stiffness of the current branch, Rojek
-    /// §3.4); the impact stiffness against a much larger body of any material
+    /// stiffnesses (for laws with memory, the current branch's, or the unloading
+    /// branch's where that is stiffer: `NormalLaw::time_step_stiffness`, Rojek §3.4); the impact stiffness against a much larger body of any material
     /// (R* = R_i, m* = m_i: walls, and an upper bound on any finite partner); and the
     /// sum of the tangential stiffnesses of its contacts (or the Cundall–Strack k_s) —
     /// times (1 + m R²/I) when rotation is on, because the tangential force then also
@@ -690,9 +690,7 @@ impl Simulation {
     /// any current contact to take a stiffness from.
     pub fn critical_time_step(&self, characteristic_velocity: Option<f64>) -> Option<f64> {
         let p = &self.particles;
-        let mut normal_sum = vec![0.0; p.len()];
-        let mut tangential_sum = vec![0.0f64; p.len()];
-        let mut contacts = vec![0usize; p.len()];
+        let mut met = vec![ContactsMet::default(); p.len()];
         for (k, i, j, overlap) in self.touching_pairs(0.0) {
             let pair = self.pair_table.get(p.material[i], p.material[j]);
             let r_eff = effective_radius(p.radius[i], p.radius[j]);
@@ -700,34 +698,22 @@ impl Simulation {
                 .law
                 .stiffness(overlap, r_eff, pair, self.pair_history(k));
             for b in [i, j] {
-                normal_sum[b] += k_n;
-                tangential_sum[b] += k_t;
-                contacts[b] += 1;
+                met[b].add(k_n, k_t);
             }
         }
         for (w, i, facet, overlap) in self.touching_walls(0.0) {
             let pair = self.pair_table.get(p.material[i], self.walls[w].material);
             let history = self.wall_contact_history(w, i, facet);
             let (k_n, k_t) = self.law.stiffness(overlap, p.radius[i], pair, history);
-            normal_sum[i] += k_n;
-            tangential_sum[i] += k_t;
-            contacts[i] += 1;
+            met[i].add(k_n, k_t);
         }
-        // Each body: (mass, radius at full size, moment of inertia, material, Σ k_n
-        // of its contacts, Σ k_t, number of contacts). Particles still to be poured count with the
-        // smallest radius their source can draw, the lightest they can be.
-        let mut bodies: Vec<(f64, f64, f64, usize, f64, f64, usize)> = (0..p.len())
+        // Each body: (mass, radius at full size, moment of inertia, material, the
+        // contacts it meets). Particles still to be poured count with the smallest
+        // radius their source can draw, the lightest they can be, and no contact.
+        let mut bodies: Vec<(f64, f64, f64, usize, ContactsMet)> = (0..p.len())
             .map(|i| {
                 let r = self.final_radius(i);
-                (
-                    p.mass[i],
-                    r,
-                    p.inertia[i],
-                    p.material[i],
-                    normal_sum[i],
-                    tangential_sum[i],
-                    contacts[i],
-                )
+                (p.mass[i], r, p.inertia[i], p.material[i], met[i])
             })
             .collect();
         for src in self.sources.iter().filter(|s| s.remaining > 0) {
@@ -741,14 +727,12 @@ impl Simulation {
                     r,
                     self.inertia_scale * 0.4 * m * r * r,
                     src.material,
-                    0.0,
-                    0.0,
-                    0,
+                    ContactsMet::default(),
                 ));
             }
         }
         let mut best: Option<f64> = None;
-        for (mass, radius, inertia, material, k_contacts, k_tangential, touching) in bodies {
+        for (mass, radius, inertia, material, met) in bodies {
             let impact = match (&self.law.normal, characteristic_velocity) {
                 (NormalLaw::Linear { .. }, _)
                 | (NormalLaw::Hysteretic { .. }, _)
@@ -767,7 +751,7 @@ impl Simulation {
             } else {
                 1.0
             };
-            let mut k = k_contacts.max(impact);
+            let mut k = met.normal.max(impact);
             if k <= 0.0 {
                 // No normal stiffness known: the estimate is undefined for this body.
                 continue;
@@ -787,11 +771,11 @@ impl Simulation {
                 // k_t = k_n of the linear law, known before any contact.
                 k = k.max(impact * lever);
             }
-            k = k.max(k_tangential * lever);
+            k = k.max(met.tangential * lever);
             let viscous = match self.law.tangential {
                 Some(TangentialLaw::HaffWerner { damping }) if damping > 0.0 => {
                     // The dashpots of all its contacts act on the particle together.
-                    Some(2.0 * mass / (damping * lever * touching.max(1) as f64))
+                    Some(2.0 * mass / (damping * lever * met.count.max(1) as f64))
                 }
                 _ => None,
             };
@@ -801,5 +785,23 @@ impl Simulation {
             best = Some(best.map_or(dt, |b: f64| b.min(dt)));
         }
         best
+    }
+}
+
+/// What one particle's contacts add up to for the critical time step: Σ k_n, Σ k_t
+/// (summed, because neighbours act on a particle through all its contacts at once)
+/// and how many there are.
+#[derive(Clone, Copy, Debug, Default)]
+struct ContactsMet {
+    normal: f64,
+    tangential: f64,
+    count: usize,
+}
+
+impl ContactsMet {
+    fn add(&mut self, k_n: f64, k_t: f64) {
+        self.normal += k_n;
+        self.tangential += k_t;
+        self.count += 1;
     }
 }

@@ -65,10 +65,14 @@ pub struct Options {
 /// Beds with at least this many spheres are also run with each broad phase.
 const DETECTOR_SWEEP_MIN_PARTICLES: usize = 200;
 
-/// Cases whose reference is a LIGGGHTS run at the case's own step: another step
-/// would compare against a run that was not made.
-fn reference_fixes_the_step(case: &str) -> bool {
-    case.starts_with("liggghts_")
+/// Cases whose reference is a recorded LIGGGHTS run (reference_data/liggghts/<case>),
+/// made at the case's own step: another step would compare against a run that was
+/// not made.
+fn reference_fixes_the_step(dir: &Path, case: &str) -> bool {
+    verify::reference_data_beside(dir)
+        .join("liggghts")
+        .join(case)
+        .is_dir()
 }
 
 pub fn run(opts: &Options) -> Result<u8> {
@@ -115,7 +119,7 @@ fn sweep_case(spec: &CaseSpec, dir: &Path, scratch: &Path, opts: &Options) -> Re
     let particles = scene::build(&base)
         .map(|b| b.sim.particles.len() + b.sim.sources.iter().map(|s| s.remaining).sum::<usize>())
         .unwrap_or(0);
-    let mut variants: Vec<Variant> = if reference_fixes_the_step(&spec.name) {
+    let mut variants: Vec<Variant> = if reference_fixes_the_step(dir, &spec.name) {
         vec![Variant::default()]
     } else {
         opts.scales

@@ -80,8 +80,15 @@ fn fixed(x: Option<f64>, digits: usize) -> String {
 struct Finding {
     setting_alpha: Option<f64>,
     setting_dt: Option<f64>,
-    recommended: Option<(f64, Option<f64>, f64)>, // (dt, alpha, speed-up)
+    recommended: Option<Recommended>,
     order: String,
+}
+
+/// The cheapest passing step and its wall-time gain over the case's own step.
+struct Recommended {
+    dt: Option<f64>,
+    alpha: Option<f64>,
+    gain: f64,
 }
 
 /// The cheapest step of the sweep such that it and every finer step pass.
@@ -186,28 +193,34 @@ fn case_section(page: &mut String, img_dir: &Path, case: &str, rows: &[Row]) -> 
     }
     let order = order_of(&step_runs);
     let rec = recommend(&step_runs);
-    let recommended = rec.and_then(|r| {
-        let base = setting?.first().wall_s;
-        Some((r.first().dt?, r.first().alpha, base / r.first().wall_s))
+    let recommended = rec.zip(setting).map(|(r, s)| Recommended {
+        dt: r.first().dt,
+        alpha: r.first().alpha,
+        gain: s.first().wall_s / r.first().wall_s,
     });
+    let commit = step_runs
+        .first()
+        .map(|r| r.first().commit.as_str())
+        .filter(|c| !c.is_empty())
+        .unwrap_or("unrecorded");
     let _ = writeln!(
         page,
-        "\nObserved order (most step-sensitive quantity): {order}.\n"
+        "\nObserved order (most step-sensitive quantity): {order}. Run by commit {commit}.\n"
     );
-    let line = match (rec, setting) {
+    let line = match (rec, setting, &recommended) {
         _ if step_runs.len() < 2 => {
             "Recommendation: keep the case's step; its reference is a run at that step.".to_string()
         }
-        (Some(r), Some(s)) if r.first().step_scale == s.first().step_scale => {
+        (Some(r), Some(s), _) if r.first().step_scale == s.first().step_scale => {
             "Recommendation: keep the case's step; the next coarser one leaves the tolerance."
                 .to_string()
         }
-        (Some(r), Some(s)) => format!(
+        (Some(r), _, Some(best)) => format!(
             "Recommendation: step scale {} (Δt = {}, α = {}), the cheapest within tolerance; {:.1}× less wall time than the case's setting.",
             r.first().step_scale,
-            sci(r.first().dt),
-            fixed(r.first().alpha, 3),
-            s.first().wall_s / r.first().wall_s
+            sci(best.dt),
+            fixed(best.alpha, 3),
+            best.gain
         ),
         _ => "Recommendation: none of the swept steps passes at and below it; the case's own step is needed."
             .to_string(),
@@ -288,8 +301,8 @@ depend on when a contact starts or ends to one.
 The *recommendation* is the cheapest step such that it and every finer step of the
 sweep pass. It is a statement about the case, not a licence: a scene with a
 different loading or more contacts per particle needs its own check. Cases whose
-reference is a LIGGGHTS run at the case's step (`liggghts_*`) are run at that step
-only. Packing beds of at least 200 spheres are also run with each broad phase at the
+reference is a LIGGGHTS run recorded at the case's step (reference_data/liggghts/<case>)
+are run at that step only. Packing beds of at least 200 spheres are also run with each broad phase at the
 case's step (the detector changes the order in which contacts are summed, so a
 chaotic packing may land on another, equally valid, final state).
 
@@ -331,10 +344,12 @@ pub fn write(out: &Path) -> Result<()> {
             sci(f.setting_dt),
             fixed(f.setting_alpha, 3),
             f.recommended
-                .map(|(dt, a, _)| format!("{} ({})", sci(Some(dt)), fixed(a, 3)))
+                .as_ref()
+                .map(|r| format!("{} ({})", sci(r.dt), fixed(r.alpha, 3)))
                 .unwrap_or_else(|| "—".into()),
             f.recommended
-                .map(|(_, _, g)| format!("{g:.1}×"))
+                .as_ref()
+                .map(|r| format!("{:.1}×", r.gain))
                 .unwrap_or_else(|| "—".into()),
             f.order
         );

@@ -130,13 +130,10 @@ impl CaseContext<'_> {
     /// `reference_data/` beside the verification directory: results recorded by
     /// other codes (LIGGGHTS), with their decks, logs and provenance.
     pub fn reference_data_dir(&self) -> PathBuf {
-        if let Some(dir) = &self.reference_data {
-            return dir.clone();
+        match &self.reference_data {
+            Some(dir) => dir.clone(),
+            None => reference_data_beside(&self.dir),
         }
-        self.dir
-            .parent()
-            .unwrap_or(&self.dir)
-            .join("reference_data")
     }
 
     /// The rows of `reference_data/liggghts/<case>/results.csv` (at least one).
@@ -213,6 +210,11 @@ pub struct VerificationReport {
     pub tamp_version: String,
     pub git_commit: String,
     pub cases: Vec<CaseResult>,
+}
+
+/// `reference_data/` beside the verification directory `dir`.
+pub fn reference_data_beside(dir: &Path) -> PathBuf {
+    dir.parent().unwrap_or(dir).join("reference_data")
 }
 
 /// The verification directory: `$TAMP_VERIFICATION_DIR`, else the crate's own.
