@@ -103,13 +103,13 @@ pub fn read_checkpoint<T: DeserializeOwned>(path: &Path) -> Result<T> {
         .map_err(|e| TampError::io(format!("reading checkpoint {}", path.display()), e))?;
     let de = &mut serde_json::Deserializer::from_slice(&bytes);
     serde_path_to_error::deserialize(de).map_err(|e| {
+        let at = match e.path().to_string() {
+            top if top == "." => String::new(),
+            inner => format!(" (at {inner})"),
+        };
         TampError::input(
             path.display().to_string(),
-            format!(
-                "is not a readable tamp checkpoint (at {}): {}",
-                e.path(),
-                e.inner()
-            ),
+            format!("is not a readable tamp checkpoint{at}: {}", e.inner()),
         )
     })
 }
