@@ -2,6 +2,7 @@
 //! powder packing and cold die compaction. See README.md and docs/architecture.md.
 
 pub mod boundary;
+pub mod checkpoint;
 pub mod compare;
 pub mod contact;
 pub mod detect;

@@ -27,6 +27,10 @@ enum Command {
         /// No progress bar.
         #[arg(long)]
         quiet: bool,
+        /// Go on from DIR/checkpoint.json if there is one (scene field
+        /// output.checkpoint_every); start from step 0 otherwise.
+        #[arg(long)]
+        resume: bool,
     },
     /// Run verification cases and write the report.
     Verify {
@@ -128,7 +132,12 @@ enum Study {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
-        Command::Run { scene, out, quiet } => tamp::run::run_scene(&scene, &out, quiet).map(|s| {
+        Command::Run {
+            scene,
+            out,
+            quiet,
+            resume,
+        } => tamp::run::run_scene(&scene, &out, quiet, resume).map(|s| {
             println!(
                 "ran {} steps of {:e} s ({} particles); wrote {}",
                 s.steps,

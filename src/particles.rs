@@ -2,19 +2,20 @@
 //! so the integrator and the contact loop stream through memory.
 
 use nalgebra::Vector3;
+use serde::{Deserialize, Serialize};
 
 pub type Vec3 = Vector3<f64>;
 
 /// How a particle moves: by Newton–Euler, or at a prescribed velocity
 /// (displacement-controlled loading, Rojek 2016 §4). A prescribed particle still
 /// receives contact forces; they are its reaction and are recorded as external work.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub enum Motion {
     Free,
     Prescribed(Vec3),
 }
 
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug, Default, Serialize, Deserialize)]
 pub struct Particles {
     pub position: Vec<Vec3>,
     pub velocity: Vec<Vec3>,

@@ -1,15 +1,61 @@
-//! `tamp run SCENE --out DIR`: build the scene, step it, write the outputs.
+//! `tamp run SCENE --out DIR [--resume]`: build the scene, step it, write the outputs.
+//! With `output.checkpoint_every`, the run also writes `DIR/checkpoint.json` on the
+//! way; `--resume` goes on from it, and the outputs are then the ones the
+//! uninterrupted run writes, byte for byte (see `checkpoint`).
 
-use crate::error::Result;
+use crate::checkpoint::{self, Checkpoint, SimState};
+use crate::error::{Result, TampError};
 use crate::output::{self, Provenance, series::Series, summary::Summary};
 use crate::scene;
+use crate::simulation::Simulation;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use serde::{Deserialize, Serialize};
+use std::borrow::Cow;
 use std::io::IsTerminal;
 use std::path::Path;
 use std::time::{Duration, Instant};
 
-pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool) -> Result<Summary> {
+/// What a resumed run needs besides the simulation to write the same files as an
+/// uninterrupted one: everything the outputs have accumulated so far. Borrowed when
+/// written, so a checkpoint does not copy the trajectory text.
+#[derive(Serialize, Deserialize)]
+struct RunState<'a> {
+    sim: SimState,
+    series_rows: Cow<'a, [Vec<f64>]>,
+    trajectory: Cow<'a, str>,
+    vtk_frames: usize,
+}
+
+/// Append one trajectory.csv row per particle at the current step.
+fn record_trajectory(sim: &Simulation, out: &mut String) {
+    let p = &sim.particles;
+    for i in 0..p.len() {
+        crate::compare::trajectory_row(
+            out,
+            sim.step,
+            i as u64 + 1,
+            p.radius[i],
+            &p.position[i],
+            &p.velocity[i],
+            &p.omega[i],
+        );
+    }
+}
+
+fn write_frame(vtk_dir: &Path, index: usize, sim: &Simulation) -> Result<()> {
+    let path = vtk_dir.join(format!("frame_{index:06}.vtk"));
+    output::write_atomic(&path, output::vtk::to_ascii(sim)?.as_bytes())
+}
+
+pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool, resume: bool) -> Result<Summary> {
     let (scene, sha) = scene::load(scene_path)?;
+    let checkpoint_every = scene.output.checkpoint_every;
+    if resume && checkpoint_every == 0 {
+        return Err(TampError::input(
+            "output.checkpoint_every",
+            "must be > 0 with --resume: a run that writes no checkpoint has nothing to resume from",
+        ));
+    }
     let built = scene::build(&scene)?;
     for w in &built.warnings {
         eprintln!("warning: {w}");
@@ -20,42 +66,57 @@ pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool) -> Result<Summa
         0 => (built.steps / 1000).max(1),
         n => n,
     };
-    let mut series = Series::new(&scene.output.series, &sim);
-    series.record(&sim);
-    let vtk_dir = out_dir.join("vtk");
-    if scene.output.vtk_every > 0 {
-        output::create_dir(&vtk_dir)?;
-        output::vtk::remove_frames(&vtk_dir)?;
-    }
     let trajectory_every = scene.output.trajectory_every;
+    let vtk_every = scene.output.vtk_every;
+    let vtk_dir = out_dir.join("vtk");
+    if vtk_every > 0 {
+        output::create_dir(&vtk_dir)?;
+    }
+    let checkpoint_path = out_dir.join("checkpoint.json");
+    let mut series = Series::new(&scene.output.series, &sim);
     let mut trajectory = String::new();
-    let record_trajectory = |sim: &crate::simulation::Simulation, out: &mut String| {
-        let p = &sim.particles;
-        for i in 0..p.len() {
-            crate::compare::trajectory_row(
-                out,
-                sim.step,
-                i as u64 + 1,
-                p.radius[i],
-                &p.position[i],
-                &p.velocity[i],
-                &p.omega[i],
+    let mut frames = 0usize;
+    if resume && checkpoint_path.exists() {
+        let saved: Checkpoint<RunState> = checkpoint::read_checkpoint(&checkpoint_path)?;
+        if saved.git_commit != crate::GIT_COMMIT {
+            eprintln!(
+                "warning: {} was written by tamp commit {}, this is {}; if the step changed between them, the resumed run differs from an uninterrupted one",
+                checkpoint_path.display(),
+                saved.git_commit,
+                crate::GIT_COMMIT
             );
         }
-    };
-    if trajectory_every > 0 {
-        trajectory.push_str(crate::compare::TRAJECTORY_HEADER);
-        trajectory.push('\n');
-        record_trajectory(&sim, &mut trajectory);
-    }
-    let mut frames = 0usize;
-    let mut write_frame = |sim: &crate::simulation::Simulation| -> Result<()> {
-        let path = vtk_dir.join(format!("frame_{frames:06}.vtk"));
-        frames += 1;
-        output::write_atomic(&path, output::vtk::to_ascii(sim)?.as_bytes())
-    };
-    if scene.output.vtk_every > 0 {
-        write_frame(&sim)?;
+        let state = saved.into_state(&sha, &checkpoint_path)?;
+        state.sim.restore(&mut sim)?;
+        series.rows = state.series_rows.into_owned();
+        trajectory = state.trajectory.into_owned();
+        frames = state.vtk_frames;
+        eprintln!(
+            "resuming from step {} of {} ({})",
+            sim.step,
+            built.steps,
+            checkpoint_path.display()
+        );
+    } else {
+        if resume {
+            eprintln!(
+                "no checkpoint in {}: starting from step 0",
+                out_dir.display()
+            );
+        }
+        series.record(&sim);
+        if trajectory_every > 0 {
+            trajectory.push_str(crate::compare::TRAJECTORY_HEADER);
+            trajectory.push('\n');
+            record_trajectory(&sim, &mut trajectory);
+        }
+        if vtk_every > 0 {
+            // Frames of an earlier run must not mix with this one's. A resumed run
+            // keeps them: they are its own, and it rewrites those past the checkpoint.
+            output::vtk::remove_frames(&vtk_dir)?;
+            write_frame(&vtk_dir, frames, &sim)?;
+            frames += 1;
+        }
     }
 
     // The bar appears only for runs longer than a second on an interactive terminal.
@@ -64,10 +125,11 @@ pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool) -> Result<Summa
         ProgressStyle::with_template("{bar:40} {pos}/{len} steps  {elapsed} elapsed, ETA {eta}")
             .expect("static template"),
     );
+    bar.set_position(sim.step);
     let show_bar = !quiet && std::io::stderr().is_terminal();
     let started = Instant::now();
     let mut shown = false;
-    for _ in 0..built.steps {
+    while sim.step < built.steps {
         sim.step()?;
         if sim.step % every == 0 {
             series.record(&sim);
@@ -75,8 +137,18 @@ pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool) -> Result<Summa
         if trajectory_every > 0 && (sim.step % trajectory_every == 0 || sim.step == built.steps) {
             record_trajectory(&sim, &mut trajectory);
         }
-        if scene.output.vtk_every > 0 && sim.step % scene.output.vtk_every == 0 {
-            write_frame(&sim)?;
+        if vtk_every > 0 && sim.step % vtk_every == 0 {
+            write_frame(&vtk_dir, frames, &sim)?;
+            frames += 1;
+        }
+        if checkpoint_every > 0 && sim.step % checkpoint_every == 0 {
+            let state = RunState {
+                sim: SimState::capture(&sim),
+                series_rows: Cow::Borrowed(&series.rows),
+                trajectory: Cow::Borrowed(&trajectory),
+                vtk_frames: frames,
+            };
+            checkpoint::write_checkpoint(&checkpoint_path, &Checkpoint::new(&sha, state))?;
         }
         if sim.step % 256 == 0 {
             if show_bar && !shown && started.elapsed() > Duration::from_secs(1) {

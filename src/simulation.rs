@@ -82,7 +82,7 @@ pub struct Simulation {
     pub neighbors: NeighborList,
     /// History of particle–boundary contacts, `[boundary][particle]` → (facet, history)
     /// for each facet touched; empty when the law keeps none.
-    wall_history: Vec<Vec<Vec<(u32, ContactHistory)>>>,
+    pub(crate) wall_history: Vec<Vec<Vec<(u32, ContactHistory)>>>,
     /// Scratch list of the contacts of one particle with one boundary.
     scratch: Vec<ShapeContact>,
     /// Scratch copy of one particle's facet histories from the previous step.
@@ -92,9 +92,9 @@ pub struct Simulation {
     pub limits: StabilityLimits,
     /// Work done on the particles by gravity and prescribed bodies since the start, J.
     pub external_work: f64,
-    external_work_scale: f64,
-    external_power: f64,
-    initial_mechanical_energy: f64,
+    pub(crate) external_work_scale: f64,
+    pub(crate) external_power: f64,
+    pub(crate) initial_mechanical_energy: f64,
     /// Largest overlap / smaller radius seen so far.
     pub max_overlap_ratio: f64,
     /// Growth stage (Zhong 2009 §6.1): radii grow to `target_radius`, gravity off.

@@ -4,9 +4,10 @@
 //! contact once it opens, including any permanent set.
 
 use crate::particles::Vec3;
+use serde::{Deserialize, Serialize};
 
 /// Loading state of the Mindlin–Deresiewicz tangential law (Zhong eq 20, k = 0, 1, 2).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub enum TangentialBranch {
     /// k = 0: first loading from a virgin contact.
     #[default]
@@ -17,7 +18,7 @@ pub enum TangentialBranch {
     Reloading,
 }
 
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct ContactHistory {
     /// Tangential state vector in the contact plane: the spring elongation ξ_s (m) for
     /// Cundall–Strack, the tangential force F_t (N) for the incremental laws.

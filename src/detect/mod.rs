@@ -50,8 +50,8 @@ pub struct NeighborList {
     pub history: Vec<ContactHistory>,
     pub space: Space,
     keeps_history: bool,
-    reference_position: Vec<Vec3>,
-    reference_radius: Vec<f64>,
+    pub(crate) reference_position: Vec<Vec3>,
+    pub(crate) reference_radius: Vec<f64>,
     pub builds: u64,
 }
 

@@ -6,7 +6,8 @@ use crate::simulation::Simulation;
 pub struct Series {
     columns: Vec<String>,
     header: Vec<String>,
-    rows: Vec<Vec<f64>>,
+    /// Recorded rows; a restart checkpoint carries them so a resumed run writes them all.
+    pub(crate) rows: Vec<Vec<f64>>,
 }
 
 impl Series {

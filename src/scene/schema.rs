@@ -497,4 +497,7 @@ pub struct OutputSpec {
     /// writes none. The last step is always written when this is set.
     #[serde(default)]
     pub trajectory_every: u64,
+    /// Steps between restart checkpoints (`checkpoint.json`); 0 writes none.
+    #[serde(default)]
+    pub checkpoint_every: u64,
 }

@@ -1,0 +1,480 @@
+//! Restart checkpoints: the dynamic state of a `Simulation` on disk, so that a long
+//! run that is killed can go on from its last checkpoint and end exactly — bit for
+//! bit — as the uninterrupted run would have.
+//!
+//! `SimState` holds what the step loop changes: the particle arrays (force and torque
+//! included: the next step's first half-kick uses the last step's forces, which are
+//! stored rather than re-evaluated), Δt, step and time, the neighbour list's pairs,
+//! per-pair histories, reference positions and radii and build count, the per-facet
+//! wall histories, the force on each wall, each wall's displacement and velocity, the
+//! energy book (W, its scale, the last prescribed power that the trapezoidal work rule
+//! averages with, E_mech(0)), the running maximum overlap, the growth stage's target
+//! radii, and each pouring source's next event, count left, pending radius and random
+//! generator.
+//!
+//! Everything else is rebuilt by `scene::build` from the same scene file: materials,
+//! pair table, contact law, wall shapes and motion laws, gravity, growth stage,
+//! stability limits, the neighbour list's detector, skin and space, and each source's
+//! region, size law and schedule. The build is deterministic (the seed fixes every
+//! random draw), so what it rebuilds is what the interrupted run had. A checkpoint is
+//! therefore valid only for its scene: the file carries the scene's SHA-256 and
+//! tamp's version, and `Checkpoint::into_state` refuses any other.
+//!
+//! Why the restored run is bit-exact:
+//! - every double is written as the shortest decimal that reads back to it (serde_json
+//!   formats with ryu) and read with serde_json's `float_roundtrip` parser, which
+//!   rounds correctly; the default, faster parser can be one ulp off;
+//! - nothing is recomputed on restore, so no rounding can differ;
+//! - the neighbour list keeps its reference state, so it is rebuilt at the same steps,
+//!   and its sorted pairs sum the contact forces in the same order;
+//! - a source's ChaCha generator is stored as its abstract state (seed, stream, word
+//!   position), which continues the same stream of draws.
+//!
+//! JSON has no infinities or NaN; a run stops as unstable before one reaches the state.
+
+use crate::contact::history::ContactHistory;
+use crate::error::{Result, TampError};
+use crate::particles::{Particles, Vec3};
+use crate::simulation::Simulation;
+use rand_chacha::ChaCha8Rng;
+use serde::de::DeserializeOwned;
+use serde::{Deserialize, Serialize};
+use std::path::Path;
+
+/// A checkpoint file: a state and the scene and tamp version it belongs to.
+#[derive(Serialize, Deserialize)]
+pub struct Checkpoint<T> {
+    pub tamp_version: String,
+    /// The commit that wrote it: a different commit of the same version is accepted,
+    /// but may step differently, so the reader can warn.
+    pub git_commit: String,
+    pub scene_sha256: String,
+    pub state: T,
+}
+
+impl<T> Checkpoint<T> {
+    pub fn new(scene_sha256: &str, state: T) -> Self {
+        Checkpoint {
+            tamp_version: crate::VERSION.to_string(),
+            git_commit: crate::GIT_COMMIT.to_string(),
+            scene_sha256: scene_sha256.to_string(),
+            state,
+        }
+    }
+
+    /// The stored state, if it was written by this tamp version for the scene whose
+    /// SHA-256 is `scene_sha256`; `file` names the checkpoint in the error.
+    pub fn into_state(self, scene_sha256: &str, file: &Path) -> Result<T> {
+        if self.scene_sha256 != scene_sha256 {
+            return Err(TampError::input(
+                file.display().to_string(),
+                format!(
+                    "was written for the scene with sha256 {}, but this scene has sha256 {scene_sha256}; a checkpoint resumes only the scene file it was made from",
+                    self.scene_sha256
+                ),
+            ));
+        }
+        if self.tamp_version != crate::VERSION {
+            return Err(TampError::input(
+                file.display().to_string(),
+                format!(
+                    "was written by tamp {}, this is tamp {}; another version may step differently",
+                    self.tamp_version,
+                    crate::VERSION
+                ),
+            ));
+        }
+        Ok(self.state)
+    }
+}
+
+/// Write a checkpoint to `path` atomically: a reader, or a run resumed after a kill,
+/// sees the previous checkpoint or this one, never half of one.
+pub fn write_checkpoint(path: &Path, checkpoint: &impl Serialize) -> Result<()> {
+    let json = serde_json::to_vec(checkpoint)
+        .map_err(|e| TampError::Other(format!("serialising {}: {e}", path.display())))?;
+    crate::output::write_atomic(path, &json)
+}
+
+/// Read a checkpoint written by `write_checkpoint`. A file that does not parse is bad
+/// input (exit 2); the error names the JSON path where it stopped.
+pub fn read_checkpoint<T: DeserializeOwned>(path: &Path) -> Result<T> {
+    let bytes = std::fs::read(path)
+        .map_err(|e| TampError::io(format!("reading checkpoint {}", path.display()), e))?;
+    let de = &mut serde_json::Deserializer::from_slice(&bytes);
+    serde_path_to_error::deserialize(de).map_err(|e| {
+        let at = match e.path().to_string() {
+            top if top == "." => String::new(),
+            inner => format!(" (at {inner})"),
+        };
+        TampError::input(
+            path.display().to_string(),
+            format!("is not a readable tamp checkpoint{at}: {}", e.inner()),
+        )
+    })
+}
+
+/// The dynamic state of a `Simulation` (see the module documentation).
+#[derive(Serialize, Deserialize)]
+pub struct SimState {
+    particles: Particles,
+    dt: f64,
+    step: u64,
+    time: f64,
+    neighbors: NeighborState,
+    wall_history: Vec<Vec<Vec<(u32, ContactHistory)>>>,
+    wall_force: Vec<Vec3>,
+    walls: Vec<WallState>,
+    external_work: f64,
+    external_work_scale: f64,
+    external_power: f64,
+    initial_mechanical_energy: f64,
+    max_overlap_ratio: f64,
+    target_radius: Vec<f64>,
+    sources: Vec<SourceState>,
+}
+
+#[derive(Serialize, Deserialize)]
+struct NeighborState {
+    pairs: Vec<(u32, u32)>,
+    history: Vec<ContactHistory>,
+    reference_position: Vec<Vec3>,
+    reference_radius: Vec<f64>,
+    builds: u64,
+}
+
+/// Where a wall is and how fast it moves; its motion law comes from the scene.
+#[derive(Serialize, Deserialize)]
+struct WallState {
+    displacement: Vec3,
+    velocity: Vec3,
+}
+
+#[derive(Serialize, Deserialize)]
+struct SourceState {
+    next: f64,
+    remaining: usize,
+    pending_radius: Option<f64>,
+    rng: ChaCha8Rng,
+}
+
+impl SimState {
+    pub fn capture(sim: &Simulation) -> SimState {
+        let n = &sim.neighbors;
+        SimState {
+            particles: sim.particles.clone(),
+            dt: sim.dt,
+            step: sim.step,
+            time: sim.time,
+            neighbors: NeighborState {
+                pairs: n.pairs.clone(),
+                history: n.history.clone(),
+                reference_position: n.reference_position.clone(),
+                reference_radius: n.reference_radius.clone(),
+                builds: n.builds,
+            },
+            wall_history: sim.wall_history.clone(),
+            wall_force: sim.wall_force.clone(),
+            walls: sim
+                .walls
+                .iter()
+                .map(|w| WallState {
+                    displacement: w.displacement,
+                    velocity: w.velocity,
+                })
+                .collect(),
+            external_work: sim.external_work,
+            external_work_scale: sim.external_work_scale,
+            external_power: sim.external_power,
+            initial_mechanical_energy: sim.initial_mechanical_energy,
+            max_overlap_ratio: sim.max_overlap_ratio,
+            target_radius: sim.target_radius.clone(),
+            sources: sim
+                .sources
+                .iter()
+                .map(|s| SourceState {
+                    next: s.next,
+                    remaining: s.remaining,
+                    pending_radius: s.pending_radius,
+                    rng: s.rng.clone(),
+                })
+                .collect(),
+        }
+    }
+
+    /// Put this state into `sim`, a simulation built from the same scene. Refuses
+    /// (exit 2) a state that cannot belong to that scene.
+    pub fn restore(self, sim: &mut Simulation) -> Result<()> {
+        self.check_fits(sim)?;
+        let n = self.neighbors;
+        sim.neighbors.pairs = n.pairs;
+        sim.neighbors.history = n.history;
+        sim.neighbors.reference_position = n.reference_position;
+        sim.neighbors.reference_radius = n.reference_radius;
+        sim.neighbors.builds = n.builds;
+        for (wall, saved) in sim.walls.iter_mut().zip(self.walls) {
+            wall.displacement = saved.displacement;
+            wall.velocity = saved.velocity;
+        }
+        for (source, saved) in sim.sources.iter_mut().zip(self.sources) {
+            source.next = saved.next;
+            source.remaining = saved.remaining;
+            source.pending_radius = saved.pending_radius;
+            source.rng = saved.rng;
+        }
+        sim.particles = self.particles;
+        sim.dt = self.dt;
+        sim.step = self.step;
+        sim.time = self.time;
+        sim.wall_history = self.wall_history;
+        sim.wall_force = self.wall_force;
+        sim.external_work = self.external_work;
+        sim.external_work_scale = self.external_work_scale;
+        sim.external_power = self.external_power;
+        sim.initial_mechanical_energy = self.initial_mechanical_energy;
+        sim.max_overlap_ratio = self.max_overlap_ratio;
+        sim.target_radius = self.target_radius;
+        Ok(())
+    }
+
+    /// The shape of the state against the scene's simulation: walls and sources, the
+    /// particle count (those built plus those poured since), and histories kept
+    /// exactly when the scene's contact law keeps them. A mismatch here would
+    /// otherwise surface as an index out of bounds in the middle of the run.
+    fn check_fits(&self, sim: &Simulation) -> Result<()> {
+        let refuse =
+            |field: &str, rule: String| Err(TampError::input(format!("checkpoint.{field}"), rule));
+        let walls = sim.walls.len();
+        if self.walls.len() != walls || self.wall_force.len() != walls {
+            return refuse(
+                "walls",
+                format!("has {} walls, the scene {walls}", self.walls.len()),
+            );
+        }
+        if self.sources.len() != sim.sources.len() {
+            return refuse(
+                "sources",
+                format!(
+                    "has {} pouring sources, the scene {}",
+                    self.sources.len(),
+                    sim.sources.len()
+                ),
+            );
+        }
+        let mut poured = 0;
+        for (k, (saved, built)) in self.sources.iter().zip(&sim.sources).enumerate() {
+            if saved.remaining > built.remaining {
+                return refuse(
+                    &format!("sources[{k}].remaining"),
+                    format!(
+                        "{} particles still to pour, more than the {} of the scene",
+                        saved.remaining, built.remaining
+                    ),
+                );
+            }
+            poured += built.remaining - saved.remaining;
+        }
+        let p = &self.particles;
+        let n = p.len();
+        if n != sim.particles.len() + poured {
+            return refuse(
+                "particles",
+                format!(
+                    "holds {n} particles, but the scene builds {} and its sources have poured {poured} since",
+                    sim.particles.len()
+                ),
+            );
+        }
+        let lengths = [
+            p.velocity.len(),
+            p.omega.len(),
+            p.force.len(),
+            p.torque.len(),
+            p.radius.len(),
+            p.mass.len(),
+            p.inertia.len(),
+            p.material.len(),
+            p.motion.len(),
+        ];
+        if lengths.iter().any(|&l| l != n) {
+            return refuse(
+                "particles",
+                format!("its arrays must all hold {n} entries, got {lengths:?}"),
+            );
+        }
+        let nb = &self.neighbors;
+        if nb.reference_position.len() != nb.reference_radius.len() {
+            return refuse(
+                "neighbors",
+                "reference positions and radii differ in number".to_string(),
+            );
+        }
+        if self.target_radius.len() != sim.target_radius.len() {
+            return refuse(
+                "target_radius",
+                format!(
+                    "has {} target radii, the scene's growth stage {}",
+                    self.target_radius.len(),
+                    sim.target_radius.len()
+                ),
+            );
+        }
+        let history_fits = if sim.law.has_history() {
+            nb.history.len() == nb.pairs.len()
+                && self.wall_history.len() == walls
+                && self.wall_history.iter().all(|h| h.len() == n)
+        } else {
+            nb.history.is_empty() && self.wall_history.is_empty()
+        };
+        if !history_fits {
+            let rule = if sim.law.has_history() {
+                "lacks a history for each contact, which the scene's contact law keeps"
+            } else {
+                "holds contact histories, but the scene's contact law keeps none"
+            };
+            return refuse("history", rule.to_string());
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rand::{Rng, SeedableRng};
+
+    /// Two spheres on a floor with friction and a pouring source: every kind of state.
+    fn scene(extra_particle: bool) -> Simulation {
+        let mut particles = vec![
+            serde_json::json!({"position": [0, 0, 0.001], "radius": 0.001, "material": "glass"}),
+            serde_json::json!({"position": [0.0015, 0, 0.0028], "radius": 0.001, "material": "glass"}),
+        ];
+        if extra_particle {
+            particles.push(
+                serde_json::json!({"position": [0.005, 0, 0.002], "radius": 0.001, "material": "glass"}),
+            );
+        }
+        let scene = serde_json::json!({
+            "name": "checkpoint round trip",
+            "materials": [{"name": "glass", "density": 2500, "youngs_modulus": 6e7, "poisson_ratio": 0.25}],
+            "contact": {
+                "normal": {"law": "hertz"},
+                "damping": {"kind": "critical_fraction", "xi": 0.3},
+                "tangential": {"law": "mindlin_deresiewicz", "friction": 0.4}
+            },
+            "particles": particles,
+            "insert": [{
+                "count": 3, "material": "glass", "radius": {"min": 0.0008, "max": 0.001},
+                "region": {"lower": [-0.004, -0.004, 0.006], "upper": [0.004, 0.004, 0.010]},
+                "schedule": {"start": 0.0, "every": 0.001, "per_event": 1}
+            }],
+            "walls": [{"name": "floor", "material": "glass",
+                       "shape": {"kind": "plane", "point": [0, 0, 0], "normal": [0, 0, 1]}}],
+            "gravity": [0, 0, -9.81],
+            "rotation": {},
+            "time_step": {"alpha": 0.2, "characteristic_velocity": 1.0},
+            "run": {"steps": 1}
+        });
+        let scene = crate::scene::parse(&scene.to_string()).unwrap();
+        crate::scene::build(&scene).unwrap().sim
+    }
+
+    /// The bits of every double in a state, in a fixed order.
+    fn bits(s: &SimState) -> Vec<u64> {
+        let p = &s.particles;
+        let vectors = p.position.iter().chain(&p.velocity).chain(&p.omega);
+        let vectors = vectors
+            .chain(&p.force)
+            .chain(&p.torque)
+            .chain(&s.wall_force);
+        let vectors = vectors.chain(&s.neighbors.reference_position);
+        let histories = s
+            .neighbors
+            .history
+            .iter()
+            .chain(s.wall_history.iter().flatten().flatten().map(|(_, h)| h));
+        let mut out: Vec<f64> = vectors.flat_map(|v| v.iter().copied()).collect();
+        for h in histories {
+            out.extend(h.tangential.iter().chain(&h.axis));
+            out.extend([h.max_overlap, h.turning_force, h.previous_normal_force]);
+        }
+        for w in &s.walls {
+            out.extend(w.displacement.iter().chain(&w.velocity));
+        }
+        for src in &s.sources {
+            out.push(src.next);
+            out.extend(src.pending_radius);
+        }
+        out.extend(p.radius.iter().chain(&p.mass).chain(&p.inertia));
+        out.extend(&s.neighbors.reference_radius);
+        out.extend(&s.target_radius);
+        out.extend([
+            s.dt,
+            s.time,
+            s.external_work,
+            s.external_work_scale,
+            s.external_power,
+            s.initial_mechanical_energy,
+            s.max_overlap_ratio,
+        ]);
+        out.into_iter().map(f64::to_bits).collect()
+    }
+
+    #[test]
+    fn random_doubles_round_trip_through_json() {
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(1);
+        let mut values: Vec<f64> = (0..200_000)
+            .map(|_| f64::from_bits(rng.next_u64()))
+            .filter(|x| x.is_finite())
+            .collect();
+        values.extend([
+            -0.0,
+            0.1 + 0.2,
+            f64::MIN_POSITIVE,
+            f64::MIN_POSITIVE / 3.0,
+            f64::from_bits(1),
+            f64::MAX,
+            -f64::MAX,
+        ]);
+        let back: Vec<f64> =
+            serde_json::from_str(&serde_json::to_string(&values).unwrap()).unwrap();
+        for (a, b) in values.iter().zip(&back) {
+            assert_eq!(a.to_bits(), b.to_bits(), "{a:e} came back as {b:e}");
+        }
+    }
+
+    #[test]
+    fn captured_state_round_trips_bit_for_bit() {
+        let mut sim = scene(false);
+        for _ in 0..500 {
+            sim.step().unwrap();
+        }
+        assert!(sim.particles.len() > 2, "the source has poured");
+        // Doubles that a careless text format loses.
+        sim.particles.position[0].y = -0.0;
+        sim.particles.velocity[0].x = 0.1 + 0.2;
+        sim.particles.omega[1] = Vec3::new(f64::from_bits(1), f64::MIN_POSITIVE / 3.0, -1e-310);
+        sim.external_power = -0.0;
+        let state = SimState::capture(&sim);
+        let json = serde_json::to_string(&state).unwrap();
+        let back: SimState = serde_json::from_str(&json).unwrap();
+        assert_eq!(bits(&state), bits(&back));
+        assert_eq!(serde_json::to_string(&back).unwrap(), json);
+
+        let mut fresh = scene(false);
+        back.restore(&mut fresh).unwrap();
+        assert_eq!(bits(&SimState::capture(&fresh)), bits(&state));
+    }
+
+    #[test]
+    fn restore_refuses_a_state_of_another_particle_count() {
+        let state = SimState::capture(&scene(false));
+        let err = state.restore(&mut scene(true)).unwrap_err();
+        assert_eq!(err.exit_code(), 2);
+        assert!(
+            err.to_string()
+                .starts_with("checkpoint.particles: holds 2 particles, but the scene builds 3"),
+            "{err}"
+        );
+    }
+}

@@ -1,0 +1,225 @@
+//! Restart checkpoints: a run killed and resumed from its checkpoint ends bit for bit
+//! as the uninterrupted run, through the library and through `tamp run --resume`; a
+//! checkpoint of another scene is refused.
+
+use serde_json::{Value, json};
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+use tamp::checkpoint::SimState;
+use tamp::particles::Vec3;
+use tamp::simulation::Simulation;
+
+/// A die with a lid coming down: 300 spinning frictional spheres (Mindlin–Deresiewicz,
+/// so contacts keep tangential history, with each other and with the walls) fly about
+/// under gravity while 30 more are poured in from above (the first 470 steps); the lid
+/// then compacts them (some 500 contacts at step 8000).
+fn die_scene(steps: u64, checkpoint_every: u64) -> Value {
+    json!({
+        "name": "checkpointed die",
+        "seed": 3,
+        "materials": [{"name": "glass", "density": 2500, "youngs_modulus": 6e7, "poisson_ratio": 0.25}],
+        "contact": {
+            "normal": {"law": "hertz"},
+            "damping": {"kind": "critical_fraction", "xi": 0.3},
+            "tangential": {"law": "mindlin_deresiewicz", "friction": 0.4}
+        },
+        "insert": [
+            {"count": 300, "material": "glass", "radius": {"min": 0.0004, "max": 0.0005},
+             "region": {"lower": [-0.004, -0.004, 0.0], "upper": [0.004, 0.004, 0.008]},
+             "speed": 0.5, "spin": 200},
+            {"count": 30, "material": "glass", "radius": {"min": 0.0004, "max": 0.0005},
+             "region": {"lower": [-0.004, -0.004, 0.008], "upper": [0.004, 0.004, 0.0095]},
+             "speed": 0.5, "schedule": {"start": 0.0, "every": 0.0002, "per_event": 4}}
+        ],
+        "walls": [
+            {"name": "die", "material": "glass",
+             "shape": {"kind": "box", "lower": [-0.004, -0.004, 0.0], "upper": [0.004, 0.004, 0.03],
+                       "open": ["+z"]}},
+            {"name": "lid", "material": "glass",
+             "shape": {"kind": "plane", "point": [0, 0, 0.0096], "normal": [0, 0, -1]},
+             "motion": {"kind": "displacement", "x": "0.0", "y": "0.0", "z": "-0.2 * t"}}
+        ],
+        "gravity": [0, 0, -9.81],
+        "rotation": {},
+        "time_step": {"alpha": 0.2, "characteristic_velocity": 1.0},
+        "run": {"steps": steps},
+        "output": {"series_every": 50, "trajectory_every": 1000, "vtk_every": 2000,
+                   "checkpoint_every": checkpoint_every}
+    })
+}
+
+fn build(scene: &Value) -> Simulation {
+    let scene = tamp::scene::parse(&scene.to_string()).unwrap();
+    tamp::scene::build(&scene).unwrap().sim
+}
+
+fn steps(sim: &mut Simulation, n: u64) {
+    for _ in 0..n {
+        sim.step().unwrap();
+    }
+}
+
+fn bits(v: &[Vec3]) -> Vec<u64> {
+    v.iter()
+        .flat_map(|x| x.iter().map(|c| c.to_bits()))
+        .collect()
+}
+
+#[test]
+fn restored_simulation_steps_on_bit_for_bit() {
+    let scene = die_scene(1, 0);
+    // Stopped while the source is still pouring: its random generator goes on too.
+    let (n, m) = (250, 1750);
+    let mut whole = build(&scene);
+    steps(&mut whole, n + m);
+
+    let mut first = build(&scene);
+    steps(&mut first, n);
+    assert!(first.sources[0].remaining > 0 && first.particles.len() > 300);
+    let json = serde_json::to_string(&SimState::capture(&first)).unwrap();
+    drop(first);
+    let mut resumed = build(&scene);
+    serde_json::from_str::<SimState>(&json)
+        .unwrap()
+        .restore(&mut resumed)
+        .unwrap();
+    steps(&mut resumed, m);
+
+    let (a, b) = (&whole.particles, &resumed.particles);
+    assert_eq!(a.len(), 330, "the source has poured all");
+    assert_eq!(bits(&a.position), bits(&b.position));
+    assert_eq!(bits(&a.velocity), bits(&b.velocity));
+    assert_eq!(bits(&a.omega), bits(&b.omega));
+    assert_eq!(whole.neighbors.pairs, resumed.neighbors.pairs);
+    let history = |s: &Simulation| format!("{:?}", s.neighbors.history);
+    assert!(
+        whole
+            .neighbors
+            .history
+            .iter()
+            .any(|h| h.tangential.norm() > 0.0),
+        "contacts carry tangential history"
+    );
+    assert_eq!(history(&whole), history(&resumed));
+    // Everything else, wall histories and the energy book included: doubles print as
+    // the shortest decimal that reads back to them, so equal text means equal bits.
+    assert_eq!(
+        serde_json::to_string(&SimState::capture(&whole)).unwrap(),
+        serde_json::to_string(&SimState::capture(&resumed)).unwrap()
+    );
+}
+
+fn tamp() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_tamp"))
+}
+
+fn run(scene: &Path, out: &Path, extra: &[&str]) -> std::process::Output {
+    tamp()
+        .args([
+            "run",
+            scene.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+            "--quiet",
+        ])
+        .args(extra)
+        .output()
+        .unwrap()
+}
+
+fn write_scene(dir: &Path, name: &str, scene: &Value) -> PathBuf {
+    let path = dir.join(name);
+    std::fs::write(&path, scene.to_string()).unwrap();
+    path
+}
+
+#[test]
+fn killed_run_resumes_to_identical_outputs() {
+    let total = 8000;
+    let dir = tempfile::tempdir().unwrap();
+    let scene = write_scene(dir.path(), "scene.json", &die_scene(total, 250));
+    let (a, b) = (dir.path().join("a"), dir.path().join("b"));
+
+    let o = run(&scene, &a, &[]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+
+    let mut child = tamp()
+        .args([
+            "run",
+            scene.to_str().unwrap(),
+            "--out",
+            b.to_str().unwrap(),
+            "--quiet",
+        ])
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let checkpoint = b.join("checkpoint.json");
+    let started = Instant::now();
+    while !checkpoint.exists() {
+        assert!(started.elapsed() < Duration::from_secs(30), "no checkpoint");
+        std::thread::sleep(Duration::from_millis(2));
+    }
+    child.kill().unwrap();
+    child.wait().unwrap();
+    assert!(!b.join("series.csv").exists(), "killed before the end");
+    let saved: Value = serde_json::from_slice(&std::fs::read(&checkpoint).unwrap()).unwrap();
+    let step = saved["state"]["sim"]["step"].as_u64().unwrap();
+    assert!(step > 0 && step < total, "checkpoint at step {step}");
+
+    let o = run(&scene, &b, &["--resume"]);
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success(), "{stderr}");
+    assert!(stderr.contains("resuming from step "), "{stderr}");
+
+    let frames: Vec<String> = (0..=total / 2000)
+        .map(|k| format!("vtk/frame_{k:06}.vtk"))
+        .collect();
+    let files = [
+        "series.csv",
+        "trajectory.csv",
+        "quantities.csv",
+        "summary.json",
+    ];
+    for file in files
+        .iter()
+        .copied()
+        .chain(frames.iter().map(String::as_str))
+    {
+        let read = |d: &Path| std::fs::read(d.join(file)).unwrap();
+        assert!(read(&a) == read(&b), "{file} differs after resuming");
+    }
+}
+
+#[test]
+fn checkpoint_of_another_scene_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    let one = write_scene(dir.path(), "one.json", &die_scene(100, 50));
+    let o = run(&one, &out, &[]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+
+    let other = write_scene(dir.path(), "other.json", &die_scene(200, 50));
+    let o = run(&other, &out, &["--resume"]);
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{stderr}");
+    for scene in [&one, &other] {
+        let sha = tamp::scene::sha256_hex(&std::fs::read(scene).unwrap());
+        assert!(stderr.contains(&sha), "{stderr} does not name {sha}");
+    }
+}
+
+#[test]
+fn resume_needs_checkpoints() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = write_scene(dir.path(), "scene.json", &die_scene(10, 0));
+    let o = run(&scene, &dir.path().join("out"), &["--resume"]);
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("output.checkpoint_every: must be > 0"),
+        "{stderr}"
+    );
+}
