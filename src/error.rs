@@ -38,6 +38,14 @@ impl TampError {
         }
     }
 
+    /// The input errors this stands for, one by one (itself when it is one).
+    pub fn into_list(self) -> Vec<TampError> {
+        match self {
+            TampError::InputMany(list) => list,
+            other => vec![other],
+        }
+    }
+
     pub fn io(context: impl Into<String>, source: std::io::Error) -> Self {
         TampError::Io {
             context: context.into(),

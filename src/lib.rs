@@ -16,6 +16,7 @@ pub mod material;
 pub mod measure;
 pub mod output;
 pub mod particles;
+pub mod process;
 pub mod run;
 pub mod scene;
 pub mod simulation;

@@ -137,6 +137,27 @@ fn main() -> ExitCode {
             out,
             quiet,
             resume,
+        } if is_die_compaction(&scene) => {
+            tamp::process::die_compaction_run::run_scene(&scene, &out, quiet, resume).map(|s| {
+                println!(
+                    "die compaction of {} particles: H0 = {:e} m, initial density {:.4} (RVE {:.4}); at {:e} Pa density {:.4} (RVE {:.4}); wrote {}",
+                    s.particles,
+                    s.h0,
+                    s.initial_density_specimen,
+                    s.initial_density_rve,
+                    s.last.pressure,
+                    s.last.density_specimen,
+                    s.last.density_rve,
+                    out.display()
+                );
+                0
+            })
+        }
+        Command::Run {
+            scene,
+            out,
+            quiet,
+            resume,
         } => tamp::run::run_scene(&scene, &out, quiet, resume).map(|s| {
             println!(
                 "ran {} steps of {:e} s ({} particles); wrote {}",
@@ -222,4 +243,13 @@ fn main() -> ExitCode {
             ExitCode::from(e.exit_code() as u8)
         }
     }
+}
+
+/// Whether a scene file holds a `die_compaction` block (its errors, if any, are
+/// reported by the run that follows).
+fn is_die_compaction(scene: &std::path::Path) -> bool {
+    std::fs::read_to_string(scene)
+        .ok()
+        .and_then(|text| serde_json::from_str::<serde_json::Value>(&text).ok())
+        .is_some_and(|v| v.get("die_compaction").is_some())
 }

@@ -12,7 +12,7 @@
 pub mod motion;
 pub mod shape;
 
-pub use motion::{BoundaryMotion, Servo};
+pub use motion::{BoundaryMotion, PressureLoad, Servo};
 use shape::{Shape, ShapeContact};
 
 use crate::particles::Vec3;
@@ -74,7 +74,7 @@ impl Boundary {
     }
 
     /// Move over the step [t, t + dt]; `force_on_boundary` is the force the particles
-    /// exerted at t (what a servo reacts to). Fails when a displacement expression
+    /// exerted at t (what a servo or a pressed punch reacts to). Fails when a displacement expression
     /// stops being finite (the other motions cannot).
     pub fn advance(&mut self, t: f64, dt: f64, force_on_boundary: &Vec3) -> Result<(), String> {
         match &self.motion {
@@ -101,6 +101,9 @@ impl Boundary {
                 return Ok(());
             }
             BoundaryMotion::Servo(s) => self.velocity = s.velocity(force_on_boundary),
+            BoundaryMotion::Pressed(p) => {
+                self.velocity = p.velocity(t, dt, &self.velocity, force_on_boundary)
+            }
         }
         self.displacement += self.velocity * dt;
         Ok(())

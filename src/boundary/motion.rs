@@ -18,6 +18,16 @@
 //!   between pressing and backing off, because the damping force it feels grows with
 //!   the speed it chose (found in `tests/boundaries.rs`). The run reports the
 //!   reaction in the series, so the user sees convergence.
+//! - `Pressed`: a rigid punch of mass M loaded by a pressure p(t) on its area A
+//!   that rises linearly to p_max over the ramp time and then holds, moving along
+//!   `direction` by Newton's law: M dv/dt = p(t) A − R, with R the particles'
+//!   reaction as for the servo. This is the plate of Rojek 2016 §5 ("loaded with a
+//!   linearly rising pressure"). It is integrated by symplectic Euler with the
+//!   particles' step, v ← v + Δt (p A − R)/M, then u ← u + Δt v, which is stable
+//!   while Δt < 2/√(k_bed/M); a punch far heavier than the particles it touches
+//!   meets that with the particles' own step. Unlike the servo there is no gain to
+//!   tune: the punch follows the load with the lag its own inertia gives, M·a, which
+//!   the run reports (applied load and reaction side by side).
 
 use crate::expression::Expression;
 use crate::particles::Vec3;
@@ -28,6 +38,41 @@ pub enum BoundaryMotion {
     Velocity(Vec3),
     Displacement(Box<[Expression; 3]>),
     Servo(Servo),
+    Pressed(PressureLoad),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct PressureLoad {
+    /// Unit vector along which the punch presses on the particles.
+    pub direction: Vec3,
+    /// Final pressure, Pa.
+    pub pressure: f64,
+    /// Loaded area, m².
+    pub area: f64,
+    /// Time over which the pressure rises linearly from zero, s (0: applied at once).
+    pub ramp_time: f64,
+    /// Mass of the punch, kg.
+    pub mass: f64,
+}
+
+impl PressureLoad {
+    /// Pressure applied at time t.
+    pub fn pressure_at(&self, t: f64) -> f64 {
+        if t >= self.ramp_time {
+            self.pressure
+        } else {
+            self.pressure * (t / self.ramp_time).max(0.0)
+        }
+    }
+
+    /// Velocity after a step of dt from t, given the present velocity and the force
+    /// the particles exert on the punch.
+    pub fn velocity(&self, t: f64, dt: f64, velocity: &Vec3, force_on_boundary: &Vec3) -> Vec3 {
+        let reaction = -force_on_boundary.dot(&self.direction);
+        let load = self.pressure_at(t) * self.area;
+        let speed = velocity.dot(&self.direction) + dt * (load - reaction) / self.mass;
+        self.direction * speed
+    }
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -68,6 +113,25 @@ impl BoundaryMotion {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn pressed_punch_follows_newtons_law_under_the_ramp() {
+        let p = PressureLoad {
+            direction: Vec3::new(0.0, 0.0, -1.0),
+            pressure: 10.0,
+            area: 2.0,
+            ramp_time: 4.0,
+            mass: 5.0,
+        };
+        assert_eq!(p.pressure_at(1.0), 2.5);
+        assert_eq!(p.pressure_at(9.0), 10.0);
+        // Load 2.5 Pa × 2 m² = 5 N down, reaction 1 N: a = 4/5 m/s² along −z.
+        let v = p.velocity(1.0, 0.5, &Vec3::zeros(), &Vec3::new(0.0, 0.0, 1.0));
+        assert!((v.z + 0.4).abs() < 1e-15, "{v:?}");
+        // At balance the speed is kept.
+        let v = p.velocity(1.0, 0.5, &v, &Vec3::new(0.0, 0.0, 5.0));
+        assert!((v.z + 0.4).abs() < 1e-15, "{v:?}");
+    }
 
     #[test]
     fn servo_moves_towards_the_target_and_saturates() {

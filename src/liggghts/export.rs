@@ -208,6 +208,10 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
                 &format!("walls[{k}].motion"),
                 "servo walls are not exported (LIGGGHTS's mesh/surface/stress/servo has another control law)",
             ),
+            MotionSpec::Pressure { .. } => refuse(
+                &format!("walls[{k}].motion"),
+                "pressure-loaded punches are not exported (LIGGGHTS 3.8 moves meshes only kinematically or by its servo)",
+            ),
         }
     }
     out

@@ -3,6 +3,7 @@
 //! interrupted run never clobbers a previous result.
 
 pub mod plot;
+pub mod progress;
 pub mod series;
 pub mod summary;
 pub mod views;

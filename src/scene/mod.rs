@@ -1,6 +1,7 @@
 //! Scene files: parse (with JSON paths in every error), validate, build a `Simulation`.
 
 pub mod build;
+pub mod die_compaction;
 pub mod schema;
 pub mod validate;
 pub mod walls;

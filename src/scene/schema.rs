@@ -1,6 +1,7 @@
 //! The scene file schema (JSON). Every field, unit and default is documented in
 //! docs/scene-format.md; unknown fields are rejected.
 
+pub use super::die_compaction::DieCompactionSpec;
 pub use super::walls::WallSpec;
 use crate::generate::distribution::SizeDistribution;
 use serde::{Deserialize, Serialize};
@@ -36,6 +37,8 @@ pub struct Scene {
     #[serde(default)]
     pub rotation: Option<RotationSpec>,
     pub time_step: TimeStepSpec,
+    /// Required unless `die_compaction` sets the stages.
+    #[serde(default)]
     pub run: RunSpec,
     #[serde(default)]
     pub broad_phase: BroadPhaseSpec,
@@ -43,6 +46,10 @@ pub struct Scene {
     pub stability: StabilitySpec,
     #[serde(default)]
     pub output: OutputSpec,
+    /// The die compaction of Rojek 2016 §5 as a sequence of stages (fill, flatten,
+    /// press); absent for an ordinary run.
+    #[serde(default)]
+    pub die_compaction: Option<DieCompactionSpec>,
     /// Directory of the scene file, for relative paths (STL meshes); not a JSON field.
     #[serde(skip)]
     pub base_dir: std::path::PathBuf,
@@ -398,7 +405,7 @@ fn default_alpha() -> f64 {
     0.2
 }
 
-#[derive(Clone, Debug, Deserialize, Serialize)]
+#[derive(Clone, Debug, Default, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct RunSpec {
     /// Simulated time, s (exclusive with `steps`).

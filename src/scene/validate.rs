@@ -1,6 +1,7 @@
 //! Rules a scene must satisfy before anything is built. All violations are
 //! collected, each as `json.path: rule, got value`.
 
+use super::die_compaction::DieCompactionSpec;
 use super::schema::*;
 use crate::contact::damping::liggghts::{self, LiggghtsModel};
 use crate::contact::tangential::liggghts_history;
@@ -38,6 +39,15 @@ impl Errors {
         }
     }
 
+    /// Ok when nothing was found; the one error, or all of them.
+    pub(super) fn finish(mut self) -> Result<()> {
+        match self.0.len() {
+            0 => Ok(()),
+            1 => Err(self.0.pop().unwrap()),
+            _ => Err(TampError::InputMany(self.0)),
+        }
+    }
+
     pub(super) fn finite3(&mut self, path: impl Into<String>, v: &[f64; 3]) {
         if !v.iter().all(|c| c.is_finite()) {
             self.push(path, format!("must be finite, got {v:?}"));
@@ -46,6 +56,68 @@ impl Errors {
 }
 
 pub fn validate(scene: &Scene) -> Result<()> {
+    match &scene.die_compaction {
+        Some(dc) => validate_die_compaction(scene, dc),
+        None => validate_plain(scene),
+    }
+}
+
+/// A die-compaction scene owns its particles, walls and stage durations; its
+/// contact blocks are checked by validating the stage scenes they make, with the
+/// paths of the fill law's errors put back where the user wrote them.
+fn validate_die_compaction(scene: &Scene, dc: &DieCompactionSpec) -> Result<()> {
+    let mut e = Errors(Vec::new());
+    let owned = [
+        ("particles", !scene.particles.is_empty()),
+        ("insert", !scene.insert.is_empty()),
+        ("deposit", !scene.deposit.is_empty()),
+        ("walls", !scene.walls.is_empty()),
+        ("periodic", scene.periodic.is_some()),
+        ("growth", scene.growth.is_some()),
+        (
+            "run",
+            scene.run.duration.is_some() || scene.run.steps.is_some(),
+        ),
+    ];
+    for (field, given) in owned {
+        if given {
+            e.push(
+                field,
+                "must be left out of a die_compaction scene: its stages set it",
+            );
+        }
+    }
+    let names: HashSet<&str> = scene.materials.iter().map(|m| m.name.as_str()).collect();
+    dc.validate(&|name| names.contains(name), &mut e);
+    if e.0.is_empty() {
+        let mut probe = scene.clone();
+        probe.die_compaction = None;
+        probe.particles = vec![ParticleSpec {
+            position: [0.0; 3],
+            radius: dc.particles.radius.distribution().max_radius(),
+            material: dc.particles.material.clone(),
+            velocity: None,
+            omega: None,
+            prescribed_velocity: None,
+        }];
+        probe.run.duration = Some(1.0);
+        if let Err(err) = validate_plain(&probe) {
+            e.0.extend(err.into_list());
+        }
+        probe.contact = dc.fill.contact.clone();
+        if let Err(err) = validate_plain(&probe) {
+            e.0.extend(err.into_list().into_iter().filter_map(|err| match err {
+                TampError::Input { path, rule } if path.starts_with("contact") => Some(
+                    TampError::input(format!("die_compaction.fill.{path}"), rule),
+                ),
+                _ => None,
+            }));
+        }
+    }
+    e.finish()
+}
+
+fn validate_plain(scene: &Scene) -> Result<()> {
     let mut e = Errors(Vec::new());
     if scene.materials.is_empty() {
         e.push("materials", "must list at least one material");
@@ -514,11 +586,7 @@ pub fn validate(scene: &Scene) -> Result<()> {
             );
         }
     }
-    match e.0.len() {
-        0 => Ok(()),
-        1 => Err(e.0.pop().unwrap()),
-        _ => Err(TampError::InputMany(e.0)),
-    }
+    e.finish()
 }
 
 /// Check a radius given as a distribution; returns its largest radius (0 when invalid).

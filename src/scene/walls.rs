@@ -7,12 +7,13 @@
 //! ```
 //! Shapes: plane, box (inside of), cylinder, cone, funnel (surfaces of revolution),
 //! height_field (z = f(x, y) as an expression or a grid), mesh (STL file or convex
-//! polygons). Motions: fixed, velocity, displacement (expressions of t), servo.
+//! polygons). Motions: fixed, velocity, displacement (expressions of t), servo, pressure
+//! (a punch of given mass under a ramped pressure).
 
 use super::build::v3;
 use super::validate::Errors;
 use crate::boundary::shape::Shape;
-use crate::boundary::{Boundary, BoundaryMotion, Servo};
+use crate::boundary::{Boundary, BoundaryMotion, PressureLoad, Servo};
 use crate::error::{Result, TampError};
 use crate::expression::Expression;
 use crate::particles::Vec3;
@@ -122,6 +123,16 @@ pub enum MotionSpec {
         area: Option<f64>,
         gain: f64,
         max_speed: f64,
+    },
+    /// A punch of `mass` (kg) pushed along `direction` by a pressure on `area` (m²)
+    /// rising linearly from 0 to `pressure` (Pa) over `ramp_time` (s), then held; it
+    /// moves by Newton's law under the load and the particles' reaction.
+    Pressure {
+        direction: [f64; 3],
+        pressure: f64,
+        area: f64,
+        ramp_time: f64,
+        mass: f64,
     },
 }
 
@@ -337,6 +348,19 @@ fn validate_motion(motion: &MotionSpec, at: &dyn Fn(&str) -> String, e: &mut Err
             e.positive(at("motion.gain"), *gain);
             e.positive(at("motion.max_speed"), *max_speed);
         }
+        MotionSpec::Pressure {
+            direction,
+            pressure,
+            area,
+            ramp_time,
+            mass,
+        } => {
+            unit(e, at("motion.direction"), direction);
+            e.non_negative(at("motion.pressure"), *pressure);
+            e.positive(at("motion.area"), *area);
+            e.non_negative(at("motion.ramp_time"), *ramp_time);
+            e.positive(at("motion.mass"), *mass);
+        }
     }
 }
 
@@ -360,6 +384,19 @@ fn build_motion(m: &MotionSpec) -> BoundaryMotion {
             target_force: force.unwrap_or_else(|| pressure.unwrap_or(0.0) * area.unwrap_or(0.0)),
             gain: *gain,
             max_speed: *max_speed,
+        }),
+        MotionSpec::Pressure {
+            direction,
+            pressure,
+            area,
+            ramp_time,
+            mass,
+        } => BoundaryMotion::Pressed(PressureLoad {
+            direction: v3(direction).normalize(),
+            pressure: *pressure,
+            area: *area,
+            ramp_time: *ramp_time,
+            mass: *mass,
         }),
     }
 }
