@@ -127,6 +127,15 @@ enum Study {
         #[arg(long, default_value = "study")]
         out: PathBuf,
     },
+    /// Press one die-compaction specimen with slower ramps and smaller α: density at
+    /// 50 MPa and wall time (docs/accuracy-cost.md).
+    DieCompaction {
+        /// The die-compaction scene (default: the quick NiAl case's).
+        #[arg(long)]
+        scene: Option<PathBuf>,
+        #[arg(long, default_value = "study")]
+        out: PathBuf,
+    },
 }
 
 fn main() -> ExitCode {
@@ -235,6 +244,14 @@ fn main() -> ExitCode {
         Command::Study {
             study: Study::StableAlpha { out },
         } => tamp::study::stable_alpha::run(&out),
+        Command::Study {
+            study: Study::DieCompaction { scene, out },
+        } => {
+            let scene = scene.unwrap_or_else(|| {
+                tamp::verify::verification_dir().join("nial_die_compaction_small.scene.json")
+            });
+            tamp::study::die_compaction::run(&scene, &out)
+        }
     };
     match result {
         Ok(code) => ExitCode::from(code),

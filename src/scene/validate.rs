@@ -87,6 +87,12 @@ fn validate_die_compaction(scene: &Scene, dc: &DieCompactionSpec) -> Result<()> 
             );
         }
     }
+    if scene.gravity.is_none() {
+        e.push(
+            "gravity",
+            "is required by die_compaction: the die is filled by settling under it",
+        );
+    }
     let names: HashSet<&str> = scene.materials.iter().map(|m| m.name.as_str()).collect();
     dc.validate(&|name| names.contains(name), &mut e);
     if e.0.is_empty() {

@@ -1,0 +1,527 @@
+//! Cold uniaxial die compaction as in Rojek et al. 2016 §5: fill a cylindrical die,
+//! flatten the top, then press with a punch under a linearly rising pressure.
+//!
+//! Each stage is an ordinary scene built from the die-compaction scene and the
+//! particles' state at the end of the previous stage (positions, radii, velocities,
+//! spins), so a stage can be written out and rerun, or exported, on its own:
+//!
+//! 1. **Fill** (`fill`): the particles' radii are drawn from the size distribution
+//!    and placed, largest first, by random sequential insertion in a loose column
+//!    over the die floor at `fill.loose_fraction`; they then settle under gravity
+//!    times `fill.gravity_scale` with the fill contact law until the kinetic energy
+//!    is below `rest_fraction` · M g′ ⟨d⟩. The paper pours through a funnel (Fig 13);
+//!    the funnel's shape is not given, and its only role is to bring the particles
+//!    into a 58 µm die, which the column does directly. Settling from a random loose
+//!    column is what LIGGGHTS users do (`insert/pack` in the die, then run).
+//! 2. **Flatten** (`flatten`): a flat punch is put at the top of the highest
+//!    particle (first contact), moved down `depth` over `duration`, back up over the
+//!    same time, and the bed relaxes for a third `duration`. H₀ is then the top of
+//!    the highest particle; the specimen density is the exact solid fraction of the
+//!    cylinder of the die's radius and height H₀, and the RVE density that of the
+//!    sphere of `rve_diameter` centred on the axis at H₀/2 (Rojek §5, Fig 15).
+//! 3. **Press** (`press`): the punch, of mass `punch_mass`, is loaded by the
+//!    pressure p(t) = p_max t / t_ramp (`BoundaryMotion::Pressed`) under the scene's
+//!    own contact law, damping, rotation and (unscaled) gravity. The time step is
+//!    re-estimated every `dt_every` steps from the contacts as they stiffen (Rojek
+//!    §3.4: α times the critical step). At `records` equal pressure increments the
+//!    height H (the punch face), ΔH/H₀, both densities (the RVE centred at H/2) and
+//!    the forces on punch, floor and die wall are recorded.
+
+use crate::checkpoint::SimState;
+use crate::error::{Result, TampError};
+use crate::generate::rsi::{self, InsertionBox};
+use crate::measure::{Region, packing::packing_fraction};
+use crate::output::progress::Progress;
+use crate::particles::Vec3;
+use crate::scene::die_compaction::DieCompactionSpec;
+use crate::scene::schema::{ContactSpec, ParticleSpec, RunSpec, Scene};
+use crate::scene::walls::{MotionSpec, ShapeSpec, WallSpec};
+use crate::scene::{self, validate};
+use crate::simulation::Simulation;
+use crate::space::Space;
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+use serde::{Deserialize, Serialize};
+use std::f64::consts::PI;
+
+/// Attempts per particle in the loose column before insertion gives up.
+const INSERTION_ATTEMPTS: usize = 100_000;
+/// Steps between checks of whether the settling bed is at rest.
+const REST_CHECK_EVERY: u64 = 1000;
+
+/// The flattened specimen: what the press stage starts from.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct Specimen {
+    /// Height after flattening and unloading (top of the highest particle), m.
+    pub h0: f64,
+    pub density_specimen: f64,
+    pub density_rve: f64,
+    pub particles: Vec<ParticleSpec>,
+    /// Simulated settling time and whether the bed came to rest within the limit.
+    pub fill_time: f64,
+    pub fill_at_rest: bool,
+    /// The steps each stage took (fill, flatten).
+    pub steps: [u64; 2],
+    /// Time steps of the fill and flatten stages, s.
+    pub dt: [f64; 2],
+}
+
+/// One record along the pressure ramp.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct PressRecord {
+    pub time: f64,
+    /// Pressure applied to the punch, Pa.
+    pub pressure: f64,
+    /// What the particles push back on the punch, floor and die wall with, as
+    /// pressures on the die's cross-section (the die's is its axial friction), Pa.
+    pub punch_reaction: f64,
+    pub floor_reaction: f64,
+    pub die_friction: f64,
+    /// Punch face height, m, and ΔH/H₀.
+    pub height: f64,
+    pub height_reduction: f64,
+    pub density_specimen: f64,
+    pub density_rve: f64,
+    pub contact_count: usize,
+    pub dt: f64,
+    pub step: u64,
+}
+
+/// The press stage of one contact law.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct Pressing {
+    pub records: Vec<PressRecord>,
+    pub steps: u64,
+    /// Particles whose centre left the die (radially, below the floor or above the
+    /// punch face) at some step of the pressing.
+    pub escaped: Vec<usize>,
+}
+
+/// Where a pressing is, for a restart checkpoint: the records so far and the
+/// simulation's state.
+#[derive(Serialize, Deserialize)]
+pub struct PressState {
+    pub pressing: Pressing,
+    pub sim: SimState,
+}
+
+impl Pressing {
+    /// Value of `column` at the applied pressure p, linearly interpolated between
+    /// the records around it.
+    pub fn at_pressure(&self, p: f64, column: impl Fn(&PressRecord) -> f64) -> Option<f64> {
+        self.records.windows(2).find_map(|w| {
+            let (a, b) = (&w[0], &w[1]);
+            (a.pressure <= p && p <= b.pressure && b.pressure > a.pressure).then(|| {
+                let s = (p - a.pressure) / (b.pressure - a.pressure);
+                column(a) + s * (column(b) - column(a))
+            })
+        })
+    }
+}
+
+fn spec(scene: &Scene) -> Result<&DieCompactionSpec> {
+    scene
+        .die_compaction
+        .as_ref()
+        .ok_or_else(|| TampError::input("die_compaction", "is required by this process"))
+}
+
+fn gravity(scene: &Scene) -> Result<Vec3> {
+    scene
+        .gravity
+        .map(|g| Vec3::new(g[0], g[1], g[2]))
+        .ok_or_else(|| TampError::input("gravity", "is required by die_compaction"))
+}
+
+/// A stage scene: the die-compaction scene's materials, rotation, time step, broad
+/// phase and stability settings with the stage's particles, walls, law and gravity.
+fn stage_scene(
+    base: &Scene,
+    stage: &str,
+    contact: &ContactSpec,
+    particles: Vec<ParticleSpec>,
+    walls: Vec<WallSpec>,
+    gravity: Vec3,
+    duration: f64,
+) -> Result<Scene> {
+    let mut s = base.clone();
+    s.name = format!("{} — {stage} stage", base.name);
+    s.die_compaction = None;
+    s.contact = contact.clone();
+    s.particles = particles;
+    s.walls = walls;
+    s.gravity = Some([gravity.x, gravity.y, gravity.z]);
+    s.run = RunSpec {
+        duration: Some(duration),
+        steps: None,
+    };
+    // A carried bed is in contact: its overlaps are state, not input mistakes.
+    s.stability.initial_overlap_tolerance = s.stability.max_overlap_fraction;
+    validate::validate(&s)?;
+    Ok(s)
+}
+
+fn die_wall(dc: &DieCompactionSpec, top: f64) -> WallSpec {
+    WallSpec {
+        name: Some("die".into()),
+        material: dc.wall_material.clone(),
+        shape: ShapeSpec::Cylinder {
+            origin: [0.0; 3],
+            axis: [0.0, 0.0, 1.0],
+            radius: 0.5 * dc.die_diameter,
+            bottom: 0.0,
+            top,
+        },
+        motion: MotionSpec::Fixed,
+    }
+}
+
+fn floor_wall(dc: &DieCompactionSpec) -> WallSpec {
+    WallSpec {
+        name: Some("floor".into()),
+        material: dc.wall_material.clone(),
+        shape: ShapeSpec::Plane {
+            point: [0.0; 3],
+            normal: [0.0, 0.0, 1.0],
+        },
+        motion: MotionSpec::Fixed,
+    }
+}
+
+fn punch_wall(dc: &DieCompactionSpec, height: f64, motion: MotionSpec) -> WallSpec {
+    WallSpec {
+        name: Some("punch".into()),
+        material: dc.wall_material.clone(),
+        shape: ShapeSpec::Plane {
+            point: [0.0, 0.0, height],
+            normal: [0.0, 0.0, -1.0],
+        },
+        motion,
+    }
+}
+
+/// The particles of a simulation as explicit particles of the next stage.
+fn carried(sim: &Simulation, material: &str) -> Vec<ParticleSpec> {
+    let p = &sim.particles;
+    (0..p.len())
+        .map(|i| ParticleSpec {
+            position: p.position[i].into(),
+            radius: p.radius[i],
+            material: material.to_string(),
+            velocity: Some(p.velocity[i].into()),
+            omega: Some(p.omega[i].into()),
+            prescribed_velocity: None,
+        })
+        .collect()
+}
+
+fn top_of_bed(sim: &Simulation) -> f64 {
+    let p = &sim.particles;
+    (0..p.len())
+        .map(|i| p.position[i].z + p.radius[i])
+        .fold(f64::NEG_INFINITY, f64::max)
+}
+
+/// Solid fraction of the die cylinder up to `height` and of the RVE centred at
+/// half that height (Rojek §5, Fig 15).
+pub fn densities(
+    positions: &[Vec3],
+    radii: &[f64],
+    dc: &DieCompactionSpec,
+    height: f64,
+) -> Result<(f64, f64)> {
+    let space = Space::open();
+    let specimen = Region::Cylinder {
+        base: Vec3::zeros(),
+        axis: Vec3::z(),
+        radius: 0.5 * dc.die_diameter,
+        height,
+    };
+    let rve = Region::Sphere {
+        centre: Vec3::new(0.0, 0.0, 0.5 * height),
+        radius: 0.5 * dc.rve_diameter,
+    };
+    Ok((
+        packing_fraction(positions, radii, &specimen, &space)?,
+        packing_fraction(positions, radii, &rve, &space)?,
+    ))
+}
+
+/// Radii drawn from the distribution, placed largest first in a loose column over
+/// the floor; returned sorted by height so neighbours in space are near in memory.
+fn loose_column(scene: &Scene, dc: &DieCompactionSpec) -> Result<(Vec<ParticleSpec>, f64)> {
+    let mut rng = ChaCha8Rng::seed_from_u64(scene.seed);
+    let law = dc.particles.radius.distribution();
+    let mut radii: Vec<f64> = (0..dc.particles.count)
+        .map(|_| law.sample(&mut rng))
+        .collect();
+    radii.sort_by(|a, b| b.total_cmp(a));
+    let die_radius = 0.5 * dc.die_diameter;
+    let solid: f64 = radii.iter().map(|r| 4.0 / 3.0 * PI * r.powi(3)).sum();
+    let height = solid / (dc.fill.loose_fraction * PI * die_radius * die_radius);
+    let region = InsertionBox {
+        lower: Vec3::new(-die_radius, -die_radius, 0.0),
+        upper: Vec3::new(die_radius, die_radius, height),
+    };
+    let inside = |x: &Vec3, r: f64| x.x.hypot(x.y) + r <= die_radius;
+    let (mut position, mut radius) = (Vec::new(), Vec::new());
+    for (k, &r) in radii.iter().enumerate() {
+        let Some(x) = rsi::place(
+            r,
+            &region,
+            &position,
+            &radius,
+            &inside,
+            &Space::open(),
+            1.0,
+            &mut rng,
+            INSERTION_ATTEMPTS,
+        ) else {
+            return Err(TampError::input(
+                "die_compaction.fill.loose_fraction",
+                format!(
+                    "particle {k} (radius {r:e} m) found no room in the loose column after {INSERTION_ATTEMPTS} attempts; lower the loose fraction (got {})",
+                    dc.fill.loose_fraction
+                ),
+            ));
+        };
+        position.push(x);
+        radius.push(r);
+    }
+    let mut order: Vec<usize> = (0..position.len()).collect();
+    order.sort_by(|&a, &b| position[a].z.total_cmp(&position[b].z));
+    let particles = order
+        .into_iter()
+        .map(|i| ParticleSpec {
+            position: position[i].into(),
+            radius: radius[i],
+            material: dc.particles.material.clone(),
+            velocity: None,
+            omega: None,
+            prescribed_velocity: None,
+        })
+        .collect();
+    Ok((particles, height))
+}
+
+/// Fill and flatten: the specimen the press stage starts from.
+pub fn prepare(scene: &Scene, quiet: bool) -> Result<Specimen> {
+    let dc = spec(scene)?;
+    let g = gravity(scene)? * dc.fill.gravity_scale;
+    let (column, column_height) = loose_column(scene, dc)?;
+
+    // Fill: settle under scaled gravity. The fastest impact is a free fall from the
+    // top of the column, which sets the step of the (overlap-dependent) law.
+    let die_top = 1.5 * column_height;
+    let mut fill = stage_scene(
+        scene,
+        "fill",
+        &dc.fill.contact,
+        column,
+        vec![die_wall(dc, die_top), floor_wall(dc)],
+        g,
+        dc.fill.max_duration,
+    )?;
+    fill.time_step.characteristic_velocity = Some((2.0 * g.norm() * column_height).sqrt());
+    fill.time_step.alpha = dc.fill.alpha.unwrap_or(scene.time_step.alpha);
+    let built = scene::build(&fill)?;
+    let mut sim = built.sim;
+    let p = &sim.particles;
+    let total_mass: f64 = p.mass.iter().sum();
+    let mean_diameter = 2.0 * p.radius.iter().sum::<f64>() / p.len() as f64;
+    let at_rest = dc.fill.rest_fraction * total_mass * g.norm() * mean_diameter;
+    let mut progress = Progress::new("fill", built.steps, quiet);
+    let mut fill_at_rest = false;
+    while sim.step < built.steps {
+        sim.step()?;
+        if sim.step % REST_CHECK_EVERY == 0 {
+            progress.set(sim.step);
+            if sim.kinetic_energy() < at_rest {
+                fill_at_rest = true;
+                break;
+            }
+        }
+    }
+    progress.finish();
+    let (fill_time, fill_steps, fill_dt) = (sim.time, sim.step, sim.dt);
+
+    // Flatten: down `depth` from first contact, back up, relax.
+    let (depth, t) = (dc.flatten.depth, dc.flatten.duration);
+    let first_contact = top_of_bed(&sim);
+    let stroke = format!(
+        "-{depth:e} * min(t / {t:e}, 1.0) + {depth:e} * min(max((t - {t:e}) / {t:e}, 0.0), 1.0)"
+    );
+    let flatten_motion = MotionSpec::Displacement {
+        x: "0.0".into(),
+        y: "0.0".into(),
+        z: stroke,
+    };
+    let mut flatten = stage_scene(
+        scene,
+        "flatten",
+        &dc.fill.contact,
+        carried(&sim, &dc.particles.material),
+        vec![
+            die_wall(dc, die_top),
+            floor_wall(dc),
+            punch_wall(dc, first_contact, flatten_motion),
+        ],
+        g,
+        3.0 * t,
+    )?;
+    flatten.time_step = fill.time_step.clone();
+    let built = scene::build(&flatten)?;
+    let mut sim = built.sim;
+    let mut progress = Progress::new("flatten", built.steps, quiet);
+    while sim.step < built.steps {
+        sim.step()?;
+        if sim.step % REST_CHECK_EVERY == 0 {
+            progress.set(sim.step);
+        }
+    }
+    progress.finish();
+    let h0 = top_of_bed(&sim);
+    let (density_specimen, density_rve) =
+        densities(&sim.particles.position, &sim.particles.radius, dc, h0)?;
+    Ok(Specimen {
+        h0,
+        density_specimen,
+        density_rve,
+        particles: carried(&sim, &dc.particles.material),
+        fill_time,
+        fill_at_rest,
+        steps: [fill_steps, sim.step],
+        dt: [fill_dt, sim.dt],
+    })
+}
+
+/// The press-stage scene for a specimen, under the scene's own contact law.
+pub fn press_scene(scene: &Scene, specimen: &Specimen) -> Result<Scene> {
+    let dc = spec(scene)?;
+    let area = PI * (0.5 * dc.die_diameter).powi(2);
+    let motion = MotionSpec::Pressure {
+        direction: [0.0, 0.0, -1.0],
+        pressure: dc.press.pressure,
+        area,
+        ramp_time: dc.press.ramp_time,
+        mass: dc.press.punch_mass,
+    };
+    stage_scene(
+        scene,
+        "press",
+        &scene.contact,
+        specimen.particles.clone(),
+        vec![
+            die_wall(dc, 2.0 * specimen.h0),
+            floor_wall(dc),
+            punch_wall(dc, specimen.h0, motion),
+        ],
+        gravity(scene)?,
+        dc.press.ramp_time,
+    )
+}
+
+/// Press a specimen under the scene's contact law and record the ramp. `resume`
+/// continues a pressing from its checkpoint; `checkpoint` is called with the state
+/// every `every` steps (0: never).
+pub fn press(
+    scene: &Scene,
+    specimen: &Specimen,
+    quiet: bool,
+    resume: Option<PressState>,
+    every: u64,
+    checkpoint: &mut dyn FnMut(&PressState) -> Result<()>,
+) -> Result<Pressing> {
+    let dc = spec(scene)?;
+    let stage = press_scene(scene, specimen)?;
+    let built = scene::build(&stage)?;
+    let mut sim = built.sim;
+    let (die, floor, punch) = (0, 1, 2);
+    let area = PI * (0.5 * dc.die_diameter).powi(2);
+    let die_radius = 0.5 * dc.die_diameter;
+    let alpha = scene.time_step.alpha;
+    let fixed = scene.time_step.fixed;
+    let ramp = dc.press.ramp_time;
+    let records = dc.press.records;
+    let record = |sim: &Simulation, out: &mut Pressing| -> Result<()> {
+        let height = specimen.h0 + sim.walls[punch].displacement.z;
+        let (density_specimen, density_rve) =
+            densities(&sim.particles.position, &sim.particles.radius, dc, height)?;
+        let crate::boundary::BoundaryMotion::Pressed(load) = &sim.walls[punch].motion else {
+            unreachable!("the punch is pressure-loaded")
+        };
+        out.records.push(PressRecord {
+            time: sim.time,
+            pressure: load.pressure_at(sim.time),
+            punch_reaction: sim.wall_force[punch].z / area,
+            floor_reaction: -sim.wall_force[floor].z / area,
+            die_friction: -sim.wall_force[die].z / area,
+            height,
+            height_reduction: (specimen.h0 - height) / specimen.h0,
+            density_specimen,
+            density_rve,
+            contact_count: sim.contact_count(),
+            dt: sim.dt,
+            step: sim.step,
+        });
+        Ok(())
+    };
+    let mut out = match resume {
+        Some(state) => {
+            state.sim.restore(&mut sim)?;
+            state.pressing
+        }
+        None => {
+            let mut out = Pressing {
+                records: Vec::with_capacity(records + 1),
+                steps: 0,
+                escaped: Vec::new(),
+            };
+            record(&sim, &mut out)?;
+            out
+        }
+    };
+    let mut progress = Progress::new("press", records as u64, quiet);
+    loop {
+        let next = out.records.len();
+        if next > records {
+            break;
+        }
+        // Land exactly on the record times so every run samples the same pressures.
+        let due = ramp * next as f64 / records as f64;
+        if sim.time >= due * (1.0 - 1e-12) {
+            record(&sim, &mut out)?;
+            progress.set(next as u64);
+            continue;
+        }
+        if every > 0 && sim.step > 0 && sim.step % every == 0 {
+            out.steps = sim.step;
+            checkpoint(&PressState {
+                pressing: out.clone(),
+                sim: SimState::capture(&sim),
+            })?;
+        }
+        if fixed.is_none()
+            && sim.step % dc.press.dt_every == 0
+            && let Some(dt_cr) = sim.critical_time_step(None)
+        {
+            sim.dt = alpha * dt_cr;
+        }
+        let dt = sim.dt;
+        sim.dt = dt.min(due - sim.time);
+        sim.step()?;
+        sim.dt = dt;
+        let height = specimen.h0 + sim.walls[punch].displacement.z;
+        let p = &sim.particles;
+        for (i, x) in p.position.iter().enumerate() {
+            if (x.x.hypot(x.y) > die_radius || x.z < 0.0 || x.z > height)
+                && !out.escaped.contains(&i)
+            {
+                out.escaped.push(i);
+            }
+        }
+    }
+    progress.finish();
+    out.steps = sim.step;
+    Ok(out)
+}

@@ -1,0 +1,118 @@
+//! `tamp run` of a die-compaction scene: the three stages, then the records.
+//!
+//! Writes to the output directory (each file atomically):
+//! - `compaction.csv`: one row per record along the pressure ramp (`PressRecord`);
+//! - `press.scene.json`: the press stage as an ordinary scene (the flattened
+//!   specimen as explicit particles, the pressure-loaded punch), to rerun the
+//!   pressing alone or with another contact law;
+//! - `summary.json`: provenance, the specimen (H₀, both initial densities, the fill)
+//!   and the last record;
+//! - `specimen.json`: the flattened specimen, written when flattening ends;
+//! - `checkpoint.json`: the pressing's state every `output.checkpoint_every` steps.
+//!
+//! With `--resume`, a run goes on from `checkpoint.json` (or, when the pressing had
+//! not reached its first checkpoint, from `specimen.json`) and writes the same files
+//! as the uninterrupted run, byte for byte (`tests/die_compaction.rs`). Filling and
+//! flattening are not checkpointed inside: they are the short stages.
+
+use super::die_compaction::{self, PressRecord, PressState, Specimen};
+use crate::checkpoint::{self, Checkpoint};
+use crate::error::{Result, TampError};
+use crate::output::{self, Provenance};
+use serde::Serialize;
+use std::path::Path;
+
+#[derive(Debug, Serialize)]
+pub struct CompactionSummary {
+    pub provenance: Provenance,
+    pub name: String,
+    pub particles: usize,
+    pub h0: f64,
+    pub initial_density_specimen: f64,
+    pub initial_density_rve: f64,
+    pub fill_time: f64,
+    pub fill_at_rest: bool,
+    pub press_steps: u64,
+    pub last: PressRecord,
+}
+
+pub fn run_scene(
+    scene_path: &Path,
+    out_dir: &Path,
+    quiet: bool,
+    resume: bool,
+) -> Result<CompactionSummary> {
+    let (scene, sha) = crate::scene::load(scene_path)?;
+    let every = scene.output.checkpoint_every;
+    if resume && every == 0 {
+        return Err(TampError::input(
+            "output.checkpoint_every",
+            "must be > 0 with --resume: a run that writes no checkpoint has nothing to resume from",
+        ));
+    }
+    output::create_dir(out_dir)?;
+    let specimen_path = out_dir.join("specimen.json");
+    let checkpoint_path = out_dir.join("checkpoint.json");
+    let specimen: Specimen = if resume && specimen_path.exists() {
+        let saved: Checkpoint<Specimen> = checkpoint::read_checkpoint(&specimen_path)?;
+        eprintln!(
+            "resuming from the flattened specimen in {}",
+            specimen_path.display()
+        );
+        saved.into_state(&sha, &specimen_path)?
+    } else {
+        let specimen = die_compaction::prepare(&scene, quiet)?;
+        if every > 0 {
+            checkpoint::write_checkpoint(&specimen_path, &Checkpoint::new(&sha, &specimen))?;
+        }
+        specimen
+    };
+    let press_scene = die_compaction::press_scene(&scene, &specimen)?;
+    let json = serde_json::to_vec_pretty(&press_scene).expect("scene serialises");
+    output::write_atomic(&out_dir.join("press.scene.json"), &json)?;
+    let state: Option<PressState> = if resume && checkpoint_path.exists() {
+        let saved: Checkpoint<PressState> = checkpoint::read_checkpoint(&checkpoint_path)?;
+        let state = saved.into_state(&sha, &checkpoint_path)?;
+        eprintln!(
+            "resuming the pressing from step {} ({})",
+            state.pressing.steps,
+            checkpoint_path.display()
+        );
+        Some(state)
+    } else {
+        None
+    };
+    let mut write = |state: &PressState| {
+        checkpoint::write_checkpoint(&checkpoint_path, &Checkpoint::new(&sha, state))
+    };
+    let pressing = die_compaction::press(&scene, &specimen, quiet, state, every, &mut write)?;
+    let mut csv = csv::Writer::from_writer(Vec::new());
+    for r in &pressing.records {
+        csv.serialize(r)
+            .map_err(|e| TampError::Other(format!("compaction.csv: {e}")))?;
+    }
+    let bytes = csv
+        .into_inner()
+        .map_err(|e| TampError::Other(format!("compaction.csv: {e}")))?;
+    output::write_atomic(&out_dir.join("compaction.csv"), &bytes)?;
+    let last = pressing
+        .records
+        .last()
+        .expect("at least two records")
+        .clone();
+    let summary = CompactionSummary {
+        provenance: Provenance::new(sha, scene.seed, last.dt, None, pressing.steps),
+        name: scene.name.clone(),
+        particles: specimen.particles.len(),
+        h0: specimen.h0,
+        initial_density_specimen: specimen.density_specimen,
+        initial_density_rve: specimen.density_rve,
+        fill_time: specimen.fill_time,
+        fill_at_rest: specimen.fill_at_rest,
+        press_steps: pressing.steps,
+        last,
+    };
+    let json = serde_json::to_vec_pretty(&summary).expect("summary serialises");
+    output::write_atomic(&out_dir.join("summary.json"), &json)?;
+    Ok(summary)
+}

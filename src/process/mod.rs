@@ -1,0 +1,6 @@
+//! Processes: multi-stage protocols run as a sequence of stage scenes that share the
+//! particles' state (a LIGGGHTS input script with several `run` commands, as one
+//! scene block).
+
+pub mod die_compaction;
+pub mod die_compaction_run;

@@ -1,0 +1,185 @@
+//! The `die_compaction` block of a scene: the whole cold uniaxial die compaction of
+//! Rojek et al. 2016 §5 as one scene, run as a short sequence of stage scenes that
+//! share the particles' state (`process::die_compaction`).
+//!
+//! ```json
+//! "die_compaction": {
+//!   "die_diameter": 58e-6, "wall_material": "die",
+//!   "particles": {"count": 1751, "material": "NiAl", "radius": {"law": "log_normal", ...}},
+//!   "fill": {"contact": {...}, "gravity_scale": 1e4, "loose_fraction": 0.25,
+//!            "max_duration": 1e-3},
+//!   "flatten": {"depth": 3e-6, "duration": 1e-5},
+//!   "press": {"pressure": 50e6, "ramp_time": 1e-4, "punch_mass": 1e-9,
+//!             "records": 200, "dt_every": 100},
+//!   "rve_diameter": 54e-6
+//! }
+//! ```
+//! The scene's own `contact`, `rotation`, `time_step` and `gravity` are those of the
+//! pressing stage; `fill.contact` is the law used while the die is filled and the
+//! top flattened (frictionless Hertz in the paper). The die, its floor and the punch
+//! are made of `wall_material`, so particle–wall friction is set through
+//! `friction_pairs` of each contact block.
+
+use super::schema::{ContactSpec, RadiusSpec};
+use super::validate::Errors;
+use serde::{Deserialize, Serialize};
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct DieCompactionSpec {
+    /// Inner diameter of the cylindrical die, m.
+    pub die_diameter: f64,
+    /// Material of the die wall, its floor and the punch.
+    pub wall_material: String,
+    pub particles: DieParticles,
+    pub fill: FillSpec,
+    pub flatten: FlattenSpec,
+    pub press: PressSpec,
+    /// Diameter of the spherical RVE centred in the specimen, m (Rojek: 54 µm).
+    pub rve_diameter: f64,
+}
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct DieParticles {
+    pub count: usize,
+    pub radius: RadiusSpec,
+    pub material: String,
+}
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct FillSpec {
+    /// Contact law while the die is filled and flattened.
+    pub contact: ContactSpec,
+    /// Factor on the scene's gravity while filling (micrometre particles settle in
+    /// hours of steps under 1 g).
+    pub gravity_scale: f64,
+    /// Solid fraction of the loose random column the particles start in.
+    #[serde(default = "default_loose_fraction")]
+    pub loose_fraction: f64,
+    /// Safety factor α of the fill and flatten stages (default: the scene's); the
+    /// paper's α = 0.1 is stated for pressing.
+    #[serde(default)]
+    pub alpha: Option<f64>,
+    /// Longest settling time, s; settling ends earlier once the bed is at rest.
+    pub max_duration: f64,
+    /// The bed is at rest when its kinetic energy is below this fraction of
+    /// M g' ⟨d⟩ (total mass, scaled gravity, mean diameter).
+    #[serde(default = "default_rest_fraction")]
+    pub rest_fraction: f64,
+}
+
+fn default_loose_fraction() -> f64 {
+    0.25
+}
+
+fn default_rest_fraction() -> f64 {
+    1e-6
+}
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct FlattenSpec {
+    /// How far the punch moves down from first contact, m (Rojek: 3 µm).
+    pub depth: f64,
+    /// Time to move down; the same time to move back up and again to relax, s.
+    pub duration: f64,
+}
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct PressSpec {
+    /// Final pressure on the punch, Pa.
+    pub pressure: f64,
+    /// Time over which the pressure rises linearly from zero, s.
+    pub ramp_time: f64,
+    /// Mass of the punch, kg.
+    pub punch_mass: f64,
+    /// Number of records along the ramp (density, height, forces).
+    #[serde(default = "default_records")]
+    pub records: usize,
+    /// Steps between re-estimates of the time step as contacts stiffen (Rojek §3.4).
+    #[serde(default = "default_dt_every")]
+    pub dt_every: u64,
+}
+
+fn default_records() -> usize {
+    100
+}
+
+fn default_dt_every() -> u64 {
+    100
+}
+
+impl DieCompactionSpec {
+    pub(super) fn validate(&self, material_exists: &dyn Fn(&str) -> bool, e: &mut Errors) {
+        let at = |f: &str| format!("die_compaction.{f}");
+        e.positive(at("die_diameter"), self.die_diameter);
+        for (field, name) in [
+            ("wall_material", &self.wall_material),
+            ("particles.material", &self.particles.material),
+        ] {
+            if !material_exists(name) {
+                e.push(at(field), format!("unknown material '{name}'"));
+            }
+        }
+        if self.particles.count == 0 {
+            e.push(at("particles.count"), "must be >= 1, got 0");
+        }
+        let d = self.particles.radius.distribution();
+        match d.validate() {
+            Err(rule) => e.push(at("particles.radius"), rule),
+            Ok(()) if 2.0 * d.max_radius() >= self.die_diameter || d.max_radius().is_nan() => e
+                .push(
+                    at("particles.radius"),
+                    format!(
+                        "the largest diameter {:e} m must be smaller than the die ({:e} m)",
+                        2.0 * d.max_radius(),
+                        self.die_diameter
+                    ),
+                ),
+            Ok(()) => {}
+        }
+        e.positive(at("fill.gravity_scale"), self.fill.gravity_scale);
+        if !(self.fill.loose_fraction > 0.0 && self.fill.loose_fraction <= 0.3) {
+            e.push(
+                at("fill.loose_fraction"),
+                format!(
+                    "must be in (0, 0.3] (random insertion jams well before 0.38), got {}",
+                    self.fill.loose_fraction
+                ),
+            );
+        }
+        e.positive(at("fill.max_duration"), self.fill.max_duration);
+        if let Some(alpha) = self.fill.alpha
+            && !(alpha > 0.0 && alpha <= 1.0)
+        {
+            e.push(at("fill.alpha"), format!("must be in (0, 1], got {alpha}"));
+        }
+        e.positive(at("fill.rest_fraction"), self.fill.rest_fraction);
+        e.positive(at("flatten.depth"), self.flatten.depth);
+        e.positive(at("flatten.duration"), self.flatten.duration);
+        e.positive(at("press.pressure"), self.press.pressure);
+        e.positive(at("press.ramp_time"), self.press.ramp_time);
+        e.positive(at("press.punch_mass"), self.press.punch_mass);
+        if self.press.records < 2 {
+            e.push(
+                at("press.records"),
+                format!("must be >= 2, got {}", self.press.records),
+            );
+        }
+        if self.press.dt_every == 0 {
+            e.push(at("press.dt_every"), "must be >= 1, got 0");
+        }
+        if !(self.rve_diameter > 0.0 && self.rve_diameter < self.die_diameter) {
+            e.push(
+                at("rve_diameter"),
+                format!(
+                    "must be > 0 and smaller than the die diameter {:e} m, got {:e}",
+                    self.die_diameter, self.rve_diameter
+                ),
+            );
+        }
+    }
+}
