@@ -3,6 +3,7 @@
 //! write CSV data and a page (docs/accuracy-cost.md when run with `--out docs`).
 
 pub mod accuracy_cost;
+pub mod die_compaction;
 pub mod page;
 pub mod stable_alpha;
 

@@ -323,9 +323,12 @@ pub fn write(out: &Path) -> Result<()> {
     files.sort();
     let mut by_case: BTreeMap<String, Vec<Row>> = BTreeMap::new();
     let mut stable: Vec<StableRow> = Vec::new();
+    let mut die: Vec<super::die_compaction::DieRow> = Vec::new();
     for f in &files {
         if f.file_stem().is_some_and(|s| s == "stable_alpha") {
             stable = read_csv(f)?;
+        } else if f.file_stem().is_some_and(|s| s == "die_compaction") {
+            die = read_csv(f)?;
         } else {
             for r in read_csv::<Row>(f)? {
                 by_case.entry(r.case.clone()).or_default().push(r);
@@ -363,6 +366,9 @@ pub fn write(out: &Path) -> Result<()> {
     );
     if !stable.is_empty() {
         page.push_str(&super::stable_alpha::section(&stable));
+    }
+    if !die.is_empty() {
+        page.push_str(&super::die_compaction::section(&die));
     }
     let _ = writeln!(page, "## Summary per case\n\n{summary}");
     let _ = writeln!(page, "## Per case\n\n{body}");

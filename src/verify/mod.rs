@@ -28,6 +28,9 @@ pub enum Tier {
 pub enum ToleranceKind {
     Relative,
     Absolute,
+    /// One-sided: the value must not exceed the reference by more than the
+    /// tolerance (a bound such as "friction lowers the density", "no density drop").
+    Below,
 }
 
 #[derive(Clone, Debug, Deserialize)]
@@ -203,6 +206,10 @@ pub struct CaseResult {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub error: Option<String>,
     pub quantities: Vec<QuantityResult>,
+    /// Plots the case wrote into the report directory (`<case>*.svg`), shown in the
+    /// report under the case.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub plots: Vec<String>,
 }
 
 #[derive(Clone, Debug, Serialize)]
@@ -254,6 +261,7 @@ fn judge(spec: &QuantitySpec, m: &Measured) -> QuantityResult {
     let error = match spec.tolerance_kind {
         ToleranceKind::Absolute => (m.value - m.reference).abs(),
         ToleranceKind::Relative => (m.value - m.reference).abs() / m.reference.abs(),
+        ToleranceKind::Below => (m.value - m.reference).max(0.0),
     };
     let status = if error.is_finite() && error <= spec.tolerance {
         Status::Pass
@@ -283,6 +291,7 @@ pub fn run_case(
     variant: Variant,
 ) -> CaseResult {
     let started = Instant::now();
+    let started_at = std::time::SystemTime::now();
     let ctx = CaseContext {
         spec,
         dir: dir.to_path_buf(),
@@ -306,6 +315,7 @@ pub fn run_case(
         description: spec.description.clone(),
         error: None,
         quantities: Vec::new(),
+        plots: case_plots(report_dir, &spec.name, started_at),
     };
     match outcome {
         Err(e) => {
@@ -337,6 +347,28 @@ pub fn run_case(
         }
     }
     result
+}
+
+/// The SVG files a case wrote into the report directory during its run, sorted:
+/// named after the case (its name followed by `.` or `_`) and modified since `since`.
+fn case_plots(report_dir: &Path, case: &str, since: std::time::SystemTime) -> Vec<String> {
+    let mut plots: Vec<String> = std::fs::read_dir(report_dir)
+        .into_iter()
+        .flatten()
+        .filter_map(|entry| {
+            let entry = entry.ok()?;
+            let fresh = entry.metadata().ok()?.modified().ok()? >= since;
+            fresh.then(|| entry.file_name().into_string().ok())?
+        })
+        .filter(|name| {
+            name.ends_with(".svg")
+                && name
+                    .strip_prefix(case)
+                    .is_some_and(|rest| rest.starts_with('.') || rest.starts_with('_'))
+        })
+        .collect();
+    plots.sort();
+    plots
 }
 
 /// `tamp verify`: returns the exit code (0 all pass, 1 otherwise).

@@ -34,6 +34,7 @@ pub fn markdown(r: &VerificationReport) -> String {
             let kind = match q.tolerance_kind {
                 ToleranceKind::Relative => "rel",
                 ToleranceKind::Absolute => "abs",
+                ToleranceKind::Below => "at most ref +",
             };
             let _ = writeln!(
                 s,
@@ -60,6 +61,9 @@ pub fn markdown(r: &VerificationReport) -> String {
                 .map(|p| format!(" The paper states {p:e}."))
                 .unwrap_or_default();
             let _ = writeln!(s, "- `{}`: {}{}", q.name, q.why, paper);
+        }
+        for plot in &c.plots {
+            let _ = writeln!(s, "\n![{plot}]({plot})");
         }
         let _ = writeln!(s);
     }

@@ -16,6 +16,7 @@ mod liggghts_two_sphere;
 mod liggghts_two_sphere_oblique;
 mod linear_restitution;
 mod momentum_conservation;
+mod nial_die_compaction;
 pub mod probe;
 mod restitution_laws;
 mod rojek_models;
@@ -46,6 +47,8 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("kuwabara_kono_restitution", kuwabara_kono_restitution::run),
     ("sliding_oblique_impact", sliding_oblique_impact::run),
     ("van_der_waals_force", van_der_waals_force::run),
+    ("nial_die_compaction_small", nial_die_compaction::small),
+    ("nial_die_compaction", nial_die_compaction::full),
     ("scott_random_packing_quick", scott_random_packing::run),
     ("scott_random_packing", scott_random_packing::run),
     ("density_segregation", density_segregation::run),

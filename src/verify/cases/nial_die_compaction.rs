@@ -1,0 +1,413 @@
+//! Cold uniaxial die compaction of NiAl powder (Rojek et al. 2016 §5), end to end:
+//! fill, flatten and press (`process::die_compaction`), then the density–pressure
+//! curves.
+//!
+//! `nial_die_compaction_small` (quick): ≈ 300 particles of the derived size
+//! distribution (reference_data/nial/README.md) in a die scaled to keep the paper's
+//! H₀/D, pressed under frictionless Hertz–Mindlin–Deresiewicz. It checks what must
+//! hold of any die compaction, whatever the packing:
+//! - the specimen density never falls while the pressure rises (the RVE density may:
+//!   its sphere follows the specimen's centre down, and in a 28 µm RVE one particle
+//!   of up to 18 µm entering or leaving moves it by 4e-3, which seed 1 shows);
+//! - the punch carries the applied pressure, and the floor and die wall carry what
+//!   the punch transmits (Newton's third law through the bed, up to the bed's and
+//!   punch's inertia);
+//! - no particle centre leaves the die;
+//! - the settled density does not depend on the gravity scale used to fill.
+//!
+//! `nial_die_compaction` (full): the paper's specimen (1751 particles, 58 µm die,
+//! 54 µm RVE), filled and flattened once, then pressed under Hertz–Mindlin–
+//! Deresiewicz and under Storåkers with Rojek's three Hollomon pairs, all
+//! frictionless between particles, and friction sweeps μ = 0.01, 0.02, 0.05 for
+//! Hertz and Storåkers m = 0.2 (Figs 17–20). The pressings are independent and run
+//! on as many threads as the machine has (each one single-threaded and
+//! deterministic, so the results do not depend on the thread count).
+
+use crate::error::{Result, TampError};
+use crate::output::plot::{Panel, Series, write_svg};
+use crate::process::die_compaction::{self, PressRecord, Pressing, Specimen};
+use crate::scene::schema::{HollomonSpec, NormalSpec, Scene, TangentialLawName};
+use crate::verify::{CaseContext, Measured};
+use std::f64::consts::PI;
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// Rojek 2016 Table 1: the mean relative bulk density of the poured powder.
+const POURED_DENSITY: f64 = 0.650;
+/// Records below this fraction of the final pressure are left out of the force
+/// balance: there the bed is still being set in motion and the balance is judged
+/// against a pressure near zero.
+const BALANCE_FROM: f64 = 0.1;
+
+/// A contact law of one pressing.
+#[derive(Clone, Copy, Debug)]
+struct Model {
+    label: &'static str,
+    /// Storåkers (Hollomon m, σ₀ in Pa), or Hertz when absent.
+    storakers: Option<(f64, f64)>,
+    /// Friction between particles (the die wall keeps the scene's 0.02).
+    friction: f64,
+}
+
+const HERTZ: Model = Model {
+    label: "hertz",
+    storakers: None,
+    friction: 0.0,
+};
+
+/// Rojek §5: the three Hollomon pairs (m, σ₀).
+const STORAKERS: [(f64, f64, &str); 3] = [
+    (0.0, 800e6, "storakers_m0"),
+    (0.1, 1375e6, "storakers_m0.1"),
+    (0.2, 2363e6, "storakers_m0.2"),
+];
+
+const FRICTIONS: [(f64, &str, &str); 3] = [
+    (0.01, "hertz_mu0.01", "storakers_m0.2_mu0.01"),
+    (0.02, "hertz_mu0.02", "storakers_m0.2_mu0.02"),
+    (0.05, "hertz_mu0.05", "storakers_m0.2_mu0.05"),
+];
+
+fn full_models() -> Vec<Model> {
+    let mut models = vec![HERTZ];
+    for (m, sigma0, label) in STORAKERS {
+        models.push(Model {
+            label,
+            storakers: Some((m, sigma0)),
+            friction: 0.0,
+        });
+    }
+    for (mu, hertz, storakers) in FRICTIONS {
+        models.push(Model {
+            label: hertz,
+            storakers: None,
+            friction: mu,
+        });
+        models.push(Model {
+            label: storakers,
+            storakers: Some((STORAKERS[2].0, STORAKERS[2].1)),
+            friction: mu,
+        });
+    }
+    models
+}
+
+/// The case scene with a model's normal law, Hollomon constants and friction. The
+/// Storåkers runs take Rojek's tangential law (eq 21, k_t = β k_n) with β = 1, the
+/// middle of the 0.5–5 Olsson & Larsson suggest, since §5 does not state it.
+fn with_model(scene: &Scene, model: &Model) -> Result<Scene> {
+    let mut s = scene.clone();
+    let tangential = s.contact.tangential.as_mut().ok_or_else(|| {
+        TampError::Other("the NiAl scene must have a tangential law (wall friction)".into())
+    })?;
+    tangential.friction = model.friction;
+    if let Some((m, sigma0)) = model.storakers {
+        s.contact.normal = NormalSpec::Storakers {
+            min_with_hertz: false,
+        };
+        tangential.law = TangentialLawName::Storakers;
+        tangential.beta = Some(1.0);
+        for material in &mut s.materials {
+            material.hollomon = Some(HollomonSpec {
+                exponent: m,
+                strength: Some(sigma0),
+                yield_stress: None,
+            });
+        }
+    }
+    crate::scene::validate::validate(&s)?;
+    Ok(s)
+}
+
+/// Press one specimen under several models, on up to `threads` threads.
+fn press_all(scene: &Scene, specimen: &Specimen, models: &[Model]) -> Result<Vec<Pressing>> {
+    let threads = std::thread::available_parallelism()
+        .map_or(1, |n| n.get())
+        .min(models.len());
+    let next = AtomicUsize::new(0);
+    let results: Mutex<Vec<Option<Result<Pressing>>>> =
+        Mutex::new((0..models.len()).map(|_| None).collect());
+    std::thread::scope(|scope| {
+        for _ in 0..threads {
+            scope.spawn(|| {
+                loop {
+                    let k = next.fetch_add(1, Ordering::SeqCst);
+                    let Some(model) = models.get(k) else { break };
+                    let outcome = with_model(scene, model).and_then(|s| {
+                        die_compaction::press(&s, specimen, true, None, 0, &mut |_| Ok(()))
+                    });
+                    results.lock().expect("no thread panics holding it")[k] = Some(outcome);
+                }
+            });
+        }
+    });
+    results
+        .into_inner()
+        .expect("no thread panicked")
+        .into_iter()
+        .zip(models)
+        .map(|(r, m)| {
+            r.expect("every model ran")
+                .map_err(|e| TampError::Other(format!("pressing '{}': {e}", m.label)))
+        })
+        .collect()
+}
+
+fn at(pressing: &Pressing, p: f64, column: fn(&PressRecord) -> f64) -> Result<f64> {
+    pressing
+        .at_pressure(p, column)
+        .or_else(|| {
+            let last = pressing.records.last()?;
+            (last.pressure == p).then(|| column(last))
+        })
+        .ok_or_else(|| TampError::Other(format!("no record brackets {p:e} Pa")))
+}
+
+/// Largest fall of a column between consecutive records (0 when it never falls).
+fn largest_drop(pressing: &Pressing, column: fn(&PressRecord) -> f64) -> f64 {
+    pressing
+        .records
+        .windows(2)
+        .map(|w| column(&w[0]) - column(&w[1]))
+        .fold(0.0, f64::max)
+}
+
+/// Largest |a − b| over the records past the start of the ramp, as a fraction of
+/// the final pressure.
+fn largest_imbalance(pressing: &Pressing, gap: fn(&PressRecord) -> f64) -> f64 {
+    let p_max = pressing.records.last().map_or(1.0, |r| r.pressure);
+    pressing
+        .records
+        .iter()
+        .filter(|r| r.pressure >= BALANCE_FROM * p_max)
+        .map(|r| gap(r).abs() / p_max)
+        .fold(0.0, f64::max)
+}
+
+fn mpa(points: &[PressRecord], column: fn(&PressRecord) -> f64) -> Vec<(f64, f64)> {
+    points
+        .iter()
+        .map(|r| (r.pressure / 1e6, column(r)))
+        .collect()
+}
+
+fn poured_point() -> Series {
+    Series::points(
+        "experiment: poured density, Rojek Table 1 (the curve of Fig 5 is not available)",
+        vec![(0.0, POURED_DENSITY)],
+    )
+}
+
+fn write_curves_csv(ctx: &CaseContext, labels: &[&str], pressings: &[Pressing]) -> Result<()> {
+    let mut csv = String::from(
+        "model,pressure_pa,punch_reaction_pa,floor_reaction_pa,die_friction_pa,height_m,height_reduction,density_specimen,density_rve,contact_count\n",
+    );
+    for (label, p) in labels.iter().zip(pressings) {
+        for r in &p.records {
+            csv.push_str(&format!(
+                "{label},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{}\n",
+                r.pressure,
+                r.punch_reaction,
+                r.floor_reaction,
+                r.die_friction,
+                r.height,
+                r.height_reduction,
+                r.density_specimen,
+                r.density_rve,
+                r.contact_count
+            ));
+        }
+    }
+    crate::output::write_atomic(
+        &ctx.report_dir.join(format!("{}_curves.csv", ctx.spec.name)),
+        csv.as_bytes(),
+    )
+}
+
+pub fn small(ctx: &CaseContext) -> Result<Vec<Measured>> {
+    let scene = ctx.scene()?;
+    let specimen = die_compaction::prepare(&scene, true)?;
+    let pressing = die_compaction::press(&scene, &specimen, true, None, 0, &mut |_| Ok(()))?;
+
+    // The same fill under ten times the gravity: the settled density must not move
+    // beyond the packing's own randomness.
+    let mut stronger = scene.clone();
+    if let Some(dc) = stronger.die_compaction.as_mut() {
+        dc.fill.gravity_scale *= 10.0;
+    }
+    let specimen_stronger = die_compaction::prepare(&stronger, true)?;
+
+    write_curves_csv(ctx, &["hertz"], std::slice::from_ref(&pressing))?;
+    let name = &ctx.spec.name;
+    write_svg(
+        &ctx.report_dir.join(format!("{name}.svg")),
+        &[Panel {
+            title: "NiAl die compaction, 300 particles, Hertz, frictionless",
+            x_label: "pressure (MPa)",
+            y_label: "relative density",
+            log_x: false,
+            log_y: false,
+            series: &[
+                Series::line("specimen", mpa(&pressing.records, |r| r.density_specimen)),
+                Series::line("RVE", mpa(&pressing.records, |r| r.density_rve)),
+                poured_point(),
+            ],
+        }],
+    )?;
+    Ok(vec![
+        Measured::new(
+            "largest_density_drop_specimen",
+            largest_drop(&pressing, |r| r.density_specimen),
+            0.0,
+        ),
+        Measured::new(
+            "punch_reaction_minus_applied",
+            largest_imbalance(&pressing, |r| r.punch_reaction - r.pressure),
+            0.0,
+        ),
+        Measured::new(
+            "floor_and_die_minus_punch",
+            largest_imbalance(&pressing, |r| {
+                r.floor_reaction + r.die_friction - r.punch_reaction
+            }),
+            0.0,
+        ),
+        Measured::new("particles_left_die", pressing.escaped.len() as f64, 0.0),
+        Measured::new(
+            "settled_density_change_gravity_x10",
+            specimen_stronger.density_specimen - specimen.density_specimen,
+            0.0,
+        ),
+    ])
+}
+
+pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {
+    let scene = ctx.scene()?;
+    let dc = scene
+        .die_compaction
+        .as_ref()
+        .ok_or_else(|| TampError::Other("the NiAl scene needs die_compaction".into()))?;
+    let specimen = die_compaction::prepare(&scene, true)?;
+    let models = full_models();
+    let pressings = press_all(&scene, &specimen, &models)?;
+    let labels: Vec<&str> = models.iter().map(|m| m.label).collect();
+    write_curves_csv(ctx, &labels, &pressings)?;
+    let find = |label: &str| -> &Pressing {
+        &pressings[labels
+            .iter()
+            .position(|l| *l == label)
+            .expect("model listed")]
+    };
+    let p_max = dc.press.pressure;
+    let hertz = find("hertz");
+    let last = hertz.records.last().expect("records");
+
+    // Plots: density against pressure (all frictionless models), ΔH/H₀, friction sweeps.
+    let name = &ctx.spec.name;
+    let frictionless = ["hertz", "storakers_m0", "storakers_m0.1", "storakers_m0.2"];
+    let mut density = Vec::new();
+    let mut height = Vec::new();
+    for label in frictionless {
+        let p = find(label);
+        density.push(Series::line(
+            &format!("{label}, specimen"),
+            mpa(&p.records, |r| r.density_specimen),
+        ));
+        density.push(Series::line(
+            &format!("{label}, RVE"),
+            mpa(&p.records, |r| r.density_rve),
+        ));
+        height.push(Series::line(label, mpa(&p.records, |r| r.height_reduction)));
+    }
+    density.push(poured_point());
+    write_svg(
+        &ctx.report_dir.join(format!("{name}_density.svg")),
+        &[Panel {
+            title: "NiAl die compaction: relative density vs pressure, μ = 0 (Rojek Fig 18)",
+            x_label: "pressure (MPa)",
+            y_label: "relative density",
+            log_x: false,
+            log_y: false,
+            series: &density,
+        }],
+    )?;
+    write_svg(
+        &ctx.report_dir.join(format!("{name}_height.svg")),
+        &[Panel {
+            title: "NiAl die compaction: ΔH/H0 vs pressure, μ = 0 (Rojek Fig 17)",
+            x_label: "pressure (MPa)",
+            y_label: "ΔH / H0",
+            log_x: false,
+            log_y: false,
+            series: &height,
+        }],
+    )?;
+    for (base, title) in [
+        ("hertz", "Hertz–Mindlin–Deresiewicz (Rojek Fig 19)"),
+        ("storakers_m0.2", "Storåkers m = 0.2 (Rojek Fig 20)"),
+    ] {
+        let mut sweep = vec![Series::line(
+            "μ = 0",
+            mpa(&find(base).records, |r| r.density_rve),
+        )];
+        for (mu, _, _) in FRICTIONS {
+            sweep.push(Series::line(
+                &format!("μ = {mu}"),
+                mpa(&find(&format!("{base}_mu{mu}")).records, |r| r.density_rve),
+            ));
+        }
+        sweep.push(poured_point());
+        write_svg(
+            &ctx.report_dir.join(format!("{name}_friction_{base}.svg")),
+            &[Panel {
+                title: &format!("RVE density vs pressure with friction: {title}"),
+                x_label: "pressure (MPa)",
+                y_label: "relative density (RVE)",
+                log_x: false,
+                log_y: false,
+                series: &sweep,
+            }],
+        )?;
+    }
+
+    // Volume conservation: with every particle inside the die, the exact solid
+    // fraction of the specimen is the particles' volume over the die volume below the
+    // punch, up to the lenses pressed into the walls.
+    let solid: f64 = specimen
+        .particles
+        .iter()
+        .map(|p| 4.0 / 3.0 * PI * p.radius.powi(3))
+        .sum();
+    let die_area = PI * (0.5 * dc.die_diameter).powi(2);
+    let rve0 = specimen.density_rve;
+    let ten = 10e6;
+    Ok(vec![
+        Measured::new("initial_density_specimen", specimen.density_specimen, 0.62),
+        Measured::new("initial_density_rve", rve0, 0.66),
+        Measured::new(
+            "density_specimen_at_50MPa_hertz",
+            at(hertz, p_max, |r| r.density_specimen)?,
+            solid / (die_area * last.height),
+        ),
+        Measured::new(
+            "height_reduction_at_50MPa_hertz",
+            last.height_reduction,
+            1.0 - specimen.density_specimen / last.density_specimen,
+        ),
+        Measured::new(
+            "density_rve_at_50MPa_hertz",
+            at(hertz, p_max, |r| r.density_rve)?,
+            rve0 * specimen.h0 / last.height,
+        ),
+        Measured::new(
+            "density_rve_at_50MPa_storakers_m0.2",
+            at(find("storakers_m0.2"), p_max, |r| r.density_rve)?,
+            at(hertz, p_max, |r| r.density_rve)?,
+        ),
+        Measured::new(
+            "density_rve_at_10MPa_mu0.05_minus_mu0",
+            at(find("hertz_mu0.05"), ten, |r| r.density_rve)? - at(hertz, ten, |r| r.density_rve)?,
+            0.0,
+        ),
+    ])
+}
