@@ -1,16 +1,24 @@
 //! Progress with an ETA on stderr for long runs (indicatif). The bar appears only on
-//! an interactive terminal and only once a stage has run for a second, so tests,
-//! CI logs and short runs stay quiet.
+//! an interactive terminal and only once a stage has run for a second, so tests and
+//! short runs stay quiet; where stderr is a log (CI, `nohup`), a line with the same
+//! numbers is written every `LOG_EVERY` instead, so a run of hours can be followed.
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use std::io::IsTerminal;
 use std::time::{Duration, Instant};
 
+const LOG_EVERY: Duration = Duration::from_secs(60);
+
 pub struct Progress {
     bar: ProgressBar,
+    stage: String,
+    len: u64,
     started: Instant,
     show: bool,
     shown: bool,
+    /// Log lines instead of a bar (stderr is not a terminal), and when the last was.
+    log: bool,
+    logged: Instant,
 }
 
 impl Progress {
@@ -24,11 +32,16 @@ impl Progress {
             .expect("static template"),
         );
         bar.set_prefix(stage.to_string());
+        let terminal = std::io::stderr().is_terminal();
         Progress {
             bar,
+            stage: stage.to_string(),
+            len,
             started: Instant::now(),
-            show: !quiet && std::io::stderr().is_terminal(),
+            show: !quiet && terminal,
             shown: false,
+            log: !quiet && !terminal,
+            logged: Instant::now(),
         }
     }
 
@@ -38,6 +51,15 @@ impl Progress {
             self.shown = true;
         }
         self.bar.set_position(position);
+        if self.log && self.logged.elapsed() >= LOG_EVERY && position > 0 {
+            self.logged = Instant::now();
+            let elapsed = self.started.elapsed().as_secs_f64();
+            let eta = elapsed * (self.len.saturating_sub(position)) as f64 / position as f64;
+            eprintln!(
+                "{}: {position}/{} after {elapsed:.0} s, ETA {eta:.0} s",
+                self.stage, self.len
+            );
+        }
     }
 
     pub fn finish(self) {

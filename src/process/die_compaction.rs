@@ -344,6 +344,16 @@ pub fn prepare(scene: &Scene, quiet: bool) -> Result<Specimen> {
     }
     progress.finish();
     let (fill_time, fill_steps, fill_dt) = (sim.time, sim.step, sim.dt);
+    if !quiet {
+        eprintln!(
+            "fill: {} after {fill_time:e} s ({fill_steps} steps of {fill_dt:e} s)",
+            if fill_at_rest {
+                "at rest"
+            } else {
+                "NOT at rest (max_duration reached)"
+            }
+        );
+    }
 
     // Flatten: down `depth` from first contact, back up, relax.
     let (depth, t) = (dc.flatten.depth, dc.flatten.duration);

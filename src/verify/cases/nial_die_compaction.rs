@@ -133,9 +133,15 @@ fn press_all(scene: &Scene, specimen: &Specimen, models: &[Model]) -> Result<Vec
                 loop {
                     let k = next.fetch_add(1, Ordering::SeqCst);
                     let Some(model) = models.get(k) else { break };
+                    let started = std::time::Instant::now();
                     let outcome = with_model(scene, model).and_then(|s| {
-                        die_compaction::press(&s, specimen, true, None, 0, &mut |_| Ok(()))
+                        die_compaction::press(&s, specimen, false, None, 0, &mut |_| Ok(()))
                     });
+                    eprintln!(
+                        "nial_die_compaction: pressing '{}' done in {:.0} s",
+                        model.label,
+                        started.elapsed().as_secs_f64()
+                    );
                     results.lock().expect("no thread panics holding it")[k] = Some(outcome);
                 }
             });
@@ -287,7 +293,12 @@ pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {
         .die_compaction
         .as_ref()
         .ok_or_else(|| TampError::Other("the NiAl scene needs die_compaction".into()))?;
-    let specimen = die_compaction::prepare(&scene, true)?;
+    // Not quiet: this case runs for an hour or more, and its log says how far it got.
+    let specimen = die_compaction::prepare(&scene, false)?;
+    eprintln!(
+        "nial_die_compaction: specimen H0 = {:e} m, density {:.4}, RVE {:.4}",
+        specimen.h0, specimen.density_specimen, specimen.density_rve
+    );
     let models = full_models();
     let pressings = press_all(&scene, &specimen, &models)?;
     let labels: Vec<&str> = models.iter().map(|m| m.label).collect();
