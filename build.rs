@@ -1,4 +1,6 @@
-//! Records the git commit tamp was built from, for the provenance block of every output.
+//! Records the git commit tamp was built from, for the provenance block of every output,
+//! and the git objects of the code that decides results (`src/`, `Cargo.lock`), so work
+//! saved by one build can be recognised by another build of the same code.
 use std::process::Command;
 
 fn main() {
@@ -21,6 +23,38 @@ fn main() {
         commit
     };
     println!("cargo:rustc-env=TAMP_GIT_COMMIT={commit}");
+    let source = Command::new("git")
+        .args(["rev-parse", "HEAD:src", "HEAD:Cargo.lock"])
+        .output()
+        .ok()
+        .filter(|o| o.status.success())
+        .map(|o| {
+            String::from_utf8_lossy(&o.stdout)
+                .split_whitespace()
+                .collect::<Vec<_>>()
+                .join("+")
+        })
+        .unwrap_or_else(|| "unknown".to_string());
+    let source_dirty = Command::new("git")
+        .args([
+            "status",
+            "--porcelain",
+            "--",
+            "src",
+            "Cargo.lock",
+            "Cargo.toml",
+            "build.rs",
+        ])
+        .output()
+        .ok()
+        .map(|o| !o.stdout.is_empty())
+        .unwrap_or(true);
+    let source = if source_dirty {
+        format!("{source}-dirty")
+    } else {
+        source
+    };
+    println!("cargo:rustc-env=TAMP_SOURCE_TREE={source}");
     println!("cargo:rerun-if-changed=.git/HEAD");
     println!("cargo:rerun-if-changed=.git/index");
 }

@@ -30,3 +30,6 @@ pub use error::{Result, TampError};
 /// Version and commit this binary was built from.
 pub const VERSION: &str = env!("CARGO_PKG_VERSION");
 pub const GIT_COMMIT: &str = env!("TAMP_GIT_COMMIT");
+/// Git objects of `src/` and `Cargo.lock` this build was made from (`-dirty` when they
+/// had uncommitted changes): equal for two builds whose results must be equal.
+pub const SOURCE_TREE: &str = env!("TAMP_SOURCE_TREE");

@@ -22,13 +22,24 @@
 //! Hertz and Storåkers m = 0.2 (Figs 17–20). The pressings are independent and run
 //! on as many threads as the machine has (each one single-threaded and
 //! deterministic, so the results do not depend on the thread count).
+//!
+//! The full case runs for hours, so it keeps its work in
+//! `<report>/nial_die_compaction_runs/`: the specimen, each finished pressing, and a
+//! restart checkpoint of each pressing under way. A `tamp verify` that is killed
+//! goes on from there when run again; a file is used only when it was written by a
+//! build of the same code (`SOURCE_TREE`: the git objects of `src/` and `Cargo.lock`,
+//! never a build with uncommitted changes) for the same scene (SHA-256 of the scene
+//! as pressed), so a change of code or scene starts the work afresh.
 
+use crate::checkpoint::{self, Checkpoint};
 use crate::error::{Result, TampError};
 use crate::output::plot::{Panel, Series, write_svg};
-use crate::process::die_compaction::{self, PressRecord, Pressing, Specimen};
+use crate::process::die_compaction::{self, PressRecord, PressState, Pressing, Specimen};
 use crate::scene::schema::{HollomonSpec, NormalSpec, Scene, TangentialLawName};
 use crate::verify::{CaseContext, Measured};
+use serde::{Deserialize, Serialize, de::DeserializeOwned};
 use std::f64::consts::PI;
+use std::path::PathBuf;
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -68,28 +79,36 @@ const FRICTIONS: [(f64, &str, &str); 3] = [
     (0.05, "hertz_mu0.05", "storakers_m0.2_mu0.05"),
 ];
 
+/// The pressings of the full case, those its quantities need first (so a run cut
+/// short has them), then the rest of Figs 17–20.
 fn full_models() -> Vec<Model> {
-    let mut models = vec![HERTZ];
-    for (m, sigma0, label) in STORAKERS {
-        models.push(Model {
-            label,
-            storakers: Some((m, sigma0)),
-            friction: 0.0,
-        });
-    }
-    for (mu, hertz, storakers) in FRICTIONS {
-        models.push(Model {
-            label: hertz,
-            storakers: None,
-            friction: mu,
-        });
-        models.push(Model {
-            label: storakers,
-            storakers: Some((STORAKERS[2].0, STORAKERS[2].1)),
-            friction: mu,
-        });
-    }
-    models
+    let storakers = |k: usize, friction: f64, label: &'static str| Model {
+        label,
+        storakers: Some((STORAKERS[k].0, STORAKERS[k].1)),
+        friction,
+    };
+    let hertz = |friction: f64, label: &'static str| Model {
+        label,
+        storakers: None,
+        friction,
+    };
+    let (mu, h, s) = (
+        FRICTIONS.map(|f| f.0),
+        FRICTIONS.map(|f| f.1),
+        FRICTIONS.map(|f| f.2),
+    );
+    vec![
+        HERTZ,
+        storakers(2, 0.0, STORAKERS[2].2),
+        hertz(mu[2], h[2]),
+        storakers(0, 0.0, STORAKERS[0].2),
+        storakers(1, 0.0, STORAKERS[1].2),
+        hertz(mu[0], h[0]),
+        hertz(mu[1], h[1]),
+        storakers(2, mu[0], s[0]),
+        storakers(2, mu[1], s[1]),
+        storakers(2, mu[2], s[2]),
+    ]
 }
 
 /// The case scene with a model's normal law, Hollomon constants and friction. The
@@ -119,29 +138,104 @@ fn with_model(scene: &Scene, model: &Model) -> Result<Scene> {
     Ok(s)
 }
 
-/// Press one specimen under several models, on up to `threads` threads.
-fn press_all(scene: &Scene, specimen: &Specimen, models: &[Model]) -> Result<Vec<Pressing>> {
+/// Steps between restart checkpoints of a pressing (a 1751-particle pressing takes
+/// 2–5 million steps; a checkpoint is a few MB of JSON).
+const CHECKPOINT_EVERY: u64 = 200_000;
+
+/// The full case's finished and interrupted work on disk.
+struct Store {
+    dir: PathBuf,
+}
+
+/// A finished pressing and the wall time it took (over all sessions it ran in).
+#[derive(Serialize, Deserialize)]
+struct Done {
+    pressing: Pressing,
+    wall_s: f64,
+}
+
+/// The key of saved work: the scene as pressed and the code that pressed it.
+fn sha_of(scene: &Scene) -> String {
+    let scene = crate::scene::sha256_hex(&serde_json::to_vec(scene).expect("scene serialises"));
+    format!("{scene}:{}", crate::SOURCE_TREE)
+}
+
+impl Store {
+    /// What `name` holds, if it was saved under `key` by this tamp version; anything
+    /// else is left to be recomputed.
+    fn load<T: DeserializeOwned>(&self, name: &str, key: &str) -> Option<T> {
+        if crate::SOURCE_TREE.ends_with("-dirty") {
+            return None;
+        }
+        let path = self.dir.join(name);
+        let saved: Checkpoint<T> = checkpoint::read_checkpoint(&path).ok()?;
+        saved.into_state(key, &path).ok()
+    }
+
+    fn save<T: Serialize>(&self, name: &str, key: &str, state: &T) -> Result<()> {
+        checkpoint::write_checkpoint(&self.dir.join(name), &Checkpoint::new(key, state))
+    }
+}
+
+/// Press one specimen under several models, on up to `threads` threads, reusing
+/// and checkpointing work in `store`.
+fn press_all(
+    scene: &Scene,
+    specimen: &Specimen,
+    models: &[Model],
+    store: &Store,
+) -> Result<Vec<Done>> {
     let threads = std::thread::available_parallelism()
         .map_or(1, |n| n.get())
         .min(models.len());
     let next = AtomicUsize::new(0);
-    let results: Mutex<Vec<Option<Result<Pressing>>>> =
+    let results: Mutex<Vec<Option<Result<Done>>>> =
         Mutex::new((0..models.len()).map(|_| None).collect());
+    let press_one = |model: &Model| -> Result<Done> {
+        let s = with_model(scene, model)?;
+        let key = sha_of(&s);
+        let done_file = format!("{}.done.json", model.label);
+        if let Some(done) = store.load::<Done>(&done_file, &key) {
+            eprintln!("nial_die_compaction: pressing '{}' reused", model.label);
+            return Ok(done);
+        }
+        let checkpoint_file = format!("{}.checkpoint.json", model.label);
+        let resume: Option<(PressState, f64)> = store.load(&checkpoint_file, &key);
+        let (resume, earlier_wall) = match resume {
+            Some((state, wall)) => {
+                eprintln!(
+                    "nial_die_compaction: pressing '{}' resumed at step {}",
+                    model.label, state.pressing.steps
+                );
+                (Some(state), wall)
+            }
+            None => (None, 0.0),
+        };
+        let started = std::time::Instant::now();
+        let mut save = |state: &PressState| {
+            let wall = earlier_wall + started.elapsed().as_secs_f64();
+            store.save(&checkpoint_file, &key, &(state, wall))
+        };
+        let pressing =
+            die_compaction::press(&s, specimen, false, resume, CHECKPOINT_EVERY, &mut save)?;
+        let done = Done {
+            pressing,
+            wall_s: earlier_wall + started.elapsed().as_secs_f64(),
+        };
+        store.save(&done_file, &key, &done)?;
+        eprintln!(
+            "nial_die_compaction: pressing '{}' done, {:.0} s",
+            model.label, done.wall_s
+        );
+        Ok(done)
+    };
     std::thread::scope(|scope| {
         for _ in 0..threads {
             scope.spawn(|| {
                 loop {
                     let k = next.fetch_add(1, Ordering::SeqCst);
                     let Some(model) = models.get(k) else { break };
-                    let started = std::time::Instant::now();
-                    let outcome = with_model(scene, model).and_then(|s| {
-                        die_compaction::press(&s, specimen, false, None, 0, &mut |_| Ok(()))
-                    });
-                    eprintln!(
-                        "nial_die_compaction: pressing '{}' done in {:.0} s",
-                        model.label,
-                        started.elapsed().as_secs_f64()
-                    );
+                    let outcome = press_one(model);
                     results.lock().expect("no thread panics holding it")[k] = Some(outcome);
                 }
             });
@@ -293,14 +387,39 @@ pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {
         .die_compaction
         .as_ref()
         .ok_or_else(|| TampError::Other("the NiAl scene needs die_compaction".into()))?;
-    // Not quiet: this case runs for an hour or more, and its log says how far it got.
-    let specimen = die_compaction::prepare(&scene, false)?;
+    // Not quiet: this case runs for hours, and its log says how far it got.
+    let store = Store {
+        dir: ctx.report_dir.join(format!("{}_runs", ctx.spec.name)),
+    };
+    crate::output::create_dir(&store.dir)?;
+    let key = sha_of(&scene);
+    let specimen = match store.load::<Specimen>("specimen.json", &key) {
+        Some(specimen) => specimen,
+        None => {
+            let specimen = die_compaction::prepare(&scene, false)?;
+            store.save("specimen.json", &key, &specimen)?;
+            specimen
+        }
+    };
     eprintln!(
         "nial_die_compaction: specimen H0 = {:e} m, density {:.4}, RVE {:.4}",
         specimen.h0, specimen.density_specimen, specimen.density_rve
     );
     let models = full_models();
-    let pressings = press_all(&scene, &specimen, &models)?;
+    let (pressings, walls): (Vec<Pressing>, Vec<f64>) =
+        press_all(&scene, &specimen, &models, &store)?
+            .into_iter()
+            .map(|d| (d.pressing, d.wall_s))
+            .unzip();
+    let mut timing = String::from("model,steps,wall_s\n");
+    for ((m, p), w) in models.iter().zip(&pressings).zip(&walls) {
+        timing.push_str(&format!("{},{},{w:.1}\n", m.label, p.steps));
+    }
+    crate::output::write_atomic(
+        &ctx.report_dir
+            .join(format!("{}_wall_times.csv", ctx.spec.name)),
+        timing.as_bytes(),
+    )?;
     let labels: Vec<&str> = models.iter().map(|m| m.label).collect();
     write_curves_csv(ctx, &labels, &pressings)?;
     let find = |label: &str| -> &Pressing {
