@@ -82,6 +82,10 @@ pub struct PressRecord {
     pub height_reduction: f64,
     pub density_specimen: f64,
     pub density_rve: f64,
+    /// Volume of the caps of particles pressed through the floor, punch face and die
+    /// wall, m³ (planar caps): what the specimen's exact solid volume leaves out of
+    /// the particles' volume.
+    pub wall_lens_volume: f64,
     pub contact_count: usize,
     pub dt: f64,
     pub step: u64,
@@ -245,6 +249,24 @@ pub fn densities(
         packing_fraction(positions, radii, &specimen, &space)?,
         packing_fraction(positions, radii, &rve, &space)?,
     ))
+}
+
+/// Σ of the caps π δ² (3r − δ)/3 that particles push through the floor (z = 0), the
+/// punch face (z = height) and the die wall (radius R), each cap taken as cut by a
+/// plane: the die wall curves towards the axis, so a die cap is larger by up to a
+/// fraction r/(2R) of itself, which the full case's tolerance allows for.
+pub fn wall_lens_volume(positions: &[Vec3], radii: &[f64], die_radius: f64, height: f64) -> f64 {
+    let cap = |r: f64, depth: f64| {
+        let d = depth.clamp(0.0, 2.0 * r);
+        PI * d * d * (3.0 * r - d) / 3.0
+    };
+    positions
+        .iter()
+        .zip(radii)
+        .map(|(x, &r)| {
+            cap(r, r - x.z) + cap(r, x.z + r - height) + cap(r, x.x.hypot(x.y) + r - die_radius)
+        })
+        .sum()
 }
 
 /// Radii drawn from the distribution, placed largest first in a loose column over
@@ -470,6 +492,12 @@ pub fn press(
             height_reduction: (specimen.h0 - height) / specimen.h0,
             density_specimen,
             density_rve,
+            wall_lens_volume: wall_lens_volume(
+                &sim.particles.position,
+                &sim.particles.radius,
+                die_radius,
+                height,
+            ),
             contact_count: sim.contact_count(),
             dt: sim.dt,
             step: sim.step,

@@ -501,8 +501,8 @@ pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {
     }
 
     // Volume conservation: with every particle inside the die, the exact solid
-    // fraction of the specimen is the particles' volume over the die volume below the
-    // punch, up to the lenses pressed into the walls.
+    // volume of the specimen is the particles' volume less the caps pressed through
+    // the walls.
     let solid: f64 = specimen
         .particles
         .iter()
@@ -510,6 +510,7 @@ pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {
         .sum();
     let die_area = PI * (0.5 * dc.die_diameter).powi(2);
     let rve0 = specimen.density_rve;
+    let first = hertz.records.first().expect("records");
     let ten = 10e6;
     Ok(vec![
         Measured::new("initial_density_specimen", specimen.density_specimen, 0.62),
@@ -517,12 +518,13 @@ pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {
         Measured::new(
             "density_specimen_at_50MPa_hertz",
             at(hertz, p_max, |r| r.density_specimen)?,
-            solid / (die_area * last.height),
+            (solid - last.wall_lens_volume) / (die_area * last.height),
         ),
         Measured::new(
             "height_reduction_at_50MPa_hertz",
             last.height_reduction,
-            1.0 - specimen.density_specimen / last.density_specimen,
+            1.0 - first.density_specimen * (solid - last.wall_lens_volume)
+                / (last.density_specimen * (solid - first.wall_lens_volume)),
         ),
         Measured::new(
             "density_rve_at_50MPa_hertz",
