@@ -31,6 +31,9 @@ pub enum ToleranceKind {
     /// One-sided: the value must not exceed the reference by more than the
     /// tolerance (a bound such as "friction lowers the density", "no density drop").
     Below,
+    /// The value must lie in an interval the case computes (`Measured::between`),
+    /// shown as its centre; the error is the distance outside it.
+    Between,
 }
 
 #[derive(Clone, Debug, Deserialize)]
@@ -66,6 +69,8 @@ pub struct Measured {
     pub name: String,
     pub value: f64,
     pub reference: f64,
+    /// Half-width of the interval about `reference` (tolerance kind `between`).
+    pub half_width: f64,
 }
 
 impl Measured {
@@ -74,6 +79,15 @@ impl Measured {
             name: name.to_string(),
             value,
             reference,
+            half_width: 0.0,
+        }
+    }
+
+    /// A value that must lie in [lo, hi], bounds the case derives from its run.
+    pub fn between(name: &str, value: f64, lo: f64, hi: f64) -> Self {
+        Measured {
+            half_width: 0.5 * (hi - lo).abs(),
+            ..Measured::new(name, value, 0.5 * (lo + hi))
         }
     }
 }
@@ -177,6 +191,9 @@ pub struct QuantityResult {
     pub name: String,
     pub value: f64,
     pub reference: f64,
+    /// Half-width of the interval about `reference` (kind `between`).
+    #[serde(skip_serializing_if = "is_zero")]
+    pub half_width: f64,
     pub error: f64,
     pub tolerance: f64,
     pub tolerance_kind: ToleranceKind,
@@ -217,6 +234,10 @@ pub struct VerificationReport {
     pub tamp_version: String,
     pub git_commit: String,
     pub cases: Vec<CaseResult>,
+}
+
+fn is_zero(x: &f64) -> bool {
+    *x == 0.0
 }
 
 /// `reference_data/` beside the verification directory `dir`.
@@ -262,6 +283,7 @@ fn judge(spec: &QuantitySpec, m: &Measured) -> QuantityResult {
         ToleranceKind::Absolute => (m.value - m.reference).abs(),
         ToleranceKind::Relative => (m.value - m.reference).abs() / m.reference.abs(),
         ToleranceKind::Below => (m.value - m.reference).max(0.0),
+        ToleranceKind::Between => ((m.value - m.reference).abs() - m.half_width).max(0.0),
     };
     let status = if error.is_finite() && error <= spec.tolerance {
         Status::Pass
@@ -272,6 +294,7 @@ fn judge(spec: &QuantitySpec, m: &Measured) -> QuantityResult {
         name: spec.name.clone(),
         value: m.value,
         reference: m.reference,
+        half_width: m.half_width,
         error,
         tolerance: spec.tolerance,
         tolerance_kind: spec.tolerance_kind,

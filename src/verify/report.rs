@@ -35,14 +35,19 @@ pub fn markdown(r: &VerificationReport) -> String {
                 ToleranceKind::Relative => "rel",
                 ToleranceKind::Absolute => "abs",
                 ToleranceKind::Below => "at most ref +",
+                ToleranceKind::Between => "outside the interval",
+            };
+            let reference = if q.half_width > 0.0 {
+                format!("{:.6e} ± {:.2e}", q.reference, q.half_width)
+            } else {
+                format!("{:.6e}", q.reference)
             };
             let _ = writeln!(
                 s,
-                "| {} | {} | {:.6e} | {:.6e} | {:.2e} | {:.1e} ({kind}) | {} | {} | {} | {:.2} |",
+                "| {} | {} | {:.6e} | {reference} | {:.2e} | {:.1e} ({kind}) | {} | {} | {} | {:.2} |",
                 c.name,
                 q.name,
                 q.value,
-                q.reference,
                 q.error,
                 q.tolerance,
                 q.unit,

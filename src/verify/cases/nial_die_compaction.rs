@@ -526,9 +526,14 @@ pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {
             1.0 - first.density_specimen * (solid - last.wall_lens_volume)
                 / (last.density_specimen * (solid - first.wall_lens_volume)),
         ),
-        Measured::new(
+        // The core cannot end looser than it began, nor densify more than the
+        // specimen as a whole: it starts densest (near random close packing), so the
+        // loose wall and top layers take more of the strain (measured: the core
+        // takes 43 % of the uniform share under Hertz).
+        Measured::between(
             "density_rve_at_50MPa_hertz",
             at(hertz, p_max, |r| r.density_rve)?,
+            rve0,
             rve0 * specimen.h0 / last.height,
         ),
         Measured::new(
