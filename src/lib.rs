@@ -17,6 +17,7 @@ pub mod measure;
 pub mod output;
 pub mod particles;
 pub mod process;
+pub mod quasistatic;
 pub mod run;
 pub mod scene;
 pub mod simulation;
