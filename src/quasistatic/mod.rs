@@ -7,6 +7,8 @@
 //! nothing with the explicit loop (docs/architecture.md).
 
 pub mod affine_yield;
+pub mod compaction;
+pub mod network;
 pub mod packing;
 
 pub use packing::{CylinderPacking, Vec2};

@@ -7,6 +7,7 @@ pub mod hertz;
 pub mod hysteretic;
 pub mod kuwabara_kono;
 pub mod linear;
+pub mod plastic_cylinder;
 pub mod storakers;
 pub mod walton_braun;
 

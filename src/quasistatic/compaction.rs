@@ -1,0 +1,90 @@
+//! Driving a network along a macroscopic strain path (Redanz & Fleck 2001 §2.4, §3):
+//! hydrostatic (Ė₁₁ = Ė₂₂, Ė₁₂ = 0) or closed die (Ė₂₂ < 0, Ė₁₁ = Ė₁₂ = 0), in
+//! equal strain increments, recording the stress–density and coordination curves
+//! (Figs 4–6).
+
+use super::affine_yield::Sym2;
+use super::network::Network;
+use crate::error::Result;
+use serde::Serialize;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub enum StrainPath {
+    Hydrostatic,
+    ClosedDie,
+}
+
+impl StrainPath {
+    /// The strain increment that changes the box area by the fraction `step`.
+    pub fn increment(self, step: f64) -> Sym2 {
+        match self {
+            StrainPath::Hydrostatic => {
+                let e = (1.0 - step).sqrt() - 1.0;
+                Sym2::new(e, e, 0.0)
+            }
+            StrainPath::ClosedDie => Sym2::new(0.0, -step, 0.0),
+        }
+    }
+}
+
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct CompactionRecord {
+    pub density: f64,
+    /// Σ/σ_y (eq 13).
+    pub stress_xx: f64,
+    pub stress_yy: f64,
+    pub stress_xy: f64,
+    pub coordination: f64,
+    pub sliding_fraction: f64,
+    pub iterations: usize,
+    pub residual: f64,
+}
+
+impl CompactionRecord {
+    fn of(net: &Network, iterations: usize, residual: f64) -> Self {
+        let s = net.stress();
+        let sy = net.settings.yield_stress;
+        CompactionRecord {
+            density: net.density(),
+            stress_xx: s.xx / sy,
+            stress_yy: s.yy / sy,
+            stress_xy: s.xy / sy,
+            coordination: net.coordination(),
+            sliding_fraction: net.sliding_fraction(),
+            iterations,
+            residual,
+        }
+    }
+}
+
+/// Compact until the density reaches `target`, each increment reducing the box area
+/// by the fraction `step` (the last one is shortened to land on `target`).
+pub fn compact(
+    net: &mut Network,
+    path: StrainPath,
+    step: f64,
+    target: f64,
+) -> Result<Vec<CompactionRecord>> {
+    let mut records = vec![CompactionRecord::of(net, 0, 0.0)];
+    while net.density() < target * (1.0 - 1e-12) {
+        // Area ratio needed to reach the target exactly.
+        let needed = 1.0 - net.density() / target;
+        let report = net.increment(path.increment(step.min(needed)))?;
+        records.push(CompactionRecord::of(net, report.iterations, report.residual));
+    }
+    Ok(records)
+}
+
+/// Linear interpolation of a record field at density `d` (records ascending in D).
+pub fn at_density(records: &[CompactionRecord], d: f64, field: fn(&CompactionRecord) -> f64) -> f64 {
+    let k = records
+        .windows(2)
+        .position(|w| w[0].density <= d && d <= w[1].density)
+        .unwrap_or(records.len().saturating_sub(2));
+    let (a, b) = (&records[k], &records[(k + 1).min(records.len() - 1)]);
+    if b.density == a.density {
+        return field(b);
+    }
+    let w = (d - a.density) / (b.density - a.density);
+    field(a) + w * (field(b) - field(a))
+}

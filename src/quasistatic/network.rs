@@ -1,0 +1,629 @@
+//! The quasi-static incremental stiffness solution of Redanz & Fleck (2001) §2.3–2.4:
+//! a network of cylinders (nodes with two displacements and a rotation) joined by
+//! rigid-plastic contact springs, driven by a prescribed macroscopic strain and kept
+//! in static equilibrium at every increment.
+//!
+//! **Kinematics (eqs 1, 5).** For a contact between cylinders i and j with unit
+//! normal n from i to j and tangent t = ẑ × n, the generalised displacement
+//! D = (xᵢ, yᵢ, θᵢ, xⱼ, yⱼ, θⱼ) gives
+//!
+//!   u̇_N = b_N·Ḋ,  b_N = ( n, 0, −n, 0),           (approach, eq 1)
+//!   u̇_T = b_T·Ḋ,  b_T = ( t, dᵢ, −t, dⱼ),          (slip of i on j, eq 5)
+//!
+//! with dᵢ the distance from centre i to the plane of contact.
+//!
+//! **Forces (eqs 2, 4, 6–9).** F_N from `contact::normal::plastic_cylinder` (eq 2 with
+//! elastic unloading, §3.4); F_T = k_T A_c u_T while it sticks (eq 6), capped at
+//! μF_N (eq 7) and at τ_y A_c with τ_y = σ_y/√3. The generalised force the contact
+//! needs from outside, the force that balances it at the nodes, is
+//!
+//!   f = F_N b_N + F_T b_T,
+//!
+//! which contains eqs 4, 8 and the moments of eq 9, M = −d F_T (the contact's own
+//! action on the nodes is −f).
+//!
+//! **Equilibrium (eqs 10–12).** Σ_contacts f = F^applied at every node. Nodes on which
+//! eqs 14–15 prescribe the displacement take any applied force; free nodes take none.
+//! Each increment ΔE of macroscopic strain moves the prescribed nodes by ΔE·x, starts
+//! the free nodes at the same affine guess, and then solves
+//!
+//!   K_ff ΔD_f = −r_f,   K = Σ_contacts (k_N b_N b_Nᵀ + k_T b_T b_Tᵀ),
+//!
+//! for the free nodes until their residual r_f (the unbalanced force) is below
+//! `tolerance` × the mean contact force. The paper integrates eq 12 by forward Euler
+//! with one solve per increment; tamp iterates within the increment with the forces
+//! always from the total-overlap law, so the stress–density curve does not drift with
+//! the increment size (the accuracy-cost study measures what the increment costs).
+//! K is the material stiffness of eq 11: a sliding contact contributes no tangential
+//! stiffness and the coupling Ḟ_T = ±μḞ_N is left to the iteration, which keeps K
+//! symmetric; a small diagonal `regularisation` makes it positive definite where
+//! particles are free to move (rattlers, floppy frictionless clusters). Both change
+//! the path to equilibrium, never the equilibrium itself.
+//!
+//! **Macroscopic stress (eq 13).** Σ_ij = (1/V) Σ_p F^applied_{p,i} x_{p,j}, summed over
+//! the prescribed nodes (free nodes carry no applied force), V the current box area.
+
+use super::affine_yield::Sym2;
+use super::packing::{CylinderPacking, Vec2};
+use crate::contact::normal::plastic_cylinder;
+use crate::error::{Result, TampError};
+use nalgebra::DVector;
+use nalgebra_sparse::{CooMatrix, CscMatrix, factorization::CscCholesky};
+use serde::Serialize;
+use std::collections::BTreeMap;
+
+/// The inter-particle friction law (§2.1.2).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub enum Friction {
+    Frictionless,
+    /// Coulomb coefficient μ, with the shear traction also capped at τ_y.
+    Coulomb(f64),
+    /// μ = ∞: only the τ_y cap limits the shear force.
+    Sticking,
+}
+
+/// Which cylinders follow the macroscopic strain (§2.4).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub enum Constraint {
+    /// The peripheral layer only ("die compaction" in the paper's words).
+    Die,
+    /// Every cylinder (affine motion).
+    Affine,
+}
+
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct NetworkSettings {
+    /// σ_y.
+    pub yield_stress: f64,
+    pub friction: Friction,
+    /// Whether interior cylinders may rotate (peripheral ones never do).
+    pub rotation: bool,
+    pub constraint: Constraint,
+    /// Unloading/reloading stiffness over loading stiffness (10³ in §3.4).
+    pub unloading_factor: f64,
+    /// k_T of eq 6: shear traction per unit slip (stress/length).
+    pub tangential_stiffness: f64,
+    /// The loading tangent is evaluated at no less than this overlap (it is infinite
+    /// at first touch).
+    pub stiffness_floor_overlap: f64,
+    /// Equilibrium: largest unbalanced force on a free node / mean contact force.
+    pub tolerance: f64,
+    pub max_iterations: usize,
+    /// Largest move of a node in one iteration (a damped Newton step).
+    pub max_step: f64,
+    /// Diagonal added to K, in units of σ_y (translations) and σ_y·R² (rotations).
+    pub regularisation: f64,
+}
+
+impl NetworkSettings {
+    /// The paper's settings for cylinders of radius ~R with yield stress σ_y.
+    pub fn redanz_fleck(
+        yield_stress: f64,
+        radius: f64,
+        friction: Friction,
+        rotation: bool,
+        constraint: Constraint,
+    ) -> Self {
+        NetworkSettings {
+            yield_stress,
+            friction,
+            rotation,
+            constraint,
+            unloading_factor: 1e3,
+            tangential_stiffness: 1e3 * yield_stress / radius,
+            stiffness_floor_overlap: 1e-6 * radius,
+            tolerance: 1e-6,
+            max_iterations: 400,
+            max_step: 0.02 * radius,
+            regularisation: 1e-8,
+        }
+    }
+}
+
+/// What a contact remembers between increments.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+struct ContactHistory {
+    max_overlap: f64,
+    /// F_T in the contact frame (positive opposes positive slip u_T of i on j).
+    tangential_force: f64,
+}
+
+/// A contact evaluated at trial positions.
+#[derive(Clone, Copy, Debug)]
+struct ContactState {
+    i: usize,
+    j: usize,
+    normal: Vec2,
+    d_i: f64,
+    d_j: f64,
+    normal_force: f64,
+    normal_stiffness: f64,
+    tangential_force: f64,
+    tangential_stiffness: f64,
+    max_overlap: f64,
+    sliding: bool,
+}
+
+/// Convergence record of one increment.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct IncrementReport {
+    pub iterations: usize,
+    /// Largest unbalanced force on a free node over the mean contact force.
+    pub residual: f64,
+}
+
+pub struct Network {
+    pub radii: Vec<f64>,
+    pub centres: Vec<Vec2>,
+    pub rotations: Vec<f64>,
+    /// Peripheral layer: prescribed in both modes, never rotates.
+    pub peripheral: Vec<bool>,
+    /// Current box [0, width] × [0, height] (deformed with the macroscopic strain).
+    pub width: f64,
+    pub height: f64,
+    pub settings: NetworkSettings,
+    /// Accumulated logarithmic-free (sum of increments) macroscopic strain.
+    pub strain: Sym2,
+    history: BTreeMap<(usize, usize), ContactHistory>,
+    /// Contacts at the last committed state.
+    contacts: Vec<ContactState>,
+    solid_area: f64,
+}
+
+impl Network {
+    pub fn new(packing: &CylinderPacking, settings: NetworkSettings) -> Self {
+        let peripheral = peripheral_layer(packing);
+        let mut net = Network {
+            radii: packing.radii.clone(),
+            centres: packing.centres.clone(),
+            rotations: vec![0.0; packing.len()],
+            peripheral,
+            width: packing.width,
+            height: packing.height,
+            settings,
+            strain: Sym2::new(0.0, 0.0, 0.0),
+            history: BTreeMap::new(),
+            contacts: Vec::new(),
+            solid_area: packing.solid_area(),
+        };
+        net.contacts = net.evaluate(&net.centres.clone(), &net.rotations.clone());
+        net
+    }
+
+    pub fn len(&self) -> usize {
+        self.radii.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.radii.is_empty()
+    }
+
+    pub fn area(&self) -> f64 {
+        self.width * self.height
+    }
+
+    /// Relative density D: cylinder area over box area.
+    pub fn density(&self) -> f64 {
+        self.solid_area / self.area()
+    }
+
+    /// Z: twice the contacts carrying force over the number of cylinders.
+    pub fn coordination(&self) -> f64 {
+        let n = self.contacts.iter().filter(|c| c.normal_force > 0.0).count();
+        2.0 * n as f64 / self.len() as f64
+    }
+
+    /// Whether node p's translation is prescribed.
+    fn prescribed(&self, p: usize) -> bool {
+        self.settings.constraint == Constraint::Affine || self.peripheral[p]
+    }
+
+    fn rotation_free(&self, p: usize) -> bool {
+        self.settings.rotation
+            && self.settings.friction != Friction::Frictionless
+            && !self.peripheral[p]
+    }
+
+    /// The generalised forces f = F_N b_N + F_T b_T summed per node: (fx, fy, m).
+    fn nodal_forces(&self, contacts: &[ContactState]) -> Vec<[f64; 3]> {
+        let mut f = vec![[0.0; 3]; self.len()];
+        for c in contacts {
+            let t = tangent(c.normal);
+            let v = c.normal * c.normal_force + t * c.tangential_force;
+            f[c.i][0] += v.x;
+            f[c.i][1] += v.y;
+            f[c.i][2] += c.d_i * c.tangential_force;
+            f[c.j][0] -= v.x;
+            f[c.j][1] -= v.y;
+            f[c.j][2] += c.d_j * c.tangential_force;
+        }
+        f
+    }
+
+    /// Eq 13 over the prescribed nodes.
+    pub fn stress(&self) -> Sym2 {
+        let f = self.nodal_forces(&self.contacts);
+        let mut s = Sym2::new(0.0, 0.0, 0.0);
+        for p in 0..self.len() {
+            if !self.prescribed(p) {
+                continue;
+            }
+            let x = self.centres[p];
+            s.xx += f[p][0] * x.x;
+            s.yy += f[p][1] * x.y;
+            s.xy += 0.5 * (f[p][0] * x.y + f[p][1] * x.x);
+        }
+        let v = self.area();
+        Sym2::new(s.xx / v, s.yy / v, s.xy / v)
+    }
+
+    /// The same stress from the contacts, −(1/V) Σ_c f_c ⊗ l_c with l_c = xⱼ − xᵢ:
+    /// equal to eq 13 when the free nodes are in equilibrium (a check, not a second
+    /// definition).
+    pub fn stress_from_contacts(&self) -> Sym2 {
+        let mut s = Sym2::new(0.0, 0.0, 0.0);
+        for c in &self.contacts {
+            let l = self.centres[c.j] - self.centres[c.i];
+            let f = c.normal * c.normal_force + tangent(c.normal) * c.tangential_force;
+            s.xx -= f.x * l.x;
+            s.yy -= f.y * l.y;
+            s.xy -= 0.5 * (f.x * l.y + f.y * l.x);
+        }
+        let v = self.area();
+        Sym2::new(s.xx / v, s.yy / v, s.xy / v)
+    }
+
+    /// Contact forces, stiffnesses and histories at trial positions and rotations,
+    /// from the committed histories.
+    fn evaluate(&self, centres: &[Vec2], rotations: &[f64]) -> Vec<ContactState> {
+        let s = &self.settings;
+        let mut out = Vec::new();
+        for (i, j) in overlapping_pairs(centres, &self.radii) {
+            let (ri, rj) = (self.radii[i], self.radii[j]);
+            let l = centres[j] - centres[i];
+            let dist = l.norm();
+            let normal = l / dist;
+            let overlap = ri + rj - dist;
+            let r_star = ri * rj / (ri + rj);
+            // Distances from the centres to the chord of the two circles.
+            let d_i = (dist * dist + ri * ri - rj * rj) / (2.0 * dist);
+            let d_j = dist - d_i;
+            let h = self.history.get(&(i, j)).copied().unwrap_or_default();
+            let n = plastic_cylinder::response(
+                overlap,
+                h.max_overlap,
+                r_star,
+                s.yield_stress,
+                s.unloading_factor,
+                s.stiffness_floor_overlap,
+            );
+            let width = plastic_cylinder::contact_width(n.max_overlap, r_star);
+            let (mut tangential_force, mut tangential_stiffness, mut sliding) = (0.0, 0.0, false);
+            if s.friction != Friction::Frictionless && n.force > 0.0 {
+                // Slip of i on j since the committed state (eq 5, secant normal).
+                let committed = self.committed_pair(i, j);
+                let t = tangent(normal);
+                let slip = ((centres[i] - committed.0) - (centres[j] - committed.1)).dot(&t)
+                    + d_i * (rotations[i] - self.rotations[i])
+                    + d_j * (rotations[j] - self.rotations[j]);
+                let k = s.tangential_stiffness * width;
+                let trial = h.tangential_force + k * slip;
+                let shear_cap = width * s.yield_stress / 3f64.sqrt();
+                let cap = match s.friction {
+                    Friction::Coulomb(mu) => (mu * n.force).min(shear_cap),
+                    _ => shear_cap,
+                };
+                if trial.abs() > cap {
+                    tangential_force = cap * trial.signum();
+                    sliding = true;
+                } else {
+                    tangential_force = trial;
+                    tangential_stiffness = k;
+                }
+            }
+            out.push(ContactState {
+                i,
+                j,
+                normal,
+                d_i,
+                d_j,
+                normal_force: n.force,
+                normal_stiffness: n.stiffness,
+                tangential_force,
+                tangential_stiffness,
+                max_overlap: n.max_overlap,
+                sliding,
+            });
+        }
+        out
+    }
+
+    fn committed_pair(&self, i: usize, j: usize) -> (Vec2, Vec2) {
+        (self.centres[i], self.centres[j])
+    }
+
+    /// One increment of macroscopic strain (eqs 14–15).
+    pub fn increment(&mut self, de: Sym2) -> Result<IncrementReport> {
+        let n = self.len();
+        let affine = |x: Vec2| Vec2::new(de.xx * x.x + de.xy * x.y, de.xy * x.x + de.yy * x.y);
+        let mut centres: Vec<Vec2> = self.centres.iter().map(|&x| x + affine(x)).collect();
+        let mut rotations = self.rotations.clone();
+
+        // Free DOFs, numbered bottom to top so K is banded.
+        let mut order: Vec<usize> = (0..n).collect();
+        order.sort_by(|&a, &b| {
+            self.centres[a]
+                .y
+                .total_cmp(&self.centres[b].y)
+                .then(self.centres[a].x.total_cmp(&self.centres[b].x))
+        });
+        let mut dof = vec![[usize::MAX; 3]; n];
+        let mut count = 0;
+        for &p in &order {
+            if !self.prescribed(p) {
+                dof[p][0] = count;
+                dof[p][1] = count + 1;
+                count += 2;
+            }
+            if self.rotation_free(p) {
+                dof[p][2] = count;
+                count += 1;
+            }
+        }
+
+        let mut report = IncrementReport {
+            iterations: 0,
+            residual: 0.0,
+        };
+        loop {
+            let contacts = self.evaluate(&centres, &rotations);
+            let forces = self.nodal_forces(&contacts);
+            let mean_force = contacts.iter().map(|c| c.normal_force).sum::<f64>()
+                / contacts.iter().filter(|c| c.normal_force > 0.0).count().max(1) as f64;
+            let scale = mean_force.max(f64::MIN_POSITIVE);
+            let mut residual = DVector::zeros(count);
+            let (mut worst, mut worst_node) = (0.0f64, usize::MAX);
+            for p in 0..n {
+                for a in 0..3 {
+                    if dof[p][a] != usize::MAX {
+                        // Moments are compared as forces at the cylinder's rim.
+                        let r = if a == 2 { forces[p][a] / self.radii[p] } else { forces[p][a] };
+                        residual[dof[p][a]] = forces[p][a];
+                        if r.abs() > worst {
+                            worst = r.abs();
+                            worst_node = p;
+                        }
+                    }
+                }
+            }
+            report.residual = worst / scale;
+            if !report.residual.is_finite() {
+                return Err(TampError::Other(format!(
+                    "quasi-static increment: non-finite residual at cylinder {worst_node}"
+                )));
+            }
+            if count == 0 || report.residual <= self.settings.tolerance {
+                self.commit(centres, rotations, contacts, de);
+                return Ok(report);
+            }
+            if report.iterations >= self.settings.max_iterations {
+                return Err(TampError::Other(format!(
+                    "quasi-static increment: no static equilibrium after {} iterations at \
+                     density {:.5}: cylinder {worst_node} (centre {:?}) has an unbalanced force \
+                     of {:.3e} × the mean contact force",
+                    report.iterations,
+                    self.density(),
+                    self.centres.get(worst_node).map(|c| (c.x, c.y)),
+                    report.residual
+                )));
+            }
+            let step = self.solve(&contacts, &dof, count, &residual)?;
+            for p in 0..n {
+                let mut dx = Vec2::zeros();
+                if dof[p][0] != usize::MAX {
+                    dx = Vec2::new(-step[dof[p][0]], -step[dof[p][1]]);
+                }
+                let mut dth = if dof[p][2] != usize::MAX {
+                    -step[dof[p][2]]
+                } else {
+                    0.0
+                };
+                let limit = self.settings.max_step;
+                let norm = dx.norm();
+                if norm > limit {
+                    dx *= limit / norm;
+                }
+                if (dth * self.radii[p]).abs() > limit {
+                    dth = limit / self.radii[p] * dth.signum();
+                }
+                centres[p] += dx;
+                rotations[p] += dth;
+            }
+            report.iterations += 1;
+        }
+    }
+
+    /// Assemble K_ff (plus the regularisation) and solve K Δ = r.
+    fn solve(
+        &self,
+        contacts: &[ContactState],
+        dof: &[[usize; 3]],
+        count: usize,
+        residual: &DVector<f64>,
+    ) -> Result<DVector<f64>> {
+        let mut coo = CooMatrix::new(count, count);
+        let s = &self.settings;
+        for p in 0..self.len() {
+            for a in 0..3 {
+                if dof[p][a] != usize::MAX {
+                    let r2 = if a == 2 { self.radii[p] * self.radii[p] } else { 1.0 };
+                    coo.push(dof[p][a], dof[p][a], s.regularisation * s.yield_stress * r2);
+                }
+            }
+        }
+        for c in contacts {
+            let t = tangent(c.normal);
+            let bn = [c.normal.x, c.normal.y, 0.0, -c.normal.x, -c.normal.y, 0.0];
+            let bt = [t.x, t.y, c.d_i, -t.x, -t.y, c.d_j];
+            let idx = [
+                dof[c.i][0], dof[c.i][1], dof[c.i][2], dof[c.j][0], dof[c.j][1], dof[c.j][2],
+            ];
+            for a in 0..6 {
+                if idx[a] == usize::MAX {
+                    continue;
+                }
+                for b in 0..6 {
+                    if idx[b] == usize::MAX {
+                        continue;
+                    }
+                    let k = c.normal_stiffness * bn[a] * bn[b]
+                        + c.tangential_stiffness * bt[a] * bt[b];
+                    if k != 0.0 {
+                        coo.push(idx[a], idx[b], k);
+                    }
+                }
+            }
+        }
+        let csc = CscMatrix::from(&coo);
+        let chol = CscCholesky::factor(&csc).map_err(|e| {
+            TampError::Other(format!(
+                "quasi-static stiffness is not positive definite ({e:?})"
+            ))
+        })?;
+        Ok(chol.solve(residual).column(0).into_owned())
+    }
+
+    fn commit(
+        &mut self,
+        centres: Vec<Vec2>,
+        rotations: Vec<f64>,
+        contacts: Vec<ContactState>,
+        de: Sym2,
+    ) {
+        // Contacts that separated keep their plastic history (they may touch again).
+        for c in &contacts {
+            self.history.insert(
+                (c.i, c.j),
+                ContactHistory {
+                    max_overlap: c.max_overlap,
+                    tangential_force: c.tangential_force,
+                },
+            );
+        }
+        let live: std::collections::BTreeSet<(usize, usize)> =
+            contacts.iter().map(|c| (c.i, c.j)).collect();
+        for (key, h) in self.history.iter_mut() {
+            if !live.contains(key) {
+                h.tangential_force = 0.0;
+            }
+        }
+        self.centres = centres;
+        self.rotations = rotations;
+        self.contacts = contacts;
+        self.width *= 1.0 + de.xx;
+        self.height *= 1.0 + de.yy;
+        self.strain.xx += de.xx;
+        self.strain.yy += de.yy;
+        self.strain.xy += de.xy;
+    }
+
+    /// Fraction of force-carrying contacts that slide.
+    pub fn sliding_fraction(&self) -> f64 {
+        let live: Vec<_> = self.contacts.iter().filter(|c| c.normal_force > 0.0).collect();
+        live.iter().filter(|c| c.sliding).count() as f64 / live.len().max(1) as f64
+    }
+}
+
+fn tangent(n: Vec2) -> Vec2 {
+    Vec2::new(-n.y, n.x)
+}
+
+/// Pairs (i < j) that overlap, ascending.
+fn overlapping_pairs(centres: &[Vec2], radii: &[f64]) -> Vec<(usize, usize)> {
+    let p = CylinderPacking {
+        width: 0.0,
+        height: 0.0,
+        centres: centres.to_vec(),
+        radii: radii.to_vec(),
+    };
+    p.touching_pairs(0.0)
+        .into_iter()
+        .filter(|&(i, j)| (centres[j] - centres[i]).norm() < radii[i] + radii[j])
+        .collect()
+}
+
+/// The peripheral layer of a deposited packing (§2.4, Fig 3): cylinders within half
+/// a radius of a side wall or the floor, and the top surface, the cylinders no other
+/// cylinder shadows from above.
+pub fn peripheral_layer(packing: &CylinderPacking) -> Vec<bool> {
+    let n = packing.len();
+    let mut out = vec![false; n];
+    for p in 0..n {
+        let (c, r) = (packing.centres[p], packing.radii[p]);
+        let near_wall =
+            c.x - r < 0.5 * r || packing.width - (c.x + r) < 0.5 * r || c.y - r < 0.5 * r;
+        let shadowed = (0..n).any(|q| {
+            q != p
+                && packing.centres[q].y > c.y
+                && (packing.centres[q].x - c.x).abs() < r + packing.radii[q]
+        });
+        out[p] = near_wall || !shadowed;
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+
+    /// Five unit cylinders in a horizontal row, the two ends prescribed.
+    fn chain(friction: Friction) -> Network {
+        let packing = CylinderPacking {
+            width: 10.0,
+            height: 2.0,
+            centres: (0..5).map(|k| Vec2::new(1.0 + 2.0 * k as f64, 1.0)).collect(),
+            radii: vec![1.0; 5],
+        };
+        let settings =
+            NetworkSettings::redanz_fleck(1.0, 1.0, friction, true, Constraint::Die);
+        let mut net = Network::new(&packing, settings);
+        net.peripheral = vec![true, false, false, false, true];
+        net
+    }
+
+    #[test]
+    fn a_compressed_chain_shares_the_shortening_equally_and_eq_13_matches_the_contacts() {
+        let mut net = chain(Friction::Frictionless);
+        for _ in 0..10 {
+            net.increment(Sym2::new(-1e-3, 0.0, 0.0)).unwrap();
+        }
+        let dist = net.centres[4].x - net.centres[0].x;
+        let overlap = (8.0 - dist) / 4.0;
+        for k in 0..4 {
+            let gap = net.centres[k + 1].x - net.centres[k].x;
+            assert_relative_eq!(2.0 - gap, overlap, max_relative = 1e-5);
+        }
+        let force = plastic_cylinder::loading_force(overlap, 0.5, 1.0);
+        let s = net.stress();
+        assert_relative_eq!(s.xx, -force * dist / net.area(), max_relative = 1e-5);
+        let c = net.stress_from_contacts();
+        assert_relative_eq!(s.xx, c.xx, max_relative = 1e-5);
+        assert_eq!(net.coordination(), 2.0 * 4.0 / 5.0);
+    }
+
+    #[test]
+    fn a_sticking_chain_under_shear_rolls_instead_of_sliding() {
+        // Shearing the row vertically (Ė₁₂) with free interior rotations: the interior
+        // cylinders roll so that the contacts stick with no net moment.
+        let mut net = chain(Friction::Sticking);
+        net.increment(Sym2::new(-2e-3, 0.0, 0.0)).unwrap();
+        net.increment(Sym2::new(0.0, 0.0, 1e-4)).unwrap();
+        for p in 1..4 {
+            assert!(net.rotations[p].is_finite());
+        }
+        let s = net.stress();
+        let c = net.stress_from_contacts();
+        assert_relative_eq!(s.xy, c.xy, max_relative = 1e-4, epsilon = 1e-12);
+    }
+}
