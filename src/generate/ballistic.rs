@@ -63,13 +63,13 @@ use rand_chacha::ChaCha8Rng;
 /// this (dimensionless, per unit path length) is treated as tangential, not
 /// entering. The same threshold serves both so the active-set choice and the path
 /// event search agree on which contacts are leaving.
-const TOL: f64 = 1e-9;
+pub(super) const TOL: f64 = 1e-9;
 
 /// Angles (rad) within this of the start of a path count as "now".
-const ANGLE_TOL: f64 = 1e-9;
+pub(super) const ANGLE_TOL: f64 = 1e-9;
 
 /// Events closer than this (rad) to the first one happen together.
-const SIMULTANEOUS: f64 = 1e-12;
+pub(super) const SIMULTANEOUS: f64 = 1e-12;
 
 /// A sphere needing more path segments than this is stuck in a numerical cycle;
 /// typical counts are below 20.
@@ -228,7 +228,7 @@ impl Arc {
 /// First φ in [0, end] where c₀ + a cos φ + b sin φ turns negative, or None.
 /// The function must be normalised so that its derivative is a dimensionless rate
 /// (compared with TOL) at the start of the path.
-fn first_entry(c0: f64, a: f64, b: f64, end: f64) -> Option<f64> {
+pub(super) fn first_entry(c0: f64, a: f64, b: f64, end: f64) -> Option<f64> {
     let r2 = a * a + b * b;
     if r2 == 0.0 || (c0 >= 0.0 && c0 * c0 >= r2) {
         return None; // f = c₀ + R cos(φ − ψ) never drops below zero

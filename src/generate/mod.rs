@@ -1,8 +1,10 @@
 //! Building blocks for generating initial particle packings: radius distributions,
-//! 3D ballistic deposition by steepest descent, and measurements on the result.
+//! 3D ballistic deposition by steepest descent, its 2D form for cylinders in a box,
+//! and measurements on the result.
 //! See docs/generation.md.
 
 pub mod ballistic;
+pub mod ballistic_2d;
 pub mod distribution;
 mod grid;
 pub mod measure;

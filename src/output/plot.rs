@@ -169,3 +169,52 @@ pub fn write_svg(path: &Path, panels: &[Panel]) -> Result<()> {
     }
     super::write_atomic(path, svg.as_bytes())
 }
+
+/// Line segments drawn to scale (equal units on both axes) over the box
+/// [x0, x1] × [y0, y1], with the box outlined: a contact network, one segment per
+/// contact between the centres it joins (Redanz & Fleck 2001 Fig 3).
+pub fn write_segments_svg(
+    path: &Path,
+    title: &str,
+    (x0, x1, y0, y1): (f64, f64, f64, f64),
+    segments: &[[(f64, f64); 2]],
+) -> Result<()> {
+    let mut svg = String::new();
+    {
+        // Equal units on both axes: the plot area is `side` pixels wide and
+        // side × aspect high, plus 50 px of y labels and margins of 10 px, and
+        // about 75 px of caption and x labels.
+        let side = 700u32;
+        let aspect = ((y1 - y0) / (x1 - x0)).clamp(0.1, 10.0);
+        let height = (side as f64 * aspect) as u32 + 75;
+        let root = SVGBackend::with_string(&mut svg, (side + 70, height)).into_drawing_area();
+        root.fill(&WHITE).map_err(draw_err)?;
+        let mut chart = ChartBuilder::on(&root)
+            .caption(title, ("sans-serif", 18))
+            .margin(10)
+            .x_label_area_size(30)
+            .y_label_area_size(50)
+            .build_cartesian_2d(x0..x1, y0..y1)
+            .map_err(draw_err)?;
+        chart
+            .configure_mesh()
+            .disable_mesh()
+            .draw()
+            .map_err(draw_err)?;
+        chart
+            .draw_series(std::iter::once(PathElement::new(
+                vec![(x0, y0), (x1, y0), (x1, y1), (x0, y1), (x0, y0)],
+                BLACK,
+            )))
+            .map_err(draw_err)?;
+        chart
+            .draw_series(
+                segments
+                    .iter()
+                    .map(|s| PathElement::new(vec![s[0], s[1]], BLUE.stroke_width(1))),
+            )
+            .map_err(draw_err)?;
+        root.present().map_err(draw_err)?;
+    }
+    super::write_atomic(path, svg.as_bytes())
+}

@@ -28,7 +28,10 @@ impl CylinderPacking {
 
     /// Σ π rᵢ², per unit depth.
     pub fn solid_area(&self) -> f64 {
-        self.radii.iter().map(|r| std::f64::consts::PI * r * r).sum()
+        self.radii
+            .iter()
+            .map(|r| std::f64::consts::PI * r * r)
+            .sum()
     }
 
     pub fn density(&self) -> f64 {
@@ -47,7 +50,9 @@ impl CylinderPacking {
         let (x0, y0) = self
             .centres
             .iter()
-            .fold((f64::INFINITY, f64::INFINITY), |(a, b), c| (a.min(c.x), b.min(c.y)));
+            .fold((f64::INFINITY, f64::INFINITY), |(a, b), c| {
+                (a.min(c.x), b.min(c.y))
+            });
         let key = |c: &Vec2| {
             (
                 ((c.x - x0) / cell).floor() as i64,
@@ -123,7 +128,10 @@ mod tests {
         assert_eq!(expected, 16);
         let interior = 4;
         assert_eq!(
-            pairs.iter().filter(|&&(i, j)| i == interior || j == interior).count(),
+            pairs
+                .iter()
+                .filter(|&&(i, j)| i == interior || j == interior)
+                .count(),
             6
         );
     }

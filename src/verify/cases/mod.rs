@@ -1,6 +1,7 @@
 //! The case registry: scene name → function. Adding a case = its JSON file in
 //! `verification/` + one file here + one line in `CASES`.
 
+mod ballistic_deposition_2d;
 mod binary_packing;
 mod density_segregation;
 mod energy_conservation_elastic;
@@ -54,6 +55,7 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("density_segregation", density_segregation::run),
     ("binary_packing_ratio10_quick", binary_packing::run),
     ("binary_packing_ratio10", binary_packing::run),
+    ("ballistic_deposition_2d", ballistic_deposition_2d::run),
     ("liggghts_settled_packing", liggghts_settled_packing::run),
     (
         "liggghts_three_sphere_trajectory",
