@@ -70,13 +70,21 @@ pub fn compact(
         // Area ratio needed to reach the target exactly.
         let needed = 1.0 - net.density() / target;
         let report = net.increment(path.increment(step.min(needed)))?;
-        records.push(CompactionRecord::of(net, report.iterations, report.residual));
+        records.push(CompactionRecord::of(
+            net,
+            report.iterations,
+            report.residual,
+        ));
     }
     Ok(records)
 }
 
 /// Linear interpolation of a record field at density `d` (records ascending in D).
-pub fn at_density(records: &[CompactionRecord], d: f64, field: fn(&CompactionRecord) -> f64) -> f64 {
+pub fn at_density(
+    records: &[CompactionRecord],
+    d: f64,
+    field: fn(&CompactionRecord) -> f64,
+) -> f64 {
     let k = records
         .windows(2)
         .position(|w| w[0].density <= d && d <= w[1].density)

@@ -40,6 +40,15 @@
 //! particles are free to move (rattlers, floppy frictionless clusters). Both change
 //! the path to equilibrium, never the equilibrium itself.
 //!
+//! **Status.** Affine compaction (every node prescribed) is verified by the cases
+//! `affine_closed_die_yield` and `affine_hydrostatic_yield`. With free nodes ("die"
+//! mode) the solver reaches equilibrium on small regular networks (unit tests) but
+//! not yet on deposited packings: a frictionless W = 20R deposit finds no equilibrium
+//! in 3000 iterations at its first increment (the loose deposit must rearrange before
+//! it carries load), and with friction the Coulomb and τ_y caps depend on the normal
+//! overlap, so the work is no potential and the step acceptance below stalls. No
+//! case uses die mode until that is solved (issue 6).
+//!
 //! **Macroscopic stress (eq 13).** Σ_ij = (1/V) Σ_p F^applied_{p,i} x_{p,j}, summed over
 //! the prescribed nodes (free nodes carry no applied force), V the current box area.
 
@@ -89,9 +98,12 @@ pub struct NetworkSettings {
     /// Equilibrium: largest unbalanced force on a free node / mean contact force.
     pub tolerance: f64,
     pub max_iterations: usize,
-    /// Largest move of a node in one iteration (a damped Newton step).
+    /// Largest move of a node in one iteration: a longer step is refused (λ raised)
+    /// so no cylinder can pass through a neighbour into a void of lower energy.
     pub max_step: f64,
-    /// Diagonal added to K, in units of σ_y (translations) and σ_y·R² (rotations).
+    /// The smallest Levenberg–Marquardt damping λ: each iteration solves
+    /// (K + λ(diag K + σ_y)) Δ = −r, raising λ ×4 when a step does not lower |r|
+    /// and lowering it ÷3 (to no less than this) when it does.
     pub regularisation: f64,
 }
 
@@ -113,8 +125,8 @@ impl NetworkSettings {
             tangential_stiffness: 1e3 * yield_stress / radius,
             stiffness_floor_overlap: 1e-6 * radius,
             tolerance: 1e-6,
-            max_iterations: 400,
-            max_step: 0.02 * radius,
+            max_iterations: 3000,
+            max_step: 0.05 * radius,
             regularisation: 1e-8,
         }
     }
@@ -142,6 +154,74 @@ struct ContactState {
     tangential_stiffness: f64,
     max_overlap: f64,
     sliding: bool,
+    /// Work done on the contact since the committed state: the potential whose
+    /// gradient is the nodal force (see `Network::increment`).
+    energy: f64,
+}
+
+struct Trial {
+    contacts: Vec<ContactState>,
+    residual: DVector<f64>,
+    worst: f64,
+    worst_node: usize,
+    scale: f64,
+}
+
+impl Trial {
+    fn energy(&self) -> f64 {
+        self.contacts.iter().map(|c| c.energy).sum()
+    }
+}
+
+/// ∫ F_N du_N from where the force last vanished, u₀ = u_max − F_max/k_u, to u: the
+/// elastic line ½k_u(u − u₀)² below u_max, plus the plastic work (2/3)C(u^{3/2} −
+/// u_max^{3/2}) above it (C = 3σ_y√(8R*)). Zero for a separated contact, so a
+/// contact entering or leaving the list does not jump the total.
+fn normal_energy(
+    overlap: f64,
+    max_overlap: f64,
+    effective_radius: f64,
+    yield_stress: f64,
+    unloading_factor: f64,
+    floor: f64,
+) -> f64 {
+    let c = 3.0 * yield_stress * (8.0 * effective_radius).sqrt();
+    let plastic = |u: f64| 2.0 / 3.0 * c * u.max(0.0).powf(1.5);
+    if max_overlap <= 0.0 {
+        return plastic(overlap);
+    }
+    let peak = plastic_cylinder::loading_force(max_overlap, effective_radius, yield_stress);
+    let k_u = unloading_factor
+        * plastic_cylinder::loading_stiffness(
+            max_overlap.max(floor),
+            effective_radius,
+            yield_stress,
+        );
+    let u0 = max_overlap - peak / k_u;
+    if overlap >= max_overlap {
+        0.5 * peak * peak / k_u + plastic(overlap) - plastic(max_overlap)
+    } else if overlap <= u0 {
+        0.0
+    } else {
+        0.5 * k_u * (overlap - u0) * (overlap - u0)
+    }
+}
+
+/// ∫₀^s clamp(F₀ + kσ, −cap, cap) dσ: the work of a stick–slip spring that starts at
+/// force F₀ and slips by s (a convex function of s for a fixed cap).
+fn clamped_spring_energy(start: f64, k: f64, cap: f64, slip: f64) -> f64 {
+    let f0 = start.clamp(-cap, cap);
+    let limit = if slip >= 0.0 { cap } else { -cap };
+    if k <= 0.0 {
+        return limit * slip;
+    }
+    let reach = (limit - f0) / k; // slip at which the cap is met, same sign as slip
+    let m = if slip >= 0.0 {
+        slip.min(reach)
+    } else {
+        slip.max(reach)
+    };
+    f0 * m + 0.5 * k * m * m + limit * (slip - m)
 }
 
 /// Convergence record of one increment.
@@ -209,7 +289,11 @@ impl Network {
 
     /// Z: twice the contacts carrying force over the number of cylinders.
     pub fn coordination(&self) -> f64 {
-        let n = self.contacts.iter().filter(|c| c.normal_force > 0.0).count();
+        let n = self
+            .contacts
+            .iter()
+            .filter(|c| c.normal_force > 0.0)
+            .count();
         2.0 * n as f64 / self.len() as f64
     }
 
@@ -244,14 +328,13 @@ impl Network {
     pub fn stress(&self) -> Sym2 {
         let f = self.nodal_forces(&self.contacts);
         let mut s = Sym2::new(0.0, 0.0, 0.0);
-        for p in 0..self.len() {
+        for (p, (fp, x)) in f.iter().zip(&self.centres).enumerate() {
             if !self.prescribed(p) {
                 continue;
             }
-            let x = self.centres[p];
-            s.xx += f[p][0] * x.x;
-            s.yy += f[p][1] * x.y;
-            s.xy += 0.5 * (f[p][0] * x.y + f[p][1] * x.x);
+            s.xx += fp[0] * x.x;
+            s.yy += fp[1] * x.y;
+            s.xy += 0.5 * (fp[0] * x.y + fp[1] * x.x);
         }
         let v = self.area();
         Sym2::new(s.xx / v, s.yy / v, s.xy / v)
@@ -298,6 +381,15 @@ impl Network {
                 s.stiffness_floor_overlap,
             );
             let width = plastic_cylinder::contact_width(n.max_overlap, r_star);
+            let energy_normal = normal_energy(
+                overlap,
+                h.max_overlap,
+                r_star,
+                s.yield_stress,
+                s.unloading_factor,
+                s.stiffness_floor_overlap,
+            );
+            let mut energy_tangential = 0.0;
             let (mut tangential_force, mut tangential_stiffness, mut sliding) = (0.0, 0.0, false);
             if s.friction != Friction::Frictionless && n.force > 0.0 {
                 // Slip of i on j since the committed state (eq 5, secant normal).
@@ -313,6 +405,7 @@ impl Network {
                     Friction::Coulomb(mu) => (mu * n.force).min(shear_cap),
                     _ => shear_cap,
                 };
+                energy_tangential = clamped_spring_energy(h.tangential_force, k, cap, slip);
                 if trial.abs() > cap {
                     tangential_force = cap * trial.signum();
                     sliding = true;
@@ -328,11 +421,19 @@ impl Network {
                 d_i,
                 d_j,
                 normal_force: n.force,
-                normal_stiffness: n.stiffness,
+                // On the loading branch K uses the secant F/u = 2 dF/du: Newton with the
+                // tangent of a √u law overshoots to separation whenever it starts from
+                // more than 4× the equilibrium overlap, the secant never does.
+                normal_stiffness: if overlap >= h.max_overlap {
+                    n.force / overlap.max(s.stiffness_floor_overlap)
+                } else {
+                    n.stiffness
+                },
                 tangential_force,
                 tangential_stiffness,
                 max_overlap: n.max_overlap,
                 sliding,
+                energy: energy_normal + energy_tangential,
             });
         }
         out
@@ -375,71 +476,126 @@ impl Network {
             iterations: 0,
             residual: 0.0,
         };
+        let mut trial = self.trial(&centres, &rotations, &dof, count);
+        // Levenberg–Marquardt damping λ, in units of the diagonal of K.
+        let mut lambda = self.settings.regularisation;
         loop {
-            let contacts = self.evaluate(&centres, &rotations);
-            let forces = self.nodal_forces(&contacts);
-            let mean_force = contacts.iter().map(|c| c.normal_force).sum::<f64>()
-                / contacts.iter().filter(|c| c.normal_force > 0.0).count().max(1) as f64;
-            let scale = mean_force.max(f64::MIN_POSITIVE);
-            let mut residual = DVector::zeros(count);
-            let (mut worst, mut worst_node) = (0.0f64, usize::MAX);
-            for p in 0..n {
-                for a in 0..3 {
-                    if dof[p][a] != usize::MAX {
-                        // Moments are compared as forces at the cylinder's rim.
-                        let r = if a == 2 { forces[p][a] / self.radii[p] } else { forces[p][a] };
-                        residual[dof[p][a]] = forces[p][a];
-                        if r.abs() > worst {
-                            worst = r.abs();
-                            worst_node = p;
-                        }
-                    }
-                }
-            }
-            report.residual = worst / scale;
-            if !report.residual.is_finite() {
+            report.residual = trial.worst / trial.scale;
+            if !report.residual.is_finite() || trial.worst.is_nan() {
                 return Err(TampError::Other(format!(
-                    "quasi-static increment: non-finite residual at cylinder {worst_node}"
+                    "quasi-static increment: non-finite residual at cylinder {}",
+                    trial.worst_node
                 )));
             }
             if count == 0 || report.residual <= self.settings.tolerance {
-                self.commit(centres, rotations, contacts, de);
+                self.commit(centres, rotations, trial.contacts, de);
                 return Ok(report);
             }
             if report.iterations >= self.settings.max_iterations {
                 return Err(TampError::Other(format!(
                     "quasi-static increment: no static equilibrium after {} iterations at \
-                     density {:.5}: cylinder {worst_node} (centre {:?}) has an unbalanced force \
-                     of {:.3e} × the mean contact force",
+                     density {:.5}: cylinder {} (centre {:?}) has an unbalanced force of \
+                     {:.3e} × the mean contact force",
                     report.iterations,
                     self.density(),
-                    self.centres.get(worst_node).map(|c| (c.x, c.y)),
+                    trial.worst_node,
+                    centres.get(trial.worst_node).map(|c| (c.x, c.y)),
                     report.residual
                 )));
             }
-            let step = self.solve(&contacts, &dof, count, &residual)?;
-            for p in 0..n {
-                let mut dx = Vec2::zeros();
-                if dof[p][0] != usize::MAX {
-                    dx = Vec2::new(-step[dof[p][0]], -step[dof[p][1]]);
-                }
-                let mut dth = if dof[p][2] != usize::MAX {
-                    -step[dof[p][2]]
-                } else {
-                    0.0
-                };
-                let limit = self.settings.max_step;
-                let norm = dx.norm();
-                if norm > limit {
-                    dx *= limit / norm;
-                }
-                if (dth * self.radii[p]).abs() > limit {
-                    dth = limit / self.radii[p] * dth.signum();
-                }
-                centres[p] += dx;
-                rotations[p] += dth;
-            }
             report.iterations += 1;
+            let step = self.solve(&trial.contacts, &dof, count, &trial.residual, lambda)?;
+            if step.iter().any(|v| !v.is_finite()) {
+                return Err(TampError::Other(format!(
+                    "quasi-static increment: the stiffness solve gave a non-finite step \
+                     (iteration {}, λ = {lambda:e})",
+                    report.iterations
+                )));
+            }
+            let longest = (0..n)
+                .map(|p| {
+                    let t = if dof[p][0] != usize::MAX {
+                        step[dof[p][0]].hypot(step[dof[p][1]])
+                    } else {
+                        0.0
+                    };
+                    let r = if dof[p][2] != usize::MAX {
+                        (step[dof[p][2]] * self.radii[p]).abs()
+                    } else {
+                        0.0
+                    };
+                    t.max(r)
+                })
+                .fold(0.0, f64::max);
+            if longest > self.settings.max_step {
+                lambda *= 4.0;
+                continue;
+            }
+            let (mut next_centres, mut next_rotations) = (centres.clone(), rotations.clone());
+            for p in 0..n {
+                if dof[p][0] != usize::MAX {
+                    next_centres[p] -= Vec2::new(step[dof[p][0]], step[dof[p][1]]);
+                }
+                if dof[p][2] != usize::MAX {
+                    next_rotations[p] -= step[dof[p][2]];
+                }
+            }
+            let next = self.trial(&next_centres, &next_rotations, &dof, count);
+            let (e0, e1) = (trial.energy(), next.energy());
+            let lower = e1 < e0
+                || (e1 <= e0 + 1e-13 * e0.abs() && next.residual.norm() < trial.residual.norm());
+            if lower {
+                centres = next_centres;
+                rotations = next_rotations;
+                trial = next;
+                lambda = (lambda / 3.0).max(self.settings.regularisation);
+            } else {
+                lambda *= 4.0;
+            }
+        }
+    }
+
+    /// Contacts, residual and its largest entry at trial positions.
+    fn trial(
+        &self,
+        centres: &[Vec2],
+        rotations: &[f64],
+        dof: &[[usize; 3]],
+        count: usize,
+    ) -> Trial {
+        let contacts = self.evaluate(centres, rotations);
+        let forces = self.nodal_forces(&contacts);
+        let live = contacts
+            .iter()
+            .filter(|c| c.normal_force > 0.0)
+            .count()
+            .max(1);
+        let mean_force = contacts.iter().map(|c| c.normal_force).sum::<f64>() / live as f64;
+        let mut residual = DVector::zeros(count);
+        let (mut worst, mut worst_node) = (0.0f64, usize::MAX);
+        for p in 0..self.len() {
+            for a in 0..3 {
+                if dof[p][a] != usize::MAX {
+                    residual[dof[p][a]] = forces[p][a];
+                    // Moments are compared as forces at the cylinder's rim.
+                    let r = if a == 2 {
+                        forces[p][a] / self.radii[p]
+                    } else {
+                        forces[p][a]
+                    };
+                    if r.abs() > worst || r.is_nan() {
+                        worst = r.abs();
+                        worst_node = p;
+                    }
+                }
+            }
+        }
+        Trial {
+            contacts,
+            residual,
+            worst,
+            worst_node,
+            scale: mean_force.max(f64::MIN_POSITIVE),
         }
     }
 
@@ -450,14 +606,37 @@ impl Network {
         dof: &[[usize; 3]],
         count: usize,
         residual: &DVector<f64>,
+        lambda: f64,
     ) -> Result<DVector<f64>> {
         let mut coo = CooMatrix::new(count, count);
         let s = &self.settings;
-        for p in 0..self.len() {
-            for a in 0..3 {
-                if dof[p][a] != usize::MAX {
-                    let r2 = if a == 2 { self.radii[p] * self.radii[p] } else { 1.0 };
-                    coo.push(dof[p][a], dof[p][a], s.regularisation * s.yield_stress * r2);
+        // Marquardt's scaling: λ times the diagonal of K, plus λσ_y (σ_y R² for
+        // rotations) so a node with no stiffness still has a finite, small step.
+        let mut diagonal = vec![0.0; count];
+        for c in contacts {
+            let t = tangent(c.normal);
+            let bn = [c.normal.x, c.normal.y, 0.0, -c.normal.x, -c.normal.y, 0.0];
+            let bt = [t.x, t.y, c.d_i, -t.x, -t.y, c.d_j];
+            let idx = [
+                dof[c.i][0],
+                dof[c.i][1],
+                dof[c.i][2],
+                dof[c.j][0],
+                dof[c.j][1],
+                dof[c.j][2],
+            ];
+            for a in 0..6 {
+                if idx[a] != usize::MAX {
+                    diagonal[idx[a]] +=
+                        c.normal_stiffness * bn[a] * bn[a] + c.tangential_stiffness * bt[a] * bt[a];
+                }
+            }
+        }
+        for (node, r) in dof.iter().zip(&self.radii) {
+            for (a, &d) in node.iter().enumerate() {
+                if d != usize::MAX {
+                    let r2 = if a == 2 { r * r } else { 1.0 };
+                    coo.push(d, d, lambda * (diagonal[d] + s.yield_stress * r2));
                 }
             }
         }
@@ -466,7 +645,12 @@ impl Network {
             let bn = [c.normal.x, c.normal.y, 0.0, -c.normal.x, -c.normal.y, 0.0];
             let bt = [t.x, t.y, c.d_i, -t.x, -t.y, c.d_j];
             let idx = [
-                dof[c.i][0], dof[c.i][1], dof[c.i][2], dof[c.j][0], dof[c.j][1], dof[c.j][2],
+                dof[c.i][0],
+                dof[c.i][1],
+                dof[c.i][2],
+                dof[c.j][0],
+                dof[c.j][1],
+                dof[c.j][2],
             ];
             for a in 0..6 {
                 if idx[a] == usize::MAX {
@@ -476,8 +660,8 @@ impl Network {
                     if idx[b] == usize::MAX {
                         continue;
                     }
-                    let k = c.normal_stiffness * bn[a] * bn[b]
-                        + c.tangential_stiffness * bt[a] * bt[b];
+                    let k =
+                        c.normal_stiffness * bn[a] * bn[b] + c.tangential_stiffness * bt[a] * bt[b];
                     if k != 0.0 {
                         coo.push(idx[a], idx[b], k);
                     }
@@ -527,9 +711,28 @@ impl Network {
         self.strain.xy += de.xy;
     }
 
+    /// (normal n from i to j, branch l = xⱼ − xᵢ, F_N) of every force-carrying contact.
+    pub fn contact_forces(&self) -> Vec<(Vec2, Vec2, f64)> {
+        self.contacts
+            .iter()
+            .filter(|c| c.normal_force > 0.0)
+            .map(|c| {
+                (
+                    c.normal,
+                    self.centres[c.j] - self.centres[c.i],
+                    c.normal_force,
+                )
+            })
+            .collect()
+    }
+
     /// Fraction of force-carrying contacts that slide.
     pub fn sliding_fraction(&self) -> f64 {
-        let live: Vec<_> = self.contacts.iter().filter(|c| c.normal_force > 0.0).collect();
+        let live: Vec<_> = self
+            .contacts
+            .iter()
+            .filter(|c| c.normal_force > 0.0)
+            .collect();
         live.iter().filter(|c| c.sliding).count() as f64 / live.len().max(1) as f64
     }
 }
@@ -557,19 +760,19 @@ fn overlapping_pairs(centres: &[Vec2], radii: &[f64]) -> Vec<(usize, usize)> {
 /// cylinder shadows from above.
 pub fn peripheral_layer(packing: &CylinderPacking) -> Vec<bool> {
     let n = packing.len();
-    let mut out = vec![false; n];
-    for p in 0..n {
-        let (c, r) = (packing.centres[p], packing.radii[p]);
-        let near_wall =
-            c.x - r < 0.5 * r || packing.width - (c.x + r) < 0.5 * r || c.y - r < 0.5 * r;
-        let shadowed = (0..n).any(|q| {
-            q != p
-                && packing.centres[q].y > c.y
-                && (packing.centres[q].x - c.x).abs() < r + packing.radii[q]
-        });
-        out[p] = near_wall || !shadowed;
-    }
-    out
+    (0..n)
+        .map(|p| {
+            let (c, r) = (packing.centres[p], packing.radii[p]);
+            let near_wall =
+                c.x - r < 0.5 * r || packing.width - (c.x + r) < 0.5 * r || c.y - r < 0.5 * r;
+            let shadowed = (0..n).any(|q| {
+                q != p
+                    && packing.centres[q].y > c.y
+                    && (packing.centres[q].x - c.x).abs() < r + packing.radii[q]
+            });
+            near_wall || !shadowed
+        })
+        .collect()
 }
 
 #[cfg(test)]
@@ -582,11 +785,12 @@ mod tests {
         let packing = CylinderPacking {
             width: 10.0,
             height: 2.0,
-            centres: (0..5).map(|k| Vec2::new(1.0 + 2.0 * k as f64, 1.0)).collect(),
+            centres: (0..5)
+                .map(|k| Vec2::new(1.0 + 2.0 * k as f64, 1.0))
+                .collect(),
             radii: vec![1.0; 5],
         };
-        let settings =
-            NetworkSettings::redanz_fleck(1.0, 1.0, friction, true, Constraint::Die);
+        let settings = NetworkSettings::redanz_fleck(1.0, 1.0, friction, true, Constraint::Die);
         let mut net = Network::new(&packing, settings);
         net.peripheral = vec![true, false, false, false, true];
         net

@@ -103,8 +103,8 @@ mod tests {
         let (r_star, sy) = (0.4, 2.0);
         for u in [1e-6, 1e-4, 1e-2] {
             let h = u * 1e-6;
-            let fd = (loading_force(u + h, r_star, sy) - loading_force(u - h, r_star, sy))
-                / (2.0 * h);
+            let fd =
+                (loading_force(u + h, r_star, sy) - loading_force(u - h, r_star, sy)) / (2.0 * h);
             assert_relative_eq!(loading_stiffness(u, r_star, sy), fd, max_relative = 1e-7);
         }
     }
@@ -113,7 +113,11 @@ mod tests {
     fn equal_radii_agree_with_the_papers_eq_3() {
         let (r, sy, u) = (1.0_f64, 1.0_f64, 1e-3_f64);
         let paper = 3.0 * sy * ((r + r) / (2.0 * u)).sqrt();
-        assert_relative_eq!(loading_stiffness(u, 0.5 * r, sy), paper, max_relative = 1e-15);
+        assert_relative_eq!(
+            loading_stiffness(u, 0.5 * r, sy),
+            paper,
+            max_relative = 1e-15
+        );
     }
 
     #[test]

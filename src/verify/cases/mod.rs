@@ -1,6 +1,7 @@
 //! The case registry: scene name → function. Adding a case = its JSON file in
 //! `verification/` + one file here + one line in `CASES`.
 
+mod affine_yield_2d;
 mod ballistic_deposition_2d;
 mod binary_packing;
 mod density_segregation;
@@ -56,6 +57,8 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("binary_packing_ratio10_quick", binary_packing::run),
     ("binary_packing_ratio10", binary_packing::run),
     ("ballistic_deposition_2d", ballistic_deposition_2d::run),
+    ("affine_closed_die_yield", affine_yield_2d::closed_die),
+    ("affine_hydrostatic_yield", affine_yield_2d::hydrostatic),
     ("liggghts_settled_packing", liggghts_settled_packing::run),
     (
         "liggghts_three_sphere_trajectory",
