@@ -96,6 +96,18 @@ pub fn write_checkpoint(path: &Path, checkpoint: &impl Serialize) -> Result<()> 
     crate::output::write_atomic(path, &json)
 }
 
+/// `--resume` needs checkpoints to resume from: refuse it (bad input) when the scene's
+/// `output.checkpoint_every` is 0.
+pub fn require_checkpoints_for_resume(resume: bool, checkpoint_every: u64) -> Result<()> {
+    if resume && checkpoint_every == 0 {
+        return Err(TampError::input(
+            "output.checkpoint_every",
+            "must be > 0 with --resume: a run that writes no checkpoint has nothing to resume from",
+        ));
+    }
+    Ok(())
+}
+
 /// Read a checkpoint written by `write_checkpoint`. A file that does not parse is bad
 /// input (exit 2); the error names the JSON path where it stopped.
 pub fn read_checkpoint<T: DeserializeOwned>(path: &Path) -> Result<T> {

@@ -4,7 +4,7 @@
 //! uninterrupted run writes, byte for byte (see `checkpoint`).
 
 use crate::checkpoint::{self, Checkpoint, SimState};
-use crate::error::{Result, TampError};
+use crate::error::Result;
 use crate::output::{self, Provenance, series::Series, summary::Summary};
 use crate::scene;
 use crate::simulation::Simulation;
@@ -50,12 +50,7 @@ fn write_frame(vtk_dir: &Path, index: usize, sim: &Simulation) -> Result<()> {
 pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool, resume: bool) -> Result<Summary> {
     let (scene, sha) = scene::load(scene_path)?;
     let checkpoint_every = scene.output.checkpoint_every;
-    if resume && checkpoint_every == 0 {
-        return Err(TampError::input(
-            "output.checkpoint_every",
-            "must be > 0 with --resume: a run that writes no checkpoint has nothing to resume from",
-        ));
-    }
+    crate::checkpoint::require_checkpoints_for_resume(resume, checkpoint_every)?;
     let built = scene::build(&scene)?;
     for w in &built.warnings {
         eprintln!("warning: {w}");

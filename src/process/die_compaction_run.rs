@@ -44,12 +44,7 @@ pub fn run_scene(
 ) -> Result<CompactionSummary> {
     let (scene, sha) = crate::scene::load(scene_path)?;
     let every = scene.output.checkpoint_every;
-    if resume && every == 0 {
-        return Err(TampError::input(
-            "output.checkpoint_every",
-            "must be > 0 with --resume: a run that writes no checkpoint has nothing to resume from",
-        ));
-    }
+    crate::checkpoint::require_checkpoints_for_resume(resume, every)?;
     output::create_dir(out_dir)?;
     let specimen_path = out_dir.join("specimen.json");
     let checkpoint_path = out_dir.join("checkpoint.json");
