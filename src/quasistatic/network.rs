@@ -159,6 +159,20 @@ struct ContactState {
     energy: f64,
 }
 
+impl ContactState {
+    /// b_N, b_T of eqs 1 and 5 and the free-DOF numbers of (xᵢ, yᵢ, θᵢ, xⱼ, yⱼ, θⱼ)
+    /// (`usize::MAX` where prescribed).
+    fn rows(&self, dof: &[[usize; 3]]) -> ([f64; 6], [f64; 6], [usize; 6]) {
+        let (n, t) = (self.normal, tangent(self.normal));
+        let (a, b) = (dof[self.i], dof[self.j]);
+        (
+            [n.x, n.y, 0.0, -n.x, -n.y, 0.0],
+            [t.x, t.y, self.d_i, -t.x, -t.y, self.d_j],
+            [a[0], a[1], a[2], b[0], b[1], b[2]],
+        )
+    }
+}
+
 struct Trial {
     contacts: Vec<ContactState>,
     residual: DVector<f64>,
@@ -614,17 +628,7 @@ impl Network {
         // rotations) so a node with no stiffness still has a finite, small step.
         let mut diagonal = vec![0.0; count];
         for c in contacts {
-            let t = tangent(c.normal);
-            let bn = [c.normal.x, c.normal.y, 0.0, -c.normal.x, -c.normal.y, 0.0];
-            let bt = [t.x, t.y, c.d_i, -t.x, -t.y, c.d_j];
-            let idx = [
-                dof[c.i][0],
-                dof[c.i][1],
-                dof[c.i][2],
-                dof[c.j][0],
-                dof[c.j][1],
-                dof[c.j][2],
-            ];
+            let (bn, bt, idx) = c.rows(dof);
             for a in 0..6 {
                 if idx[a] != usize::MAX {
                     diagonal[idx[a]] +=
@@ -641,17 +645,7 @@ impl Network {
             }
         }
         for c in contacts {
-            let t = tangent(c.normal);
-            let bn = [c.normal.x, c.normal.y, 0.0, -c.normal.x, -c.normal.y, 0.0];
-            let bt = [t.x, t.y, c.d_i, -t.x, -t.y, c.d_j];
-            let idx = [
-                dof[c.i][0],
-                dof[c.i][1],
-                dof[c.i][2],
-                dof[c.j][0],
-                dof[c.j][1],
-                dof[c.j][2],
-            ];
+            let (bn, bt, idx) = c.rows(dof);
             for a in 0..6 {
                 if idx[a] == usize::MAX {
                     continue;
