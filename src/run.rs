@@ -5,15 +5,13 @@
 
 use crate::checkpoint::{self, Checkpoint, SimState};
 use crate::error::Result;
+use crate::output::progress::Progress;
 use crate::output::{self, Provenance, series::Series, summary::Summary};
 use crate::scene;
 use crate::simulation::Simulation;
-use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use serde::{Deserialize, Serialize};
 use std::borrow::Cow;
-use std::io::IsTerminal;
 use std::path::Path;
-use std::time::{Duration, Instant};
 
 /// What a resumed run needs besides the simulation to write the same files as an
 /// uninterrupted one: everything the outputs have accumulated so far. Borrowed when
@@ -114,16 +112,8 @@ pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool, resume: bool) -
         }
     }
 
-    // The bar appears only for runs longer than a second on an interactive terminal.
-    let bar = ProgressBar::with_draw_target(Some(built.steps), ProgressDrawTarget::hidden());
-    bar.set_style(
-        ProgressStyle::with_template("{bar:40} {pos}/{len} steps  {elapsed} elapsed, ETA {eta}")
-            .expect("static template"),
-    );
-    bar.set_position(sim.step);
-    let show_bar = !quiet && std::io::stderr().is_terminal();
-    let started = Instant::now();
-    let mut shown = false;
+    let mut progress = Progress::new("steps", built.steps, quiet);
+    progress.set(sim.step);
     while sim.step < built.steps {
         sim.step()?;
         if sim.step % every == 0 {
@@ -146,14 +136,10 @@ pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool, resume: bool) -
             checkpoint::write_checkpoint(&checkpoint_path, &Checkpoint::new(&sha, state))?;
         }
         if sim.step % 256 == 0 {
-            if show_bar && !shown && started.elapsed() > Duration::from_secs(1) {
-                bar.set_draw_target(ProgressDrawTarget::stderr());
-                shown = true;
-            }
-            bar.set_position(sim.step);
+            progress.set(sim.step);
         }
     }
-    bar.finish_and_clear();
+    progress.finish();
     if sim.step % every != 0 {
         series.record(&sim);
     }
