@@ -459,7 +459,7 @@ fn gauss_legendre() -> &'static [(f64, f64)] {
 }
 
 /// Gauss–Legendre nodes and weights on [0, 1], by Newton iteration on P_n.
-fn legendre_rule(n: usize) -> Vec<(f64, f64)> {
+pub(crate) fn legendre_rule(n: usize) -> Vec<(f64, f64)> {
     (0..n)
         .map(|i| {
             let mut x = (PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();

@@ -110,7 +110,7 @@ pub fn yield_stress(
     cuts.sort_by(f64::total_cmp);
     cuts.dedup_by(|x, y| (*x - *y).abs() < 1e-15);
 
-    let (nodes, weights) = gauss_legendre_16();
+    let rule = crate::measure::region::legendre_rule(16);
     let mut out = Sym2::new(0.0, 0.0, 0.0);
     for w in cuts.windows(2) {
         let (lo, hi) = (w[0], w[1]);
@@ -123,13 +123,12 @@ pub fn yield_stress(
         let sub = 8;
         for k in 0..sub {
             let a0 = lo + (hi - lo) * k as f64 / sub as f64;
-            let h = 0.5 * (hi - lo) / sub as f64;
-            let m = a0 + h;
-            for (x, wt) in nodes.iter().zip(weights.iter()) {
-                let phi = m + h * x;
+            let width = (hi - lo) / sub as f64;
+            for &(x, wt) in &rule {
+                let phi = a0 + width * x;
                 let size = (-2.0 * strain.normal_component(phi)).max(0.0).sqrt();
                 let (s, cs) = phi.sin_cos();
-                let f = wt * h * size;
+                let f = wt * width * size;
                 out.xx += f * cs * cs;
                 out.yy += f * s * s;
                 out.xy += f * s * cs;
@@ -192,34 +191,6 @@ pub fn hydrostatic_yield(
     }
 }
 
-/// 16-point Gauss–Legendre nodes and weights on [−1, 1], by Newton on P₁₆.
-fn gauss_legendre_16() -> ([f64; 16], [f64; 16]) {
-    let n = 16;
-    let mut x = [0.0; 16];
-    let mut w = [0.0; 16];
-    for i in 0..n {
-        let mut z = (PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
-        let mut dp = 0.0;
-        for _ in 0..100 {
-            let (mut p0, mut p1) = (1.0, z);
-            for k in 2..=n {
-                let p2 = ((2 * k - 1) as f64 * z * p1 - (k - 1) as f64 * p0) / k as f64;
-                p0 = p1;
-                p1 = p2;
-            }
-            dp = n as f64 * (z * p1 - p0) / (z * z - 1.0);
-            let dz = p1 / dp;
-            z -= dz;
-            if dz.abs() < 1e-16 {
-                break;
-            }
-        }
-        x[i] = z;
-        w[i] = 2.0 / ((1.0 - z * z) * dp * dp);
-    }
-    (x, w)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -229,43 +200,38 @@ mod tests {
     const Z: f64 = 4.1;
     const SY: f64 = 1.0;
 
-    #[test]
-    fn quadrature_reproduces_the_closed_die_closed_forms_a7_to_a12() {
-        let e22 = -0.02;
-        let strain = Sym2::new(0.0, e22, 0.0);
-        for deg in (0..360).step_by(5) {
+    /// Probing directions every 5°, except pure dilatation (which unloads every
+    /// contact), with exact zeros on the axes: sin π = 1.2e-16 would be a (legitimate
+    /// but ill-conditioned) mixed-sign direction.
+    fn directions() -> impl Iterator<Item = (f64, f64)> {
+        let clean = |v: f64| if v.abs() < 1e-12 { 0.0 } else { v };
+        (0..360).step_by(5).filter_map(move |deg| {
             let t = (deg as f64).to_radians();
-            // Exact zeros on the axes: sin π = 1.2e-16 would be a (legitimate but
-            // ill-conditioned) mixed-sign direction.
-            let clean = |v: f64| if v.abs() < 1e-12 { 0.0 } else { v };
             let (r11, r22) = (clean(t.cos()), clean(t.sin()));
-            if r11 > 0.0 && r22 > 0.0 {
-                continue;
-            }
-            let q = yield_stress(strain, Sym2::new(r11, r22, 0.0), D, Z, SY);
-            let (s11, s22) = closed_die_yield(e22, r11, r22, D, Z, SY);
-            assert_relative_eq!(q.xx, s11, epsilon = 1e-12, max_relative = 1e-10);
-            assert_relative_eq!(q.yy, s22, epsilon = 1e-12, max_relative = 1e-10);
-        }
+            (r11 <= 0.0 || r22 <= 0.0).then_some((r11, r22))
+        })
     }
 
     #[test]
-    fn quadrature_reproduces_the_hydrostatic_closed_forms() {
+    fn quadrature_reproduces_the_closed_forms() {
         let e = -0.02;
-        let strain = Sym2::new(e, e, 0.0);
-        for deg in (0..360).step_by(5) {
-            let t = (deg as f64).to_radians();
-            // Exact zeros on the axes: sin π = 1.2e-16 would be a (legitimate but
-            // ill-conditioned) mixed-sign direction.
-            let clean = |v: f64| if v.abs() < 1e-12 { 0.0 } else { v };
-            let (r11, r22) = (clean(t.cos()), clean(t.sin()));
-            if r11 > 0.0 && r22 > 0.0 {
-                continue;
+        for (r11, r22) in directions() {
+            let rate = Sym2::new(r11, r22, 0.0);
+            let cases = [
+                (
+                    Sym2::new(0.0, e, 0.0),
+                    closed_die_yield(e, r11, r22, D, Z, SY),
+                ),
+                (
+                    Sym2::new(e, e, 0.0),
+                    hydrostatic_yield(e, r11, r22, D, Z, SY),
+                ),
+            ];
+            for (strain, (s11, s22)) in cases {
+                let q = yield_stress(strain, rate, D, Z, SY);
+                assert_relative_eq!(q.xx, s11, epsilon = 1e-12, max_relative = 1e-10);
+                assert_relative_eq!(q.yy, s22, epsilon = 1e-12, max_relative = 1e-10);
             }
-            let q = yield_stress(strain, Sym2::new(r11, r22, 0.0), D, Z, SY);
-            let (s11, s22) = hydrostatic_yield(e, r11, r22, D, Z, SY);
-            assert_relative_eq!(q.xx, s11, epsilon = 1e-12, max_relative = 1e-10);
-            assert_relative_eq!(q.yy, s22, epsilon = 1e-12, max_relative = 1e-10);
         }
     }
 
