@@ -94,7 +94,20 @@ pub fn write_svg(path: &Path, panels: &[Panel]) -> Result<()> {
                 .margin(12)
                 .x_label_area_size(40)
                 .y_label_area_size(70);
-            let colors = [&BLUE, &RED, &GREEN, &MAGENTA, &BLACK, &CYAN];
+            // Ten distinct colours: the NiAl density plot has nine series, and a
+            // repeated colour made two of its curves indistinguishable.
+            let colors = [
+                &BLUE,
+                &RED,
+                &GREEN,
+                &MAGENTA,
+                &BLACK,
+                &CYAN,
+                &RGBColor(230, 140, 0),
+                &RGBColor(120, 60, 160),
+                &RGBColor(140, 90, 40),
+                &RGBColor(128, 128, 128),
+            ];
             macro_rules! draw {
                 ($chart:expr) => {{
                     let mut chart = $chart;
