@@ -78,21 +78,3 @@ pub fn compact(
     }
     Ok(records)
 }
-
-/// Linear interpolation of a record field at density `d` (records ascending in D).
-pub fn at_density(
-    records: &[CompactionRecord],
-    d: f64,
-    field: fn(&CompactionRecord) -> f64,
-) -> f64 {
-    let k = records
-        .windows(2)
-        .position(|w| w[0].density <= d && d <= w[1].density)
-        .unwrap_or(records.len().saturating_sub(2));
-    let (a, b) = (&records[k], &records[(k + 1).min(records.len() - 1)]);
-    if b.density == a.density {
-        return field(b);
-    }
-    let w = (d - a.density) / (b.density - a.density);
-    field(a) + w * (field(b) - field(a))
-}

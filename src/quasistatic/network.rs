@@ -53,7 +53,7 @@
 //! the prescribed nodes (free nodes carry no applied force), V the current box area.
 
 use super::affine_yield::Sym2;
-use super::packing::{CylinderPacking, Vec2};
+use super::packing::{CylinderPacking, Vec2, touching_pairs};
 use crate::contact::normal::plastic_cylinder;
 use crate::error::{Result, TampError};
 use nalgebra::DVector;
@@ -187,40 +187,6 @@ impl Trial {
     }
 }
 
-/// ∫ F_N du_N from where the force last vanished, u₀ = u_max − F_max/k_u, to u: the
-/// elastic line ½k_u(u − u₀)² below u_max, plus the plastic work (2/3)C(u^{3/2} −
-/// u_max^{3/2}) above it (C = 3σ_y√(8R*)). Zero for a separated contact, so a
-/// contact entering or leaving the list does not jump the total.
-fn normal_energy(
-    overlap: f64,
-    max_overlap: f64,
-    effective_radius: f64,
-    yield_stress: f64,
-    unloading_factor: f64,
-    floor: f64,
-) -> f64 {
-    let c = 3.0 * yield_stress * (8.0 * effective_radius).sqrt();
-    let plastic = |u: f64| 2.0 / 3.0 * c * u.max(0.0).powf(1.5);
-    if max_overlap <= 0.0 {
-        return plastic(overlap);
-    }
-    let peak = plastic_cylinder::loading_force(max_overlap, effective_radius, yield_stress);
-    let k_u = unloading_factor
-        * plastic_cylinder::loading_stiffness(
-            max_overlap.max(floor),
-            effective_radius,
-            yield_stress,
-        );
-    let u0 = max_overlap - peak / k_u;
-    if overlap >= max_overlap {
-        0.5 * peak * peak / k_u + plastic(overlap) - plastic(max_overlap)
-    } else if overlap <= u0 {
-        0.0
-    } else {
-        0.5 * k_u * (overlap - u0) * (overlap - u0)
-    }
-}
-
 /// ∫₀^s clamp(F₀ + kσ, −cap, cap) dσ: the work of a stick–slip spring that starts at
 /// force F₀ and slips by s (a convex function of s for a fixed cap).
 fn clamped_spring_energy(start: f64, k: f64, cap: f64, slip: f64) -> f64 {
@@ -256,8 +222,6 @@ pub struct Network {
     pub width: f64,
     pub height: f64,
     pub settings: NetworkSettings,
-    /// Accumulated logarithmic-free (sum of increments) macroscopic strain.
-    pub strain: Sym2,
     history: BTreeMap<(usize, usize), ContactHistory>,
     /// Contacts at the last committed state.
     contacts: Vec<ContactState>,
@@ -275,7 +239,6 @@ impl Network {
             width: packing.width,
             height: packing.height,
             settings,
-            strain: Sym2::new(0.0, 0.0, 0.0),
             history: BTreeMap::new(),
             contacts: Vec::new(),
             solid_area: packing.solid_area(),
@@ -395,19 +358,11 @@ impl Network {
                 s.stiffness_floor_overlap,
             );
             let width = plastic_cylinder::contact_width(n.max_overlap, r_star);
-            let energy_normal = normal_energy(
-                overlap,
-                h.max_overlap,
-                r_star,
-                s.yield_stress,
-                s.unloading_factor,
-                s.stiffness_floor_overlap,
-            );
             let mut energy_tangential = 0.0;
             let (mut tangential_force, mut tangential_stiffness, mut sliding) = (0.0, 0.0, false);
             if s.friction != Friction::Frictionless && n.force > 0.0 {
                 // Slip of i on j since the committed state (eq 5, secant normal).
-                let committed = self.committed_pair(i, j);
+                let committed = (self.centres[i], self.centres[j]);
                 let t = tangent(normal);
                 let slip = ((centres[i] - committed.0) - (centres[j] - committed.1)).dot(&t)
                     + d_i * (rotations[i] - self.rotations[i])
@@ -447,14 +402,10 @@ impl Network {
                 tangential_stiffness,
                 max_overlap: n.max_overlap,
                 sliding,
-                energy: energy_normal + energy_tangential,
+                energy: n.work + energy_tangential,
             });
         }
         out
-    }
-
-    fn committed_pair(&self, i: usize, j: usize) -> (Vec2, Vec2) {
-        (self.centres[i], self.centres[j])
     }
 
     /// One increment of macroscopic strain (eqs 14–15).
@@ -700,9 +651,6 @@ impl Network {
         self.contacts = contacts;
         self.width *= 1.0 + de.xx;
         self.height *= 1.0 + de.yy;
-        self.strain.xx += de.xx;
-        self.strain.yy += de.yy;
-        self.strain.xy += de.xy;
     }
 
     /// (normal n from i to j, branch l = xⱼ − xᵢ, F_N) of every force-carrying contact.
@@ -737,13 +685,7 @@ fn tangent(n: Vec2) -> Vec2 {
 
 /// Pairs (i < j) that overlap, ascending.
 fn overlapping_pairs(centres: &[Vec2], radii: &[f64]) -> Vec<(usize, usize)> {
-    let p = CylinderPacking {
-        width: 0.0,
-        height: 0.0,
-        centres: centres.to_vec(),
-        radii: radii.to_vec(),
-    };
-    p.touching_pairs(0.0)
+    touching_pairs(centres, radii, 0.0)
         .into_iter()
         .filter(|&(i, j)| (centres[j] - centres[i]).norm() < radii[i] + radii[j])
         .collect()

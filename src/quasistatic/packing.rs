@@ -39,51 +39,9 @@ impl CylinderPacking {
     }
 
     /// Pairs (i < j) whose surfaces are closer than `gap_tolerance` (or overlap),
-    /// in ascending (i, j) order. O(N) with a cell grid of the largest diameter.
+    /// in ascending (i, j) order.
     pub fn touching_pairs(&self, gap_tolerance: f64) -> Vec<(usize, usize)> {
-        let n = self.len();
-        if n == 0 {
-            return Vec::new();
-        }
-        let r_max = self.radii.iter().cloned().fold(0.0, f64::max);
-        let cell = (2.0 * r_max + gap_tolerance.max(0.0)).max(f64::MIN_POSITIVE);
-        let (x0, y0) = self
-            .centres
-            .iter()
-            .fold((f64::INFINITY, f64::INFINITY), |(a, b), c| {
-                (a.min(c.x), b.min(c.y))
-            });
-        let key = |c: &Vec2| {
-            (
-                ((c.x - x0) / cell).floor() as i64,
-                ((c.y - y0) / cell).floor() as i64,
-            )
-        };
-        let mut cells: std::collections::BTreeMap<(i64, i64), Vec<usize>> = Default::default();
-        for (i, c) in self.centres.iter().enumerate() {
-            cells.entry(key(c)).or_default().push(i);
-        }
-        let mut pairs = Vec::new();
-        for (i, c) in self.centres.iter().enumerate() {
-            let (kx, ky) = key(c);
-            for dx in -1..=1 {
-                for dy in -1..=1 {
-                    let Some(list) = cells.get(&(kx + dx, ky + dy)) else {
-                        continue;
-                    };
-                    for &j in list {
-                        if j > i
-                            && (self.centres[j] - c).norm() - (self.radii[i] + self.radii[j])
-                                <= gap_tolerance
-                        {
-                            pairs.push((i, j));
-                        }
-                    }
-                }
-            }
-        }
-        pairs.sort_unstable();
-        pairs
+        touching_pairs(&self.centres, &self.radii, gap_tolerance)
     }
 
     /// Z = 2 × touching pairs / N (contacts with walls not counted).
@@ -93,6 +51,50 @@ impl CylinderPacking {
         }
         2.0 * self.touching_pairs(gap_tolerance).len() as f64 / self.len() as f64
     }
+}
+
+/// Pairs (i < j) of discs whose surfaces are closer than `gap_tolerance` (or
+/// overlap), in ascending (i, j) order. O(N) with a cell grid of the largest diameter.
+pub fn touching_pairs(centres: &[Vec2], radii: &[f64], gap_tolerance: f64) -> Vec<(usize, usize)> {
+    let n = radii.len();
+    if n == 0 {
+        return Vec::new();
+    }
+    let r_max = radii.iter().cloned().fold(0.0, f64::max);
+    let cell = (2.0 * r_max + gap_tolerance.max(0.0)).max(f64::MIN_POSITIVE);
+    let (x0, y0) = centres
+        .iter()
+        .fold((f64::INFINITY, f64::INFINITY), |(a, b), c| {
+            (a.min(c.x), b.min(c.y))
+        });
+    let key = |c: &Vec2| {
+        (
+            ((c.x - x0) / cell).floor() as i64,
+            ((c.y - y0) / cell).floor() as i64,
+        )
+    };
+    let mut cells: std::collections::BTreeMap<(i64, i64), Vec<usize>> = Default::default();
+    for (i, c) in centres.iter().enumerate() {
+        cells.entry(key(c)).or_default().push(i);
+    }
+    let mut pairs = Vec::new();
+    for (i, c) in centres.iter().enumerate() {
+        let (kx, ky) = key(c);
+        for dx in -1..=1 {
+            for dy in -1..=1 {
+                let Some(list) = cells.get(&(kx + dx, ky + dy)) else {
+                    continue;
+                };
+                for &j in list {
+                    if j > i && (centres[j] - c).norm() - (radii[i] + radii[j]) <= gap_tolerance {
+                        pairs.push((i, j));
+                    }
+                }
+            }
+        }
+    }
+    pairs.sort_unstable();
+    pairs
 }
 
 #[cfg(test)]

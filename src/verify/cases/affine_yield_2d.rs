@@ -30,8 +30,8 @@
 //! contacts that load carry their current force, the others unload rigidly), which is
 //! the appendix's construction applied to the deposit's real contacts.
 
-use crate::error::{Result, TampError};
-use crate::generate::ballistic_2d::{BoxFill, Lid};
+use super::ballistic_deposition_2d::fill;
+use crate::error::Result;
 use crate::generate::distribution::SizeDistribution;
 use crate::output::plot::{Panel, Series, write_svg};
 use crate::quasistatic::affine_yield::{Sym2, closed_die_yield, hydrostatic_yield};
@@ -39,11 +39,8 @@ use crate::quasistatic::compaction::{StrainPath, compact};
 use crate::quasistatic::network::{Constraint, Friction, Network, NetworkSettings};
 use crate::quasistatic::{CylinderPacking, Vec2};
 use crate::verify::{CaseContext, Measured};
-use rand::SeedableRng;
-use rand_chacha::ChaCha8Rng;
 use std::f64::consts::PI;
 
-const WIDTH: f64 = 80.0;
 const TARGET_DENSITY: f64 = 0.85;
 const AREA_STEP: f64 = 1e-3;
 const SIGMA_Y: f64 = 1.0;
@@ -56,21 +53,8 @@ pub fn hydrostatic(ctx: &CaseContext) -> Result<Vec<Measured>> {
     run(ctx, StrainPath::Hydrostatic)
 }
 
-/// The polydispersed deposit of `ballistic_deposition_2d`, seed 1.
-pub fn deposit(width: f64, seed: u64) -> Result<CylinderPacking> {
-    BoxFill {
-        width,
-        height: width,
-        law: SizeDistribution::Uniform { min: 0.9, max: 1.1 },
-        lid: Lid::Top,
-        patience: 1000,
-    }
-    .fill(&mut ChaCha8Rng::seed_from_u64(seed))
-    .map_err(|e| TampError::Other(format!("ballistic deposition: {e}")))
-}
-
 fn run(ctx: &CaseContext, path: StrainPath) -> Result<Vec<Measured>> {
-    let packing = deposit(WIDTH, 1)?;
+    let packing = fill(&SizeDistribution::Uniform { min: 0.9, max: 1.1 }, 1)?;
     let z0 = packing.coordination(1e-9);
     let settings = NetworkSettings::redanz_fleck(
         SIGMA_Y,
@@ -88,10 +72,11 @@ fn run(ctx: &CaseContext, path: StrainPath) -> Result<Vec<Measured>> {
     let pairwise = pairwise_stress(&packing, stretch, net.area());
     let (e11, e22) = (stretch.0 - 1.0, stretch.1 - 1.0);
 
-    let (_, a22) = match path {
-        StrainPath::ClosedDie => closed_die_yield(e22, 0.0, -1.0, d, z0, SIGMA_Y),
-        StrainPath::Hydrostatic => hydrostatic_yield(0.5 * (e11 + e22), -1.0, -1.0, d, z0, SIGMA_Y),
+    let loading = match path {
+        StrainPath::ClosedDie => (0.0, -1.0),
+        StrainPath::Hydrostatic => (-1.0, -1.0),
     };
+    let (_, a22) = analytic(path, (e11, e22), loading, d, z0);
     let err = |s22: f64| (s22 - a22) / a22;
     let out = match path {
         StrainPath::ClosedDie => vec![
@@ -113,6 +98,24 @@ fn run(ctx: &CaseContext, path: StrainPath) -> Result<Vec<Measured>> {
     };
     write_surface(ctx, path, &net, (e11, e22), d, z0)?;
     Ok(out)
+}
+
+/// The appendix's yield stress (Σ₁₁, Σ₂₂) after prestrain (E₁₁, E₂₂) along `path`,
+/// probed along `rate`: eqs A7–A12 for closed die, eqs A4–A5 with E₁₁ = E₂₂ for
+/// hydrostatic.
+fn analytic(
+    path: StrainPath,
+    (e11, e22): (f64, f64),
+    rate: (f64, f64),
+    d: f64,
+    z0: f64,
+) -> (f64, f64) {
+    match path {
+        StrainPath::ClosedDie => closed_die_yield(e22, rate.0, rate.1, d, z0, SIGMA_Y),
+        StrainPath::Hydrostatic => {
+            hydrostatic_yield(0.5 * (e11 + e22), rate.0, rate.1, d, z0, SIGMA_Y)
+        }
+    }
 }
 
 /// −(1/V) Σ F n ⊗ l over every pair of the initial packing after the affine stretch
@@ -154,20 +157,14 @@ fn write_surface(
 ) -> Result<()> {
     let contacts = net.contact_forces();
     let area = net.area();
-    let (mut analytic, mut discrete) = (Vec::new(), Vec::new());
+    let (mut surface, mut discrete) = (Vec::new(), Vec::new());
     for k in 0..=144 {
         let t = 2.0 * PI * k as f64 / 144.0;
         let (r11, r22) = (t.cos(), t.sin());
         if r11 > 1e-12 && r22 > 1e-12 {
             continue; // pure dilatation unloads every contact
         }
-        let (s11, s22) = match path {
-            StrainPath::ClosedDie => closed_die_yield(e22, r11, r22, d, z0, SIGMA_Y),
-            StrainPath::Hydrostatic => {
-                hydrostatic_yield(0.5 * (e11 + e22), r11, r22, d, z0, SIGMA_Y)
-            }
-        };
-        analytic.push((s11, s22));
+        surface.push(analytic(path, (e11, e22), (r11, r22), d, z0));
         let mut s = (0.0, 0.0);
         for (n, l, f) in &contacts {
             if r11 * n.x * n.x + r22 * n.y * n.y < 0.0 {
@@ -177,13 +174,9 @@ fn write_surface(
         }
         discrete.push(s);
     }
-    let name = match path {
-        StrainPath::ClosedDie => "affine_closed_die_yield",
-        StrainPath::Hydrostatic => "affine_hydrostatic_yield",
-    };
     crate::output::create_dir(&ctx.report_dir)?;
     write_svg(
-        &ctx.report_dir.join(format!("{name}.svg")),
+        &ctx.report_dir.join(format!("{}.svg", ctx.spec.name)),
         &[Panel {
             title: match path {
                 StrainPath::ClosedDie => {
@@ -198,7 +191,7 @@ fn write_surface(
             log_y: false,
             log_x: false,
             series: &[
-                Series::line("eqs A7-A12 / A4-A5 (D, Z0 of the deposit)", analytic),
+                Series::line("eqs A7-A12 / A4-A5 (D, Z0 of the deposit)", surface),
                 Series::points("deposit, affine (contacts that load)", discrete),
             ],
         }],

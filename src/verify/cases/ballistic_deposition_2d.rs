@@ -58,7 +58,9 @@ struct Sample {
     pairs: Vec<(usize, usize)>,
 }
 
-fn fill(law: &SizeDistribution, seed: u64) -> Result<CylinderPacking> {
+/// One W = 80R box filled with radii from `law` (also the specimen of the 2D compaction
+/// cases).
+pub(super) fn fill(law: &SizeDistribution, seed: u64) -> Result<CylinderPacking> {
     let fill = BoxFill {
         width: WIDTH,
         height: WIDTH,
