@@ -61,9 +61,14 @@ struct Sample {
 /// One W = 80R box filled with radii from `law` (also the specimen of the 2D compaction
 /// cases).
 pub(super) fn fill(law: &SizeDistribution, seed: u64) -> Result<CylinderPacking> {
+    fill_box(law, seed, WIDTH)
+}
+
+/// The same fill in a square box of side `width` (the quick 2D compaction cases).
+pub(super) fn fill_box(law: &SizeDistribution, seed: u64, width: f64) -> Result<CylinderPacking> {
     let fill = BoxFill {
-        width: WIDTH,
-        height: WIDTH,
+        width,
+        height: width,
         law: law.clone(),
         lid: Lid::Top,
         patience: PATIENCE,

@@ -4,6 +4,7 @@
 mod affine_yield_2d;
 mod ballistic_deposition_2d;
 mod binary_packing;
+mod compaction_2d;
 mod density_segregation;
 mod energy_conservation_elastic;
 mod hertz_collision_time;
@@ -59,6 +60,13 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("ballistic_deposition_2d", ballistic_deposition_2d::run),
     ("affine_closed_die_yield", affine_yield_2d::closed_die),
     ("affine_hydrostatic_yield", affine_yield_2d::hydrostatic),
+    (
+        "hydrostatic_compaction_2d_quick",
+        compaction_2d::hydrostatic,
+    ),
+    ("hydrostatic_compaction_2d", compaction_2d::hydrostatic),
+    ("closed_die_compaction_2d_quick", compaction_2d::closed_die),
+    ("closed_die_compaction_2d", compaction_2d::closed_die),
     ("liggghts_settled_packing", liggghts_settled_packing::run),
     (
         "liggghts_three_sphere_trajectory",

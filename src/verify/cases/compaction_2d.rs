@@ -1,0 +1,211 @@
+//! Hydrostatic and closed die compaction of a deposited cylinder packing (Redanz &
+//! Fleck 2001 §3.1–3.2, Figs 5–6) by the quasi-static network (`quasistatic::network`).
+//!
+//! Scene: the seed-1 polydispersed deposit (r uniform in [0.9R, 1.1R]) of
+//! `ballistic_deposition_2d`, W = 80R (full tier) or W = 20R (quick tier), σ_y = 1,
+//! compacted from its deposited density to D = 0.85 in increments of 1e-3 of the box
+//! area, five ways: affine (every cylinder follows eqs 14–15; frictionless, as under
+//! hydrostatic straining the paper notes friction does not matter), and die
+//! compaction (the peripheral layer follows eqs 14–15) with μ = 0, μ = 0.1, sticking
+//! (μ = ∞), and sticking with rotation prevented.
+//!
+//! Quantities, each at D = 0.85 as the mean over the increments with D ≥ 0.84 (a
+//! frictionless network rearranges in avalanches; one increment's stress jumps by up
+//! to 25 % in the W = 20R box, docs/verification-notes.md). Full tier, the paper's
+//! statements at the paper's size:
+//!
+//! * `frictionless_over_affine_stress`, `sticking_over_affine_stress`: Σ₂₂ of the die
+//!   run over Σ₂₂ of the affine run (the paper: at most one half, and comparable);
+//! * `coordination_frictionless`, `coordination_sticking`: Z (force-carrying contacts).
+//!
+//! Quick tier, W = 20R: a quarter-width box is looser (D₀ 0.743 against 0.795) and a
+//! third of its cylinders touch a wall, whose contacts Z does not count, so the
+//! paper's absolute values do not apply; it checks the statements that do not depend
+//! on the box: friction raises the stress (`frictionless_over_sticking_stress` < 1),
+//! sticking is comparable to affine (`sticking_over_affine_stress`), and Z drops by
+//! at most 0.5 from sticking to frictionless (`coordination_drop_frictionless`).
+//!
+//! Both tiers: `equilibrium_gap_sticking`, (Σ₂₂ by eq 13 − Σ₂₂ from the contact
+//! forces)/Σ₂₂ of the sticking run at D = 0.85, zero when the free cylinders are in
+//! static equilibrium (eq 10).
+//!
+//! Writes `<case>.svg` (Σ₂₂ and Σ₁₁ against D, Fig 5; Z against D, Fig 6) and
+//! `<case>.csv` (every increment of every run) to the report directory.
+
+use super::ballistic_deposition_2d::fill_box;
+use crate::error::Result;
+use crate::generate::distribution::SizeDistribution;
+use crate::output::plot::{Panel, Series, write_svg};
+use crate::quasistatic::compaction::{CompactionRecord, StrainPath, compact};
+use crate::quasistatic::network::{Constraint, Friction, Network, NetworkSettings};
+use crate::verify::{CaseContext, Measured};
+use std::fmt::Write;
+
+const TARGET_DENSITY: f64 = 0.85;
+/// The window over which the stress and Z at the target are averaged.
+const WINDOW: f64 = 0.84;
+const AREA_STEP: f64 = 1e-3;
+const SIGMA_Y: f64 = 1.0;
+
+struct Run {
+    name: &'static str,
+    records: Vec<CompactionRecord>,
+    /// (Σ₂₂ by eq 13, Σ₂₂ from the contacts) at the end.
+    final_stress: (f64, f64),
+}
+
+pub fn hydrostatic(ctx: &CaseContext) -> Result<Vec<Measured>> {
+    run(ctx, StrainPath::Hydrostatic)
+}
+
+pub fn closed_die(ctx: &CaseContext) -> Result<Vec<Measured>> {
+    run(ctx, StrainPath::ClosedDie)
+}
+
+fn run(ctx: &CaseContext, path: StrainPath) -> Result<Vec<Measured>> {
+    let quick = ctx.spec.name.ends_with("_quick");
+    let width = if quick { 20.0 } else { 80.0 };
+    let packing = fill_box(&SizeDistribution::Uniform { min: 0.9, max: 1.1 }, 1, width)?;
+    let variants: [(&'static str, Friction, bool, Constraint); 5] = [
+        ("affine", Friction::Frictionless, true, Constraint::Affine),
+        ("mu = 0", Friction::Frictionless, true, Constraint::Die),
+        ("mu = 0.1", Friction::Coulomb(0.1), true, Constraint::Die),
+        ("sticking", Friction::Sticking, true, Constraint::Die),
+        (
+            "sticking no rotation",
+            Friction::Sticking,
+            false,
+            Constraint::Die,
+        ),
+    ];
+    let mut runs = Vec::new();
+    for (name, friction, rotation, constraint) in variants {
+        let settings = NetworkSettings::redanz_fleck(SIGMA_Y, 1.0, friction, rotation, constraint);
+        let mut net = Network::new(&packing, settings);
+        let records = compact(&mut net, path, AREA_STEP, TARGET_DENSITY).map_err(|e| {
+            crate::error::TampError::Other(format!("{}, {name}: {e}", ctx.spec.name))
+        })?;
+        runs.push(Run {
+            name,
+            records,
+            final_stress: (net.stress().yy, net.stress_from_contacts().yy),
+        });
+    }
+    let at_target = |name: &str, f: fn(&CompactionRecord) -> f64| {
+        let run = runs.iter().find(|r| r.name == name).expect("variant");
+        let window: Vec<f64> = run
+            .records
+            .iter()
+            .filter(|r| r.density >= WINDOW)
+            .map(f)
+            .collect();
+        window.iter().sum::<f64>() / window.len().max(1) as f64
+    };
+    let stress = |r: &CompactionRecord| r.stress_yy;
+    let z = |r: &CompactionRecord| r.coordination;
+    let affine = at_target("affine", stress);
+    let sticking = runs.iter().find(|r| r.name == "sticking").expect("variant");
+    write_report(ctx, &runs)?;
+    let gap = (sticking.final_stress.0 - sticking.final_stress.1) / sticking.final_stress.0;
+    if quick {
+        return Ok(vec![
+            Measured::new(
+                "frictionless_over_sticking_stress",
+                at_target("mu = 0", stress) / at_target("sticking", stress),
+                1.0,
+            ),
+            Measured::new(
+                "sticking_over_affine_stress",
+                at_target("sticking", stress) / affine,
+                1.0,
+            ),
+            Measured::new(
+                "coordination_drop_frictionless",
+                at_target("sticking", z) - at_target("mu = 0", z),
+                0.5,
+            ),
+            Measured::new("equilibrium_gap_sticking", gap, 0.0),
+        ]);
+    }
+    Ok(vec![
+        Measured::new(
+            "frictionless_over_affine_stress",
+            at_target("mu = 0", stress) / affine,
+            0.5,
+        ),
+        Measured::new(
+            "sticking_over_affine_stress",
+            at_target("sticking", stress) / affine,
+            1.0,
+        ),
+        Measured::new("coordination_frictionless", at_target("mu = 0", z), 4.1),
+        Measured::new("coordination_sticking", at_target("sticking", z), 4.1),
+        Measured::new("equilibrium_gap_sticking", gap, 0.0),
+    ])
+}
+
+fn write_report(ctx: &CaseContext, runs: &[Run]) -> Result<()> {
+    let mut csv = String::from(
+        "variant,density,stress_xx_over_sigma_y,stress_yy_over_sigma_y,stress_xy_over_sigma_y,\
+         coordination,sliding_fraction,fire_iterations,unbalanced_force_ratio\n",
+    );
+    for run in runs {
+        for r in &run.records {
+            let _ = writeln!(
+                csv,
+                "{},{:.6},{:.6e},{:.6e},{:.6e},{:.4},{:.4},{},{:.3e}",
+                run.name,
+                r.density,
+                r.stress_xx,
+                r.stress_yy,
+                r.stress_xy,
+                r.coordination,
+                r.sliding_fraction,
+                r.iterations,
+                r.residual
+            );
+        }
+    }
+    crate::output::create_dir(&ctx.report_dir)?;
+    let name = &ctx.spec.name;
+    crate::output::write_atomic(&ctx.report_dir.join(format!("{name}.csv")), csv.as_bytes())?;
+    let curve = |run: &Run, f: fn(&CompactionRecord) -> f64| -> Vec<(f64, f64)> {
+        run.records.iter().map(|r| (r.density, f(r))).collect()
+    };
+    let mut stress = Vec::new();
+    for run in runs {
+        stress.push(Series::line(
+            &format!("-Sigma22, {}", run.name),
+            curve(run, |r| -r.stress_yy),
+        ));
+        stress.push(Series::line(
+            &format!("-Sigma11, {}", run.name),
+            curve(run, |r| -r.stress_xx),
+        ));
+    }
+    let coordination: Vec<Series> = runs
+        .iter()
+        .map(|run| Series::line(run.name, curve(run, |r| r.coordination)))
+        .collect();
+    write_svg(
+        &ctx.report_dir.join(format!("{name}.svg")),
+        &[
+            Panel {
+                title: "Macroscopic stress vs density (R&F Fig 5)",
+                x_label: "D",
+                y_label: "-Sigma / sigma_y",
+                log_y: false,
+                log_x: false,
+                series: &stress,
+            },
+            Panel {
+                title: "Coordination number vs density (R&F Fig 6)",
+                x_label: "D",
+                y_label: "Z",
+                log_y: false,
+                log_x: false,
+                series: &coordination,
+            },
+        ],
+    )
+}
