@@ -149,13 +149,15 @@ pub fn closed_die_yield(
 ) -> (f64, f64) {
     let s = density * coordination * sigma_y * (-2.0 * e22).sqrt();
     let k = s / (PI * PI);
+    // cos θc with tan² θc = −Ė₁₁/Ė₂₂ (only where the rates have opposite signs).
+    let c = || (-rate11 / rate22).sqrt().atan().cos();
     if rate11 <= 0.0 && rate22 <= 0.0 {
         (-4.0 * k, -8.0 * k)
     } else if rate11 > 0.0 && rate22 < 0.0 {
-        let c = (-rate11 / rate22).sqrt().atan().cos();
+        let c = c();
         (-4.0 * k * c.powi(3), -12.0 * k * (c - c.powi(3) / 3.0))
     } else if rate11 < 0.0 && rate22 > 0.0 {
-        let c = (-rate11 / rate22).sqrt().atan().cos();
+        let c = c();
         (
             -4.0 * k * (1.0 - c.powi(3)),
             -12.0 * k * (2.0 / 3.0 - c + c.powi(3) / 3.0),

@@ -496,10 +496,7 @@ impl Network {
             }
         }
         let step = self.solve(&self.contacts, dof, count, &rhs)?;
-        let longest = (0..self.len())
-            .filter(|&p| dof[p][0] != usize::MAX)
-            .map(|p| step[dof[p][0]].hypot(step[dof[p][1]]))
-            .fold(0.0, f64::max);
+        let longest = self.longest_move(dof, step.as_slice());
         if !longest.is_finite() {
             return Err(TampError::Other(
                 "quasi-static increment: the stiffness solve gave a non-finite step".into(),
@@ -607,22 +604,7 @@ impl Network {
             }
             // No cylinder moves more than max_step in one iteration, so none can pass
             // through a neighbour.
-            let longest = (0..n)
-                .map(|p| {
-                    let t = if dof[p][0] != usize::MAX {
-                        velocity[dof[p][0]].hypot(velocity[dof[p][1]])
-                    } else {
-                        0.0
-                    };
-                    let r = if dof[p][2] != usize::MAX {
-                        (velocity[dof[p][2]] * self.radii[p]).abs()
-                    } else {
-                        0.0
-                    };
-                    t.max(r)
-                })
-                .fold(0.0, f64::max)
-                * dt;
+            let longest = self.longest_move(dof, &velocity) * dt;
             let scale = dt * (self.settings.max_step / longest).min(1.0);
             for p in 0..n {
                 if dof[p][0] != usize::MAX {
@@ -639,15 +621,12 @@ impl Network {
 
     /// FIRE's inertia per free DOF: the diagonal of K with each contact at the stiffest
     /// branch it can take this increment (the unloading stiffness once it has been
-    /// loaded), plus σ_y (σ_y R² for rotations) so a node with no contact still moves.
-    /// A loading contact that turns back is 10³ times stiffer; an inertia taken from
-    /// the loading branch lets it overshoot (a released affine network gained energy,
-    /// 0.142 → 0.202 σ_y R², before this rule).
+    /// loaded). A loading contact that turns back is 10³ times stiffer; an inertia
+    /// taken from the loading branch lets it overshoot (a released affine network
+    /// gained energy, 0.142 → 0.202 σ_y R², before this rule).
     fn inertia(&self, contacts: &[ContactState], dof: &[[usize; 3]], count: usize) -> Vec<f64> {
         let s = &self.settings;
-        let mut diagonal = vec![0.0; count];
-        for c in contacts {
-            let (bn, bt, idx) = c.rows(dof);
+        self.diagonal(contacts, dof, count, |c| {
             let (ri, rj) = (self.radii[c.i], self.radii[c.j]);
             let unloading = s.unloading_factor
                 * plastic_cylinder::loading_stiffness(
@@ -655,7 +634,23 @@ impl Network {
                     ri * rj / (ri + rj),
                     s.yield_stress,
                 );
-            let kn = c.normal_stiffness.max(unloading);
+            c.normal_stiffness.max(unloading)
+        })
+    }
+
+    /// The diagonal of K over the free DOFs with normal stiffness `k_n(contact)`, plus
+    /// σ_y (σ_y R² for rotations) so a node with no contact still has a finite entry.
+    fn diagonal(
+        &self,
+        contacts: &[ContactState],
+        dof: &[[usize; 3]],
+        count: usize,
+        k_n: impl Fn(&ContactState) -> f64,
+    ) -> Vec<f64> {
+        let mut diagonal = vec![0.0; count];
+        for c in contacts {
+            let (bn, bt, idx) = c.rows(dof);
+            let kn = k_n(c);
             for a in 0..6 {
                 if idx[a] != usize::MAX {
                     diagonal[idx[a]] += kn * bn[a] * bn[a] + c.tangential_stiffness * bt[a] * bt[a];
@@ -665,11 +660,31 @@ impl Network {
         for (node, r) in dof.iter().zip(&self.radii) {
             for (a, &d) in node.iter().enumerate() {
                 if d != usize::MAX {
-                    diagonal[d] += s.yield_stress * if a == 2 { r * r } else { 1.0 };
+                    diagonal[d] += self.settings.yield_stress * if a == 2 { r * r } else { 1.0 };
                 }
             }
         }
         diagonal
+    }
+
+    /// The longest move of a cylinder under the DOF vector `step` (rotations as arc
+    /// length at the rim).
+    fn longest_move(&self, dof: &[[usize; 3]], step: &[f64]) -> f64 {
+        (0..self.len())
+            .map(|p| {
+                let t = if dof[p][0] != usize::MAX {
+                    step[dof[p][0]].hypot(step[dof[p][1]])
+                } else {
+                    0.0
+                };
+                let r = if dof[p][2] != usize::MAX {
+                    (step[dof[p][2]] * self.radii[p]).abs()
+                } else {
+                    0.0
+                };
+                t.max(r)
+            })
+            .fold(0.0, f64::max)
     }
 
     /// Contacts, residual and its largest entry at trial positions.
@@ -736,26 +751,14 @@ impl Network {
     ) -> Result<DVector<f64>> {
         let lambda = self.settings.regularisation;
         let mut coo = CooMatrix::new(count, count);
-        let s = &self.settings;
-        // Marquardt's scaling: λ times the diagonal of K, plus λσ_y (σ_y R² for
-        // rotations) so a node with no stiffness still has a finite, small step.
-        let mut diagonal = vec![0.0; count];
-        for c in contacts {
-            let (bn, bt, idx) = c.rows(dof);
-            for a in 0..6 {
-                if idx[a] != usize::MAX {
-                    diagonal[idx[a]] +=
-                        c.normal_stiffness * bn[a] * bn[a] + c.tangential_stiffness * bt[a] * bt[a];
-                }
-            }
-        }
-        for (node, r) in dof.iter().zip(&self.radii) {
-            for (a, &d) in node.iter().enumerate() {
-                if d != usize::MAX {
-                    let r2 = if a == 2 { r * r } else { 1.0 };
-                    coo.push(d, d, lambda * (diagonal[d] + s.yield_stress * r2));
-                }
-            }
+        // Marquardt's scaling: λ times the diagonal of K (with σ_y so a node with no
+        // stiffness still has a finite, small step).
+        for (d, k) in self
+            .diagonal(contacts, dof, count, |c| c.normal_stiffness)
+            .into_iter()
+            .enumerate()
+        {
+            coo.push(d, d, lambda * k);
         }
         for c in contacts {
             let (bn, bt, idx) = c.rows(dof);

@@ -45,11 +45,6 @@ pub struct PlasticCylinderResponse {
     pub stiffness: f64,
     /// The largest overlap after this state (u_max, or u_N when loading further).
     pub max_overlap: f64,
-    /// ∫ F_N du_N from where the force last vanished to u_N: ½F²/k_u on the elastic
-    /// line, plus the plastic work ∫ C√u du = (2/3)(F u − F_max u_max) beyond u_max.
-    /// Zero for a separated contact, so a contact entering or leaving a list does not
-    /// make a sum of these jump (the quasi-static network's merit function).
-    pub work: f64,
 }
 
 /// Force and tangent stiffness at overlap `overlap` given the largest overlap reached
@@ -75,11 +70,6 @@ pub fn response(
     let peak = loading_force(max_overlap, effective_radius, yield_stress);
     if overlap >= max_overlap {
         let force = loading_force(overlap, effective_radius, yield_stress);
-        let elastic = if max_overlap > 0.0 {
-            0.5 * peak * peak / unloading_stiffness(max_overlap)
-        } else {
-            0.0
-        };
         return PlasticCylinderResponse {
             force,
             stiffness: loading_stiffness(
@@ -88,7 +78,6 @@ pub fn response(
                 yield_stress,
             ),
             max_overlap: overlap,
-            work: elastic + 2.0 / 3.0 * (force * overlap - peak * max_overlap),
         };
     }
     let k_unload = unloading_stiffness(max_overlap);
@@ -98,14 +87,12 @@ pub fn response(
             force,
             stiffness: k_unload,
             max_overlap,
-            work: 0.5 * force * force / k_unload,
         }
     } else {
         PlasticCylinderResponse {
             force: 0.0,
             stiffness: 0.0,
             max_overlap,
-            work: 0.0,
         }
     }
 }
@@ -134,41 +121,6 @@ mod tests {
             loading_stiffness(u, 0.5 * r, sy),
             paper,
             max_relative = 1e-15
-        );
-    }
-
-    #[test]
-    fn work_is_the_integral_of_the_force() {
-        // Along a path that loads to u_max, unloads part way and reloads past u_max,
-        // the work differences match the trapezoid integral of F.
-        let (r_star, sy, f) = (0.5, 1.0, 1e3);
-        let at = |u: f64, u_max: f64| response(u, u_max, r_star, sy, f, 0.0);
-        let integral = |a: f64, b: f64, u_max: f64| {
-            let n = 20000;
-            let h = (b - a) / n as f64;
-            (0..n)
-                .map(|k| {
-                    let (x0, x1) = (a + h * k as f64, a + h * (k + 1) as f64);
-                    0.5 * h * (at(x0, u_max).force + at(x1, u_max).force)
-                })
-                .sum::<f64>()
-        };
-        let u_max = 1e-2;
-        assert_relative_eq!(
-            at(u_max, 0.0).work,
-            integral(0.0, u_max, 0.0),
-            max_relative = 1e-6
-        );
-        let back = u_max - 2e-5;
-        assert_relative_eq!(
-            at(u_max, u_max).work - at(back, u_max).work,
-            integral(back, u_max, u_max),
-            max_relative = 1e-6
-        );
-        assert_relative_eq!(
-            at(2.0 * u_max, u_max).work - at(u_max, u_max).work,
-            integral(u_max, 2.0 * u_max, u_max),
-            max_relative = 1e-6
         );
     }
 
