@@ -4,7 +4,7 @@
 //! (Figs 4–6).
 
 use super::affine_yield::Sym2;
-use super::network::Network;
+use super::network::{AffineDeviation, IncrementReport, Network};
 use crate::error::Result;
 use serde::Serialize;
 
@@ -38,10 +38,12 @@ pub struct CompactionRecord {
     pub sliding_fraction: f64,
     pub iterations: usize,
     pub residual: f64,
+    /// §3.3's measures of the increment that led here (Figs 7–8).
+    pub deviation: AffineDeviation,
 }
 
 impl CompactionRecord {
-    fn of(net: &Network, iterations: usize, residual: f64) -> Self {
+    fn of(net: &Network, report: IncrementReport) -> Self {
         let s = net.stress();
         let sy = net.settings.yield_stress;
         CompactionRecord {
@@ -51,8 +53,9 @@ impl CompactionRecord {
             stress_xy: s.xy / sy,
             coordination: net.coordination(),
             sliding_fraction: net.sliding_fraction(),
-            iterations,
-            residual,
+            iterations: report.iterations,
+            residual: report.residual,
+            deviation: report.deviation,
         }
     }
 }
@@ -65,16 +68,17 @@ pub fn compact(
     step: f64,
     target: f64,
 ) -> Result<Vec<CompactionRecord>> {
-    let mut records = vec![CompactionRecord::of(net, 0, 0.0)];
+    let start = IncrementReport {
+        iterations: 0,
+        residual: 0.0,
+        deviation: AffineDeviation::default(),
+    };
+    let mut records = vec![CompactionRecord::of(net, start)];
     while net.density() < target * (1.0 - 1e-12) {
         // Area ratio needed to reach the target exactly.
         let needed = 1.0 - net.density() / target;
         let report = net.increment(path.increment(step.min(needed)))?;
-        records.push(CompactionRecord::of(
-            net,
-            report.iterations,
-            report.residual,
-        ));
+        records.push(CompactionRecord::of(net, report));
     }
     Ok(records)
 }

@@ -191,8 +191,30 @@ pub struct IncrementReport {
     pub iterations: usize,
     /// Largest unbalanced force on a free node over the mean contact force.
     pub residual: f64,
+    pub deviation: AffineDeviation,
 }
 
+/// How far the relative motion at the contacts strayed from affine motion in one
+/// increment (Redanz & Fleck 2001 §3.3, Figs 7–8), over the contacts that carried
+/// force at its start: with u̇_N, u̇_T the network's relative normal approach and
+/// slip (eqs 1, 5) and u̇_N^A = −n·ΔE·l, u̇_T^A = −t·ΔE·l their affine values
+/// (l = xⱼ − xᵢ, no rotation),
+///
+///   normal = ⟨|u̇_N − u̇_N^A|⟩ / ⟨|u̇_N^A|⟩,  tangential = ⟨|u̇_T − u̇_T^A|⟩ / ⟨|u̇_N^A|⟩,
+///   affine_tangential = ⟨|u̇_T^A|⟩ / ⟨|u̇_N^A|⟩.
+///
+/// The paper normalises by ⟨u̇_N^A⟩ for the tangential measure; for the normal one
+/// its words ("each normalised by u_N^A") would divide contact by contact, which
+/// diverges for contacts normal to a closed die's compression (u̇_N^A = 0), so the
+/// same ratio of ensemble means is used.
+#[derive(Clone, Copy, Debug, Default, Serialize)]
+pub struct AffineDeviation {
+    pub normal: f64,
+    pub tangential: f64,
+    pub affine_tangential: f64,
+}
+
+#[derive(Clone)]
 pub struct Network {
     pub radii: Vec<f64>,
     pub centres: Vec<Vec2>,
@@ -410,6 +432,7 @@ impl Network {
         let mut report = IncrementReport {
             iterations: 0,
             residual: 0.0,
+            deviation: AffineDeviation::default(),
         };
         let mut pairs = CandidatePairs::new(&centres, &self.radii, self.settings.skin);
         if count > 0 {
@@ -423,8 +446,38 @@ impl Network {
             &mut pairs,
             &mut report,
         )?;
+        report.deviation = self.affine_deviation(&centres, &rotations, de);
         self.commit(centres, rotations, trial.contacts, de);
         Ok(report)
+    }
+
+    /// §3.3's measures for the step from the committed state to `centres`.
+    fn affine_deviation(&self, centres: &[Vec2], rotations: &[f64], de: Sym2) -> AffineDeviation {
+        let strain = |l: Vec2| Vec2::new(de.xx * l.x + de.xy * l.y, de.xy * l.x + de.yy * l.y);
+        let (mut normal, mut tangential, mut affine_normal, mut affine_tangential) =
+            (0.0, 0.0, 0.0, 0.0);
+        for c in self.contacts.iter().filter(|c| c.normal_force > 0.0) {
+            let (n, t) = (c.normal, tangent(c.normal));
+            let l = self.centres[c.j] - self.centres[c.i];
+            let relative = (centres[c.i] - self.centres[c.i]) - (centres[c.j] - self.centres[c.j]);
+            let u_n = n.dot(&relative);
+            let u_t = t.dot(&relative)
+                + c.d_i * (rotations[c.i] - self.rotations[c.i])
+                + c.d_j * (rotations[c.j] - self.rotations[c.j]);
+            let (u_n_a, u_t_a) = (-n.dot(&strain(l)), -t.dot(&strain(l)));
+            normal += (u_n - u_n_a).abs();
+            tangential += (u_t - u_t_a).abs();
+            affine_normal += u_n_a.abs();
+            affine_tangential += u_t_a.abs();
+        }
+        if affine_normal == 0.0 {
+            return AffineDeviation::default();
+        }
+        AffineDeviation {
+            normal: normal / affine_normal,
+            tangential: tangential / affine_normal,
+            affine_tangential: affine_tangential / affine_normal,
+        }
     }
 
     /// Free DOFs (x, y, θ per node, `usize::MAX` where prescribed), numbered bottom to

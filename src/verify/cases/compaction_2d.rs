@@ -29,7 +29,13 @@
 //! forces)/Σ₂₂ of the sticking run at D = 0.85, zero when the free cylinders are in
 //! static equilibrium (eq 10).
 //!
-//! Writes `<case>.svg` (Σ₂₂ and Σ₁₁ against D, Fig 5; Z against D, Fig 6) and
+//! `affine_run_deviation`: the largest §3.3 deviation from affine motion (normal or
+//! tangential, `quasistatic::network::AffineDeviation`) over the affine run's
+//! increments, zero to round-off since eqs 14–16 move every cylinder affinely; it
+//! checks the measure's kinematics (a sign slip in u̇^A would give 2).
+//!
+//! Writes `<case>.svg` (Σ₂₂ and Σ₁₁ against D, Fig 5; Z against D, Fig 6; the deviations from
+//! affine motion against D, Figs 7–8) and
 //! `<case>.csv` (every increment of every run) to the report directory.
 
 use super::ballistic_deposition_2d::fill_box;
@@ -107,6 +113,14 @@ fn run(ctx: &CaseContext, path: StrainPath) -> Result<Vec<Measured>> {
     let sticking = runs.iter().find(|r| r.name == "sticking").expect("variant");
     write_report(ctx, &runs)?;
     let gap = (sticking.final_stress.0 - sticking.final_stress.1) / sticking.final_stress.0;
+    let affine_deviation = runs
+        .iter()
+        .find(|r| r.name == "affine")
+        .expect("variant")
+        .records
+        .iter()
+        .map(|r| r.deviation.normal.max(r.deviation.tangential))
+        .fold(0.0, f64::max);
     if quick {
         return Ok(vec![
             Measured::new(
@@ -125,6 +139,7 @@ fn run(ctx: &CaseContext, path: StrainPath) -> Result<Vec<Measured>> {
                 0.5,
             ),
             Measured::new("equilibrium_gap_sticking", gap, 0.0),
+            Measured::new("affine_run_deviation", affine_deviation, 0.0),
         ]);
     }
     Ok(vec![
@@ -141,19 +156,21 @@ fn run(ctx: &CaseContext, path: StrainPath) -> Result<Vec<Measured>> {
         Measured::new("coordination_frictionless", at_target("mu = 0", z), 4.1),
         Measured::new("coordination_sticking", at_target("sticking", z), 4.1),
         Measured::new("equilibrium_gap_sticking", gap, 0.0),
+        Measured::new("affine_run_deviation", affine_deviation, 0.0),
     ])
 }
 
 fn write_report(ctx: &CaseContext, runs: &[Run]) -> Result<()> {
     let mut csv = String::from(
         "variant,density,stress_xx_over_sigma_y,stress_yy_over_sigma_y,stress_xy_over_sigma_y,\
-         coordination,sliding_fraction,fire_iterations,unbalanced_force_ratio\n",
+         coordination,sliding_fraction,fire_iterations,unbalanced_force_ratio,\
+         normal_deviation,tangential_deviation,affine_tangential_over_normal\n",
     );
     for run in runs {
         for r in &run.records {
             let _ = writeln!(
                 csv,
-                "{},{:.6},{:.6e},{:.6e},{:.6e},{:.4},{:.4},{},{:.3e}",
+                "{},{:.6},{:.6e},{:.6e},{:.6e},{:.4},{:.4},{},{:.3e},{:.4e},{:.4e},{:.4e}",
                 run.name,
                 r.density,
                 r.stress_xx,
@@ -162,7 +179,10 @@ fn write_report(ctx: &CaseContext, runs: &[Run]) -> Result<()> {
                 r.coordination,
                 r.sliding_fraction,
                 r.iterations,
-                r.residual
+                r.residual,
+                r.deviation.normal,
+                r.deviation.tangential,
+                r.deviation.affine_tangential
             );
         }
     }
@@ -187,6 +207,22 @@ fn write_report(ctx: &CaseContext, runs: &[Run]) -> Result<()> {
         .iter()
         .map(|run| Series::line(run.name, curve(run, |r| r.coordination)))
         .collect();
+    // The first record is the deposit, before any increment; the affine run's
+    // deviation is zero to round-off (`affine_run_deviation`) and is left out.
+    let deviation = |f: fn(&CompactionRecord) -> f64| -> Vec<Series> {
+        runs.iter()
+            .map(|run| {
+                if run.name == "affine" {
+                    // Kept, empty, so each variant has the same colour in every panel.
+                    Series::line("affine (zero, not drawn)", Vec::new())
+                } else {
+                    Series::line(run.name, curve(run, f).into_iter().skip(1).collect())
+                }
+            })
+            .collect()
+    };
+    let normal = deviation(|r| r.deviation.normal);
+    let tangential = deviation(|r| r.deviation.tangential);
     write_svg(
         &ctx.report_dir.join(format!("{name}.svg")),
         &[
@@ -205,6 +241,22 @@ fn write_report(ctx: &CaseContext, runs: &[Run]) -> Result<()> {
                 log_y: false,
                 log_x: false,
                 series: &coordination,
+            },
+            Panel {
+                title: "Deviation of the normal approach from affine (R&F Fig 7)",
+                x_label: "D",
+                y_label: "<|du_N - du_N^A|> / <|du_N^A|>",
+                log_y: true,
+                log_x: false,
+                series: &normal,
+            },
+            Panel {
+                title: "Deviation of the tangential slip from affine (R&F Fig 8)",
+                x_label: "D",
+                y_label: "<|du_T - du_T^A|> / <|du_N^A|>",
+                log_y: true,
+                log_x: false,
+                series: &tangential,
             },
         ],
     )
