@@ -10,5 +10,6 @@ pub mod affine_yield;
 pub mod compaction;
 pub mod network;
 pub mod packing;
+pub mod yield_probe;
 
 pub use packing::{CylinderPacking, Vec2};

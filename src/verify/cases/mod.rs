@@ -29,6 +29,7 @@ mod storakers_unloading;
 mod three_sphere_compression;
 mod two_sphere_compression;
 mod van_der_waals_force;
+mod yield_surface_2d;
 
 use super::CaseFn;
 
@@ -67,6 +68,8 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("hydrostatic_compaction_2d", compaction_2d::hydrostatic),
     ("closed_die_compaction_2d_quick", compaction_2d::closed_die),
     ("closed_die_compaction_2d", compaction_2d::closed_die),
+    ("yield_surface_2d_quick", yield_surface_2d::run),
+    ("yield_surface_2d", yield_surface_2d::run),
     ("liggghts_settled_packing", liggghts_settled_packing::run),
     (
         "liggghts_three_sphere_trajectory",

@@ -1,0 +1,259 @@
+//! Yield surfaces of compacted cylinder networks (Redanz & Fleck 2001 §3.4, Fig 9).
+//!
+//! Scene: the seed-1 polydispersed deposit of `ballistic_deposition_2d` (r uniform in
+//! [0.9R, 1.1R], σ_y = 1), W = 80R (full tier) or W = 20R (quick tier), compacted to
+//! D = 0.85 along the hydrostatic and the closed die path in increments of 1e-3 of
+//! the box area, three ways: affine (frictionless), and die compaction with μ = 0 and
+//! with sticking contacts. Each compacted network is unloaded elastically and
+//! reloaded along nine strain directions (Ė₁₁, Ė₂₂) = (cos ψ, sin ψ), ψ = 135° … 315°
+//! in steps of 22.5° (from the isochoric probe that stretches 2 through hydrostatic
+//! compression to the one that stretches 1), with the same constraint as during
+//! compaction (the paper's "l.r.–l.r." and "affine–affine"); yield is at 0.1 % offset
+//! strain (`quasistatic::yield_probe`).
+//!
+//! Quantities:
+//!
+//! * `frictionless_over_sticking_size`: √(area enclosed by Σ = 0 and the yield
+//!   points) of the frictionless surface over that of the sticking one, the mean of
+//!   the hydrostatic and the closed die ratios (the paper: about one half, its
+//!   non-affine surfaces accurate to about 10 %);
+//! * `sticking_over_affine_size`: the same for sticking over affine (the paper:
+//!   comparable in size);
+//! * `affine_probe_size_error`: the size of the affine probe's surface over that of
+//!   the affine construction on the compacted network's own contacts through the
+//!   same nine directions, minus one, the larger over the two paths. The
+//!   construction is Appendix A's rule (eq A5) applied to the real contacts,
+//!   Σ(Ė) = −(1/V) Σ_{c: n·Ė·n < 0} F_c n ⊗ l_c: those that load carry their force,
+//!   the others unload rigidly. It is an independent, rigid-plastic evaluation that
+//!   checks the unload–reload machinery and the offset rule.
+//!
+//! Writes `<case>.svg` (Fig 9: the surfaces of each path) and `<case>.csv` (every
+//! reloading increment of every probe).
+
+use super::ballistic_deposition_2d::fill_box;
+use crate::error::{Result, TampError};
+use crate::generate::distribution::SizeDistribution;
+use crate::output::plot::{Panel, Series, write_svg};
+use crate::quasistatic::affine_yield::Sym2;
+use crate::quasistatic::compaction::{StrainPath, compact};
+use crate::quasistatic::network::{Constraint, Friction, Network, NetworkSettings};
+use crate::quasistatic::yield_probe::{ProbeSettings, YieldPoint, enclosed_area, probe, unload};
+use crate::verify::{CaseContext, Measured};
+use std::f64::consts::FRAC_1_SQRT_2;
+use std::fmt::Write;
+
+const TARGET_DENSITY: f64 = 0.85;
+const AREA_STEP: f64 = 1e-3;
+const SIGMA_Y: f64 = 1.0;
+const DIRECTIONS: usize = 9;
+
+struct Surface {
+    path: StrainPath,
+    variant: &'static str,
+    points: Vec<YieldPoint>,
+}
+
+impl Surface {
+    fn size(&self) -> f64 {
+        let pts: Vec<(f64, f64)> = self
+            .points
+            .iter()
+            .map(|p| (p.stress.xx, p.stress.yy))
+            .collect();
+        enclosed_area(&pts).sqrt()
+    }
+}
+
+fn loading_direction(path: StrainPath) -> Sym2 {
+    match path {
+        StrainPath::Hydrostatic => Sym2::new(-FRAC_1_SQRT_2, -FRAC_1_SQRT_2, 0.0),
+        StrainPath::ClosedDie => Sym2::new(0.0, -1.0, 0.0),
+    }
+}
+
+fn probe_directions() -> Vec<Sym2> {
+    (0..DIRECTIONS)
+        .map(|k| {
+            let psi = (135.0 + 180.0 * k as f64 / (DIRECTIONS - 1) as f64).to_radians();
+            Sym2::new(psi.cos(), psi.sin(), 0.0)
+        })
+        .collect()
+}
+
+/// Σ(Ė) = −(1/V) Σ over the contacts that load along Ė of F n ⊗ l.
+fn affine_construction(net: &Network, rate: Sym2) -> Sym2 {
+    let area = net.area();
+    let mut s = Sym2::new(0.0, 0.0, 0.0);
+    for (n, l, f) in net.contact_forces() {
+        if rate.xx * n.x * n.x + rate.yy * n.y * n.y + 2.0 * rate.xy * n.x * n.y < 0.0 {
+            s.xx -= f * n.x * l.x / area;
+            s.yy -= f * n.y * l.y / area;
+            s.xy -= f * n.x * l.y / area;
+        }
+    }
+    s
+}
+
+pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
+    let quick = ctx.spec.name.ends_with("_quick");
+    let width = if quick { 20.0 } else { 80.0 };
+    let packing = fill_box(&SizeDistribution::Uniform { min: 0.9, max: 1.1 }, 1, width)?;
+    let variants: [(&'static str, Friction, Constraint); 3] = [
+        ("affine", Friction::Frictionless, Constraint::Affine),
+        ("mu = 0", Friction::Frictionless, Constraint::Die),
+        ("sticking", Friction::Sticking, Constraint::Die),
+    ];
+    let settings = ProbeSettings::redanz_fleck();
+    let mut surfaces = Vec::new();
+    let mut affine_error: f64 = 0.0;
+    let mut constructions = Vec::new();
+    for path in [StrainPath::Hydrostatic, StrainPath::ClosedDie] {
+        for (variant, friction, constraint) in variants {
+            let context = |e: TampError| {
+                TampError::Other(format!("{}, {path:?}, {variant}: {e}", ctx.spec.name))
+            };
+            let net_settings =
+                NetworkSettings::redanz_fleck(SIGMA_Y, 1.0, friction, true, constraint);
+            let mut net = Network::new(&packing, net_settings);
+            compact(&mut net, path, AREA_STEP, TARGET_DENSITY).map_err(context)?;
+            let compacted = net.clone();
+            let unloading =
+                unload(&mut net, loading_direction(path), &settings).map_err(context)?;
+            let mut points = Vec::new();
+            for d in probe_directions() {
+                points.push(probe(&net, d, unloading.strain, &settings).map_err(context)?);
+            }
+            if constraint == Constraint::Affine {
+                let construction: Vec<Sym2> = points
+                    .iter()
+                    .map(|p| affine_construction(&compacted, p.direction))
+                    .collect();
+                let size = enclosed_area(
+                    &construction
+                        .iter()
+                        .map(|s| (s.xx, s.yy))
+                        .collect::<Vec<_>>(),
+                )
+                .sqrt();
+                constructions.push((path, construction));
+                let probed = Surface {
+                    path,
+                    variant,
+                    points: points.clone(),
+                }
+                .size();
+                affine_error = affine_error.max((probed / size - 1.0).abs());
+            }
+            surfaces.push(Surface {
+                path,
+                variant,
+                points,
+            });
+        }
+    }
+    write_report(ctx, &surfaces, &constructions)?;
+    let size = |path: StrainPath, variant: &str| {
+        surfaces
+            .iter()
+            .find(|s| s.path == path && s.variant == variant)
+            .expect("surface")
+            .size()
+    };
+    let ratio = |a: &str, b: &str| {
+        0.5 * (size(StrainPath::Hydrostatic, a) / size(StrainPath::Hydrostatic, b)
+            + size(StrainPath::ClosedDie, a) / size(StrainPath::ClosedDie, b))
+    };
+    Ok(vec![
+        Measured::new(
+            "frictionless_over_sticking_size",
+            ratio("mu = 0", "sticking"),
+            0.5,
+        ),
+        Measured::new(
+            "sticking_over_affine_size",
+            ratio("sticking", "affine"),
+            1.0,
+        ),
+        Measured::new("affine_probe_size_error", affine_error, 0.0),
+    ])
+}
+
+fn write_report(
+    ctx: &CaseContext,
+    surfaces: &[Surface],
+    constructions: &[(StrainPath, Vec<Sym2>)],
+) -> Result<()> {
+    let mut csv = String::from(
+        "path,variant,probe_e11,probe_e22,reload_strain,stress_xx_over_sigma_y,\
+         stress_yy_over_sigma_y,stress_xy_over_sigma_y,yield\n",
+    );
+    for s in surfaces {
+        for p in &s.points {
+            for (e, st) in &p.curve {
+                let _ = writeln!(
+                    csv,
+                    "{:?},{},{:.4},{:.4},{:.6e},{:.6e},{:.6e},{:.6e},0",
+                    s.path, s.variant, p.direction.xx, p.direction.yy, e, st.xx, st.yy, st.xy
+                );
+            }
+            let _ = writeln!(
+                csv,
+                "{:?},{},{:.4},{:.4},,{:.6e},{:.6e},{:.6e},1",
+                s.path,
+                s.variant,
+                p.direction.xx,
+                p.direction.yy,
+                p.stress.xx,
+                p.stress.yy,
+                p.stress.xy
+            );
+        }
+    }
+    crate::output::create_dir(&ctx.report_dir)?;
+    let name = &ctx.spec.name;
+    crate::output::write_atomic(&ctx.report_dir.join(format!("{name}.csv")), csv.as_bytes())?;
+    let panel_series = |path: StrainPath| -> Vec<Series> {
+        let mut series: Vec<Series> = surfaces
+            .iter()
+            .filter(|s| s.path == path)
+            .map(|s| {
+                let mut pts: Vec<(f64, f64)> = vec![(0.0, 0.0)];
+                pts.extend(s.points.iter().map(|p| (p.stress.xx, p.stress.yy)));
+                pts.push((0.0, 0.0));
+                Series::line(s.variant, pts)
+            })
+            .collect();
+        for (_, c) in constructions.iter().filter(|(p, _)| *p == path) {
+            series.push(Series::points(
+                "affine construction on the compacted contacts",
+                c.iter().map(|s| (s.xx, s.yy)).collect(),
+            ));
+        }
+        series
+    };
+    let (hydro, die) = (
+        panel_series(StrainPath::Hydrostatic),
+        panel_series(StrainPath::ClosedDie),
+    );
+    write_svg(
+        &ctx.report_dir.join(format!("{name}.svg")),
+        &[
+            Panel {
+                title: "Yield surface after hydrostatic compaction to D = 0.85 (R&F Fig 9a)",
+                x_label: "Sigma11 / sigma_y",
+                y_label: "Sigma22 / sigma_y",
+                log_y: false,
+                log_x: false,
+                series: &hydro,
+            },
+            Panel {
+                title: "Yield surface after closed die compaction to D = 0.85 (R&F Fig 9b)",
+                x_label: "Sigma11 / sigma_y",
+                y_label: "Sigma22 / sigma_y",
+                log_y: false,
+                log_x: false,
+                series: &die,
+            },
+        ],
+    )
+}
