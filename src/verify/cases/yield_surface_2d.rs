@@ -27,6 +27,12 @@
 //!   the others unload rigidly. It is an independent, rigid-plastic evaluation that
 //!   checks the unload–reload machinery and the offset rule.
 //!
+//! After hydrostatic compaction the frictionless constraints are also crossed
+//! (Fig 10): "l.r. - affine" (compacted with the interior free, probed affinely) and
+//! "affine - l.r." (the reverse); the constraint changes at the unloaded state. They
+//! are plotted, not checked: the paper finds both about half the affine–affine size,
+//! tamp 0.79 and 0.21 at W = 20R (docs/verification-notes.md says why).
+//!
 //! Writes `<case>.svg` (Fig 9: the surfaces of each path) and `<case>.csv` (every
 //! reloading increment of every probe).
 
@@ -46,6 +52,10 @@ const TARGET_DENSITY: f64 = 0.85;
 const AREA_STEP: f64 = 1e-3;
 const SIGMA_Y: f64 = 1.0;
 const DIRECTIONS: usize = 9;
+/// Fig 10's labels: compacted with local rearrangement, probed affinely, and the
+/// reverse (frictionless both).
+const LR_AFFINE: &str = "l.r. - affine";
+const AFFINE_LR: &str = "affine - l.r.";
 
 struct Surface {
     path: StrainPath,
@@ -108,25 +118,56 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let mut affine_error: f64 = 0.0;
     let mut constructions = Vec::new();
     for path in [StrainPath::Hydrostatic, StrainPath::ClosedDie] {
+        let mut compacted = Vec::new();
         for (variant, friction, constraint) in variants {
-            let context = |e: TampError| {
-                TampError::Other(format!("{}, {path:?}, {variant}: {e}", ctx.spec.name))
-            };
             let net_settings =
                 NetworkSettings::redanz_fleck(SIGMA_Y, 1.0, friction, true, constraint);
             let mut net = Network::new(&packing, net_settings);
-            compact(&mut net, path, AREA_STEP, TARGET_DENSITY).map_err(context)?;
-            let compacted = net.clone();
+            compact(&mut net, path, AREA_STEP, TARGET_DENSITY).map_err(|e| {
+                TampError::Other(format!("{}, {path:?}, {variant}: {e}", ctx.spec.name))
+            })?;
+            compacted.push((variant, net));
+        }
+        let network = |name: &str| {
+            &compacted
+                .iter()
+                .find(|(v, _)| *v == name)
+                .expect("variant")
+                .1
+        };
+        // (label, compacted network, constraint while probing); Fig 10 crosses the
+        // frictionless constraints after hydrostatic compaction.
+        let mut probes = vec![
+            ("affine", network("affine"), Constraint::Affine),
+            ("mu = 0", network("mu = 0"), Constraint::Die),
+            ("sticking", network("sticking"), Constraint::Die),
+        ];
+        if path == StrainPath::Hydrostatic {
+            probes.push((LR_AFFINE, network("mu = 0"), Constraint::Affine));
+            probes.push((AFFINE_LR, network("affine"), Constraint::Die));
+        }
+        for (variant, compacted, constraint) in probes {
+            let context = |e: TampError| {
+                TampError::Other(format!("{}, {path:?}, {variant}: {e}", ctx.spec.name))
+            };
+            let mut net = compacted.clone();
             let unloading =
                 unload(&mut net, loading_direction(path), &settings).map_err(context)?;
+            if net.settings.constraint != constraint {
+                // Unloading belongs to the compaction; the probing constraint takes
+                // over at the unloaded state, where the network first finds its
+                // equilibrium under the new constraint.
+                net.settings.constraint = constraint;
+                net.increment(Sym2::new(0.0, 0.0, 0.0)).map_err(context)?;
+            }
             let mut points = Vec::new();
             for d in probe_directions() {
                 points.push(probe(&net, d, unloading.strain, &settings).map_err(context)?);
             }
-            if constraint == Constraint::Affine {
+            if variant == "affine" {
                 let construction: Vec<Sym2> = points
                     .iter()
-                    .map(|p| affine_construction(&compacted, p.direction))
+                    .map(|p| affine_construction(compacted, p.direction))
                     .collect();
                 let size = enclosed_area(
                     &construction
@@ -239,7 +280,7 @@ fn write_report(
         &ctx.report_dir.join(format!("{name}.svg")),
         &[
             Panel {
-                title: "Yield surface after hydrostatic compaction to D = 0.85 (R&F Fig 9a)",
+                title: "Yield surface after hydrostatic compaction to D = 0.85 (R&F Figs 9a, 10)",
                 x_label: "Sigma11 / sigma_y",
                 y_label: "Sigma22 / sigma_y",
                 log_y: false,
