@@ -159,6 +159,9 @@ struct ContactState {
     tangential_force: f64,
     tangential_stiffness: f64,
     max_overlap: f64,
+    /// The stiffest normal branch this contact can take this increment, FIRE's
+    /// inertia (`Network::inertia`).
+    inertia_stiffness: f64,
     sliding: bool,
 }
 
@@ -247,7 +250,8 @@ impl Network {
             solid_area: packing.solid_area(),
         };
         let pairs = touching_pairs(&net.centres, &net.radii, 0.0);
-        net.contacts = net.evaluate(&net.centres, &net.rotations, &pairs);
+        let histories = vec![ContactHistory::default(); pairs.len()];
+        net.contacts = net.evaluate(&net.centres, &net.rotations, &pairs, &histories);
         net
     }
 
@@ -338,18 +342,26 @@ impl Network {
     }
 
     /// Contact forces, stiffnesses and histories at trial positions and rotations,
-    /// from the committed histories.
+    /// from the committed histories (`histories[k]` that of `pairs[k]`, looked up once
+    /// per candidate list rather than once per FIRE iteration).
     fn evaluate(
         &self,
         centres: &[Vec2],
         rotations: &[f64],
         pairs: &[(usize, usize)],
+        histories: &[ContactHistory],
     ) -> Vec<ContactState> {
         let s = &self.settings;
-        let mut out = Vec::new();
-        for &(i, j) in pairs {
+        let mut out = Vec::with_capacity(pairs.len());
+        for (&(i, j), &h) in pairs.iter().zip(histories) {
             let (ri, rj) = (self.radii[i], self.radii[j]);
             let l = centres[j] - centres[i];
+            // Most candidates are apart: skip the square root where that is certain
+            // (the margin covers rounding; the exact test follows).
+            let squared = l.norm_squared();
+            if squared > (ri + rj) * (ri + rj) * (1.0 + 1e-12) {
+                continue;
+            }
             let dist = l.norm();
             if dist >= ri + rj {
                 continue;
@@ -360,7 +372,6 @@ impl Network {
             // Distances from the centres to the chord of the two circles.
             let d_i = (dist * dist + ri * ri - rj * rj) / (2.0 * dist);
             let d_j = dist - d_i;
-            let h = self.history.get(&(i, j)).copied().unwrap_or_default();
             let n = plastic_cylinder::response(
                 overlap,
                 h.max_overlap,
@@ -399,6 +410,29 @@ impl Network {
                     tangential_stiffness = k;
                 }
             }
+            // On the loading branch K uses the secant F/u = 2 dF/du: Newton with the
+            // tangent of a √u law overshoots to separation whenever it starts from more
+            // than 4× the equilibrium overlap, the secant never does.
+            let normal_stiffness = if overlap >= h.max_overlap {
+                n.force / overlap.max(s.stiffness_floor_overlap)
+            } else {
+                n.stiffness
+            };
+            // The unloading stiffness at u_max (§3.4): `response` has it as its
+            // stiffness on the unloading branch, and the loading tangent it returns on
+            // the loading branch is the same expression at u_max = u_N.
+            let unloading = if overlap >= h.max_overlap {
+                s.unloading_factor * n.stiffness
+            } else if n.force > 0.0 {
+                n.stiffness
+            } else {
+                s.unloading_factor
+                    * plastic_cylinder::loading_stiffness(
+                        n.max_overlap.max(s.stiffness_floor_overlap),
+                        r_star,
+                        s.yield_stress,
+                    )
+            };
             out.push(ContactState {
                 i,
                 j,
@@ -406,14 +440,8 @@ impl Network {
                 d_i,
                 d_j,
                 normal_force: n.force,
-                // On the loading branch K uses the secant F/u = 2 dF/du: Newton with the
-                // tangent of a √u law overshoots to separation whenever it starts from
-                // more than 4× the equilibrium overlap, the secant never does.
-                normal_stiffness: if overlap >= h.max_overlap {
-                    n.force / overlap.max(s.stiffness_floor_overlap)
-                } else {
-                    n.stiffness
-                },
+                normal_stiffness,
+                inertia_stiffness: normal_stiffness.max(unloading),
                 tangential_force,
                 tangential_stiffness,
                 max_overlap: n.max_overlap,
@@ -434,7 +462,8 @@ impl Network {
             residual: 0.0,
             deviation: AffineDeviation::default(),
         };
-        let mut pairs = CandidatePairs::new(&centres, &self.radii, self.settings.skin);
+        let mut pairs =
+            CandidatePairs::new(&centres, &self.radii, self.settings.skin, &self.history);
         if count > 0 {
             self.predict(&mut centres, &mut rotations, &dof, count)?;
         }
@@ -586,8 +615,8 @@ impl Network {
         const ALPHA_START: f64 = 0.1;
         const N_DELAY: usize = 5;
         let n = self.len();
-        pairs.refresh(centres, &self.radii);
-        let mut trial = self.trial(centres, rotations, dof, count, &pairs.pairs);
+        pairs.refresh(centres, &self.radii, &self.history);
+        let mut trial = self.trial(centres, rotations, dof, count, pairs);
         let mut velocity = vec![0.0; count];
         let (mut dt, mut alpha, mut positive) = (0.1f64, ALPHA_START, 0usize);
         loop {
@@ -667,8 +696,8 @@ impl Network {
                     rotations[p] += velocity[dof[p][2]] * scale;
                 }
             }
-            pairs.refresh(centres, &self.radii);
-            trial = self.trial(centres, rotations, dof, count, &pairs.pairs);
+            pairs.refresh(centres, &self.radii, &self.history);
+            trial = self.trial(centres, rotations, dof, count, pairs);
         }
     }
 
@@ -678,17 +707,7 @@ impl Network {
     /// taken from the loading branch lets it overshoot (a released affine network
     /// gained energy, 0.142 → 0.202 σ_y R², before this rule).
     fn inertia(&self, contacts: &[ContactState], dof: &[[usize; 3]], count: usize) -> Vec<f64> {
-        let s = &self.settings;
-        self.diagonal(contacts, dof, count, |c| {
-            let (ri, rj) = (self.radii[c.i], self.radii[c.j]);
-            let unloading = s.unloading_factor
-                * plastic_cylinder::loading_stiffness(
-                    c.max_overlap.max(s.stiffness_floor_overlap),
-                    ri * rj / (ri + rj),
-                    s.yield_stress,
-                );
-            c.normal_stiffness.max(unloading)
-        })
+        self.diagonal(contacts, dof, count, |c| c.inertia_stiffness)
     }
 
     /// The diagonal of K over the free DOFs with normal stiffness `k_n(contact)`, plus
@@ -723,21 +742,29 @@ impl Network {
     /// The longest move of a cylinder under the DOF vector `step` (rotations as arc
     /// length at the rim).
     fn longest_move(&self, dof: &[[usize; 3]], step: &[f64]) -> f64 {
-        (0..self.len())
-            .map(|p| {
-                let t = if dof[p][0] != usize::MAX {
-                    step[dof[p][0]].hypot(step[dof[p][1]])
-                } else {
-                    0.0
-                };
-                let r = if dof[p][2] != usize::MAX {
-                    (step[dof[p][2]] * self.radii[p]).abs()
-                } else {
-                    0.0
-                };
-                t.max(r)
-            })
-            .fold(0.0, f64::max)
+        // The squared translations pick the candidates; `hypot` (dearer) runs only on
+        // those within rounding of the longest, so the result is the same as taking
+        // `hypot` of every node.
+        let squared = |p: usize| {
+            let (x, y) = (step[dof[p][0]], step[dof[p][1]]);
+            x * x + y * y
+        };
+        let translated = |p: usize| dof[p][0] != usize::MAX;
+        let longest_squared = (0..self.len())
+            .filter(|&p| translated(p))
+            .map(squared)
+            .fold(0.0, f64::max);
+        let threshold = longest_squared * (1.0 - 1e-9);
+        let mut longest = 0.0f64;
+        for p in 0..self.len() {
+            if translated(p) && (squared(p) >= threshold || squared(p).is_nan()) {
+                longest = longest.max(step[dof[p][0]].hypot(step[dof[p][1]]));
+            }
+            if dof[p][2] != usize::MAX {
+                longest = longest.max((step[dof[p][2]] * self.radii[p]).abs());
+            }
+        }
+        longest
     }
 
     /// Contacts, residual and its largest entry at trial positions.
@@ -747,9 +774,9 @@ impl Network {
         rotations: &[f64],
         dof: &[[usize; 3]],
         count: usize,
-        pairs: &[(usize, usize)],
+        pairs: &CandidatePairs,
     ) -> Trial {
-        let contacts = self.evaluate(centres, rotations, pairs);
+        let contacts = self.evaluate(centres, rotations, &pairs.pairs, &pairs.histories);
         let forces = self.nodal_forces(&contacts);
         let live = contacts
             .iter()
@@ -908,25 +935,43 @@ struct CandidatePairs {
     skin: f64,
     anchor: Vec<Vec2>,
     pairs: Vec<(usize, usize)>,
+    /// The committed history of each pair (default where it has none).
+    histories: Vec<ContactHistory>,
 }
 
 impl CandidatePairs {
-    fn new(centres: &[Vec2], radii: &[f64], skin: f64) -> Self {
+    fn new(
+        centres: &[Vec2],
+        radii: &[f64],
+        skin: f64,
+        history: &BTreeMap<(usize, usize), ContactHistory>,
+    ) -> Self {
+        let pairs = touching_pairs(centres, radii, skin);
+        let histories = pairs
+            .iter()
+            .map(|key| history.get(key).copied().unwrap_or_default())
+            .collect();
         CandidatePairs {
             skin,
             anchor: centres.to_vec(),
-            pairs: touching_pairs(centres, radii, skin),
+            pairs,
+            histories,
         }
     }
 
-    fn refresh(&mut self, centres: &[Vec2], radii: &[f64]) {
+    fn refresh(
+        &mut self,
+        centres: &[Vec2],
+        radii: &[f64],
+        history: &BTreeMap<(usize, usize), ContactHistory>,
+    ) {
         let moved = centres
             .iter()
             .zip(&self.anchor)
             .map(|(a, b)| (a - b).norm())
             .fold(0.0, f64::max);
         if moved > 0.5 * self.skin {
-            *self = CandidatePairs::new(centres, radii, self.skin);
+            *self = CandidatePairs::new(centres, radii, self.skin, history);
         }
     }
 }
