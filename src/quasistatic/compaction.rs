@@ -38,6 +38,9 @@ pub struct CompactionRecord {
     pub sliding_fraction: f64,
     pub iterations: usize,
     pub residual: f64,
+    /// False where FIRE ran out of iterations and the increment was carried over
+    /// (`NetworkSettings::carry_over`).
+    pub converged: bool,
     /// §3.3's measures of the increment that led here (Figs 7–8).
     pub deviation: AffineDeviation,
 }
@@ -55,6 +58,7 @@ impl CompactionRecord {
             sliding_fraction: net.sliding_fraction(),
             iterations: report.iterations,
             residual: report.residual,
+            converged: report.converged,
             deviation: report.deviation,
         }
     }
@@ -71,6 +75,7 @@ pub fn compact(
     let start = IncrementReport {
         iterations: 0,
         residual: 0.0,
+        converged: true,
         deviation: AffineDeviation::default(),
     };
     let mut records = vec![CompactionRecord::of(net, start)];
