@@ -212,6 +212,66 @@ pub fn enclosed_area(points: &[(f64, f64)]) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::contact::normal::plastic_cylinder::loading_force;
+    use crate::quasistatic::network::{Constraint, Friction, NetworkSettings};
+    use crate::quasistatic::{CylinderPacking, Vec2};
+    use approx::assert_relative_eq;
+
+    /// Five unit cylinders in a row, the two ends prescribed, compressed along x by
+    /// ten increments of 10⁻³: each of the four contacts at the same overlap.
+    fn compressed_chain() -> Network {
+        let packing = CylinderPacking {
+            width: 10.0,
+            height: 2.0,
+            centres: (0..5)
+                .map(|k| Vec2::new(1.0 + 2.0 * k as f64, 1.0))
+                .collect(),
+            radii: vec![1.0; 5],
+        };
+        let mut settings =
+            NetworkSettings::redanz_fleck(1.0, 1.0, Friction::Frictionless, false, Constraint::Die);
+        // Unloading is 10³ times stiffer than loading: 1e-8 is near its round-off.
+        settings.tolerance = 1e-8;
+        let mut net = Network::new(&packing, settings);
+        net.peripheral = vec![true, false, false, false, true];
+        for _ in 0..10 {
+            net.increment(Sym2::new(-1e-3, 0.0, 0.0)).unwrap();
+        }
+        net
+    }
+
+    #[test]
+    fn a_chain_yields_at_its_loaded_force_hardened_by_the_offset_strain() {
+        let mut net = compressed_chain();
+        let loaded = net.stress().xx;
+        let overlap = (8.0 - (net.centres[4].x - net.centres[0].x)) / 4.0;
+        let settings = ProbeSettings::redanz_fleck();
+        let d = Sym2::new(-1.0, 0.0, 0.0);
+        let unloading = unload(&mut net, d, &settings).unwrap();
+        assert!(work_conjugate(net.stress(), d) <= settings.unload_to * (-loaded));
+        let point = probe(&net, d, unloading.strain, &settings).unwrap();
+        // By the offset rule the plastic shortening at yield is ε_offset of the
+        // end-to-end distance 8, a quarter of it per contact, on eq 2: the yield force
+        // is the loaded one hardened to u + 2ε_offset. The 10⁻³ covers the secant k₀
+        // and the interpolation between increments.
+        let hardened = |strain: f64| loading_force(overlap + 2.0 * strain, 0.5, 1.0);
+        let expected = hardened(settings.offset) / hardened(0.0);
+        assert_relative_eq!(point.stress.xx / loaded, expected, max_relative = 1e-3);
+    }
+
+    #[test]
+    fn a_cohesionless_chain_stretched_yields_at_zero_stress() {
+        let mut net = compressed_chain();
+        let loaded = net.stress().xx;
+        let settings = ProbeSettings::redanz_fleck();
+        let unloading = unload(&mut net, Sym2::new(-1.0, 0.0, 0.0), &settings).unwrap();
+        let point = probe(&net, Sym2::new(1.0, 0.0, 0.0), unloading.strain, &settings).unwrap();
+        assert!(
+            point.stress.xx.abs() < 1e-6 * loaded.abs(),
+            "{:?}",
+            point.stress
+        );
+    }
 
     #[test]
     fn the_enclosed_area_of_a_quarter_square_is_its_area() {
