@@ -1017,12 +1017,12 @@ pub fn peripheral_layer(packing: &CylinderPacking) -> Vec<bool> {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use approx::assert_relative_eq;
 
     /// Five unit cylinders in a horizontal row, the two ends prescribed.
-    fn chain(friction: Friction) -> Network {
+    pub(crate) fn chain(friction: Friction) -> Network {
         let packing = CylinderPacking {
             width: 10.0,
             height: 2.0,

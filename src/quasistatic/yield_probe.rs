@@ -213,27 +213,16 @@ pub fn enclosed_area(points: &[(f64, f64)]) -> f64 {
 mod tests {
     use super::*;
     use crate::contact::normal::plastic_cylinder::loading_force;
-    use crate::quasistatic::network::{Constraint, Friction, NetworkSettings};
-    use crate::quasistatic::{CylinderPacking, Vec2};
+    use crate::quasistatic::network::Friction;
+    use crate::quasistatic::network::tests::chain;
     use approx::assert_relative_eq;
 
     /// Five unit cylinders in a row, the two ends prescribed, compressed along x by
     /// ten increments of 10⁻³: each of the four contacts at the same overlap.
     fn compressed_chain() -> Network {
-        let packing = CylinderPacking {
-            width: 10.0,
-            height: 2.0,
-            centres: (0..5)
-                .map(|k| Vec2::new(1.0 + 2.0 * k as f64, 1.0))
-                .collect(),
-            radii: vec![1.0; 5],
-        };
-        let mut settings =
-            NetworkSettings::redanz_fleck(1.0, 1.0, Friction::Frictionless, false, Constraint::Die);
+        let mut net = chain(Friction::Frictionless);
         // Unloading is 10³ times stiffer than loading: 1e-8 is near its round-off.
-        settings.tolerance = 1e-8;
-        let mut net = Network::new(&packing, settings);
-        net.peripheral = vec![true, false, false, false, true];
+        net.settings.tolerance = 1e-8;
         for _ in 0..10 {
             net.increment(Sym2::new(-1e-3, 0.0, 0.0)).unwrap();
         }
