@@ -56,8 +56,8 @@ const TARGET_DENSITY: f64 = 0.85;
 const WINDOW: f64 = 0.84;
 const AREA_STEP: f64 = 1e-3;
 const SIGMA_Y: f64 = 1.0;
-/// FIRE iterations per increment: 10× the most an increment of the W = 20R cases
-/// takes (21 000).
+/// FIRE iterations per increment: 3× the most an increment of the W = 20R cases
+/// takes (64 000, frictionless).
 const MAX_ITERATIONS: usize = 200_000;
 
 struct Run {
