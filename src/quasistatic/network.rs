@@ -737,10 +737,7 @@ impl Network {
     /// (sticking) more iterations over 30 increments of the W = 20R deposit.
     fn inertia(&self, contacts: &[ContactState], dof: &[[usize; 3]], count: usize) -> Vec<f64> {
         self.diagonal(contacts, dof, count, |c| {
-            (
-                c.inertia_stiffness,
-                c.tangential_stiffness.max(c.inertia_tangential),
-            )
+            (c.inertia_stiffness, c.inertia_tangential)
         })
     }
 
