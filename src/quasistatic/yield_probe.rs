@@ -66,17 +66,9 @@ fn scaled(d: Sym2, by: f64) -> Sym2 {
     Sym2::new(d.xx * by, d.yy * by, d.xy * by)
 }
 
-/// What unloading did: the strain it took and the stiffness along the loading
-/// direction it measured.
-#[derive(Clone, Copy, Debug)]
-pub struct Unloading {
-    pub strain: f64,
-    pub stiffness: f64,
-    pub increments: usize,
-}
-
-/// Unload `net` elastically against the unit loading direction `loading`.
-pub fn unload(net: &mut Network, loading: Sym2, settings: &ProbeSettings) -> Result<Unloading> {
+/// Unload `net` elastically against the unit loading direction `loading`; returns
+/// the strain it took, the elastic range that sizes `probe`'s first increment.
+pub fn unload(net: &mut Network, loading: Sym2, settings: &ProbeSettings) -> Result<f64> {
     let s_loaded = work_conjugate(net.stress(), loading);
     if s_loaded <= 0.0 {
         return Err(TampError::Other(format!(
@@ -121,11 +113,7 @@ pub fn unload(net: &mut Network, loading: Sym2, settings: &ProbeSettings) -> Res
             secant = (before - s) / remaining;
         }
     }
-    Ok(Unloading {
-        strain,
-        stiffness,
-        increments,
-    })
+    Ok(strain)
 }
 
 /// One reloading curve and the yield point on it.
@@ -236,9 +224,9 @@ mod tests {
         let overlap = (8.0 - (net.centres[4].x - net.centres[0].x)) / 4.0;
         let settings = ProbeSettings::redanz_fleck();
         let d = Sym2::new(-1.0, 0.0, 0.0);
-        let unloading = unload(&mut net, d, &settings).unwrap();
+        let unloaded_strain = unload(&mut net, d, &settings).unwrap();
         assert!(work_conjugate(net.stress(), d) <= settings.unload_to * (-loaded));
-        let point = probe(&net, d, unloading.strain, &settings).unwrap();
+        let point = probe(&net, d, unloaded_strain, &settings).unwrap();
         // By the offset rule the plastic shortening at yield is ε_offset of the
         // end-to-end distance 8, a quarter of it per contact, on eq 2: the yield force
         // is the loaded one hardened to u + 2ε_offset. The 10⁻³ covers the secant k₀
@@ -253,8 +241,8 @@ mod tests {
         let mut net = compressed_chain();
         let loaded = net.stress().xx;
         let settings = ProbeSettings::redanz_fleck();
-        let unloading = unload(&mut net, Sym2::new(-1.0, 0.0, 0.0), &settings).unwrap();
-        let point = probe(&net, Sym2::new(1.0, 0.0, 0.0), unloading.strain, &settings).unwrap();
+        let unloaded_strain = unload(&mut net, Sym2::new(-1.0, 0.0, 0.0), &settings).unwrap();
+        let point = probe(&net, Sym2::new(1.0, 0.0, 0.0), unloaded_strain, &settings).unwrap();
         assert!(
             point.stress.xx.abs() < 1e-6 * loaded.abs(),
             "{:?}",
