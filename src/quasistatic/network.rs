@@ -148,6 +148,23 @@ impl NetworkSettings {
             regularisation: 1e-8,
         }
     }
+
+    /// `tolerance` and `max_iterations` for a box `height` tall, both set at height
+    /// 20R (10⁻², 200 000: 3× the most a W = 20R increment takes) and scaled with
+    /// height / 20R in taller boxes. Tolerance: eq 13's stress and the stress from
+    /// the contact forces differ by the moment of the unbalanced forces about the box
+    /// centre, at most about tolerance × (free cylinders / contacts) × (height / R),
+    /// ~0.09 at 20R; the unbalanced forces share a sign (FIRE stops while the
+    /// interior still lags the boundary), so the bound is nearly reached and the
+    /// tolerance shrinks as R / height to keep it. Iterations: FIRE's slowest modes
+    /// span the box, and their period in iterations grows with its height
+    /// (docs/verification-notes.md).
+    pub fn scaled_to_box(mut self, height: f64, radius: f64) -> Self {
+        let taller = (height / (20.0 * radius)).max(1.0);
+        self.tolerance = 1e-2 / taller;
+        self.max_iterations = (200_000.0 * taller).round() as usize;
+        self
+    }
 }
 
 /// What a contact remembers between increments.
@@ -1050,6 +1067,26 @@ pub(crate) mod tests {
         let mut net = Network::new(&packing, settings);
         net.peripheral = vec![true, false, false, false, true];
         net
+    }
+
+    #[test]
+    fn box_scaling_keeps_the_equilibrium_gap_bound_and_leaves_the_20r_box_alone() {
+        let settings = |height: f64| {
+            NetworkSettings::redanz_fleck(1.0, 1.0, Friction::Sticking, true, Constraint::Die)
+                .scaled_to_box(height, 1.0)
+        };
+        // The quick cases' box keeps the settings their recorded values were measured with.
+        assert_eq!(settings(20.0).tolerance, 1e-2);
+        assert_eq!(settings(20.0).max_iterations, 200_000);
+        // tolerance × height / R, the gap bound's factor, is the same in the paper's box.
+        assert_relative_eq!(
+            settings(80.0).tolerance * 80.0,
+            1e-2 * 20.0,
+            max_relative = 1e-15
+        );
+        assert_eq!(settings(80.0).max_iterations, 800_000);
+        // A smaller box is not held looser than the 20R one.
+        assert_eq!(settings(10.0).tolerance, 1e-2);
     }
 
     #[test]
