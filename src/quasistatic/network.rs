@@ -153,12 +153,13 @@ impl NetworkSettings {
     /// 20R (10⁻², 200 000: 3× the most a W = 20R increment takes) and scaled with
     /// height / 20R in taller boxes. Tolerance: eq 13's stress and the stress from
     /// the contact forces differ by the moment of the unbalanced forces about the box
-    /// centre, at most about tolerance × (free cylinders / contacts) × (height / R),
-    /// ~0.09 at 20R; the unbalanced forces share a sign (FIRE stops while the
-    /// interior still lags the boundary), so the bound is nearly reached and the
-    /// tolerance shrinks as R / height to keep it. Iterations: FIRE's slowest modes
-    /// span the box, and their period in iterations grows with its height
-    /// (docs/verification-notes.md).
+    /// centre, at most about tolerance × (free cylinders / contacts) × (height / R):
+    /// 0.05 at 20R, and 0.34 at 80R with the same tolerance. The unbalanced forces
+    /// share a sign (FIRE stops while the interior still lags the boundary), so the
+    /// bound is nearly reached; the tolerance shrinks as R / height to cancel the
+    /// height factor (0.085 at 80R, where more cylinders are free). Iterations:
+    /// FIRE's slowest modes span the box, and their period in iterations grows with
+    /// its height (docs/verification-notes.md).
     pub fn scaled_to_box(mut self, height: f64, radius: f64) -> Self {
         let taller = (height / (20.0 * radius)).max(1.0);
         self.tolerance = 1e-2 / taller;
