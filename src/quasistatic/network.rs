@@ -156,7 +156,7 @@ impl NetworkSettings {
     /// centre, at most about tolerance × (free cylinders / contacts) × (height / R):
     /// 0.05 at 20R, and 0.34 at 80R with the same tolerance. The unbalanced forces
     /// share a sign (FIRE stops while the interior still lags the boundary), so the
-    /// bound is nearly reached; the tolerance shrinks as R / height to cancel the
+    /// bound is approached (0.141 of 0.34 measured); the tolerance shrinks as R / height to cancel the
     /// height factor (0.085 at 80R, where more cylinders are free). Iterations:
     /// FIRE's slowest modes span the box, and their period in iterations grows with
     /// its height (docs/verification-notes.md).
