@@ -156,10 +156,10 @@ impl NetworkSettings {
     /// centre, at most about tolerance × (free cylinders / contacts) × (height / R):
     /// 0.05 at 20R, and 0.34 at 80R with the same tolerance. The unbalanced forces
     /// share a sign (FIRE stops while the interior still lags the boundary), so the
-    /// bound is approached (0.141 of 0.34 measured); the tolerance shrinks as R / height to cancel the
-    /// height factor (0.085 at 80R, where more cylinders are free). Iterations:
-    /// FIRE's slowest modes span the box, and their period in iterations grows with
-    /// its height (docs/verification-notes.md).
+    /// gap approaches the bound (0.141 of 0.34 measured); the tolerance shrinks as
+    /// R / height to cancel the height factor (0.085 at 80R, where more cylinders
+    /// are free). Iterations: FIRE's slowest modes span the box, and their period in
+    /// iterations grows with its height (docs/verification-notes.md).
     pub fn scaled_to_box(mut self, height: f64, radius: f64) -> Self {
         let taller = (height / (20.0 * radius)).max(1.0);
         self.tolerance = 1e-2 / taller;
