@@ -149,9 +149,10 @@ impl NetworkSettings {
         }
     }
 
-    /// `tolerance` and `max_iterations` for a box `height` tall, both set at height
-    /// 20R (10⁻², 200 000: 3× the most a W = 20R increment takes) and scaled with
-    /// height / 20R in taller boxes. Tolerance: eq 13's stress and the stress from
+    /// `tolerance` and `max_iterations` for a box `height` tall: the tolerance as set
+    /// (10⁻² from `redanz_fleck`) holds at height 20R and shrinks as 20R / height in
+    /// taller boxes; the cap is 200 000 (3× the most a W = 20R increment takes) times
+    /// height / 20R. Tolerance: eq 13's stress and the stress from
     /// the contact forces differ by the moment of the unbalanced forces about the box
     /// centre, at most about tolerance × (free cylinders / contacts) × (height / R):
     /// 0.05 at 20R, and 0.34 at 80R with the same tolerance. The unbalanced forces
@@ -162,7 +163,7 @@ impl NetworkSettings {
     /// iterations grows with its height (docs/verification-notes.md).
     pub fn scaled_to_box(mut self, height: f64, radius: f64) -> Self {
         let taller = (height / (20.0 * radius)).max(1.0);
-        self.tolerance = 1e-2 / taller;
+        self.tolerance /= taller;
         self.max_iterations = (200_000.0 * taller).round() as usize;
         self
     }

@@ -74,6 +74,25 @@ pub fn closed_die(ctx: &CaseContext) -> Result<Vec<Measured>> {
     run(ctx, StrainPath::ClosedDie)
 }
 
+/// The settings this case and `yield_surface_2d` compact the deposit of width
+/// `width` with.
+pub(super) fn compaction_settings(
+    friction: Friction,
+    rotation: bool,
+    constraint: Constraint,
+    width: f64,
+) -> NetworkSettings {
+    // The deposit fills a square box: its height is its width.
+    let mut settings = NetworkSettings::redanz_fleck(SIGMA_Y, 1.0, friction, rotation, constraint)
+        .scaled_to_box(width, 1.0);
+    // The loose top of the W = 80R deposit collapses at near-zero stress without
+    // settling (docs/verification-notes.md); those increments are carried over and
+    // recorded, and the callers check the states they draw conclusions from
+    // (`unconverged_increments_near_target`; the probed state of yield_surface_2d).
+    settings.carry_over = true;
+    settings
+}
+
 fn run(ctx: &CaseContext, path: StrainPath) -> Result<Vec<Measured>> {
     let quick = ctx.spec.name.ends_with("_quick");
     let width = if quick { 20.0 } else { 80.0 };
@@ -92,15 +111,7 @@ fn run(ctx: &CaseContext, path: StrainPath) -> Result<Vec<Measured>> {
     ];
     let mut runs = Vec::new();
     for (name, friction, rotation, constraint) in variants {
-        // The deposit fills a square box: its height is its width.
-        let mut settings =
-            NetworkSettings::redanz_fleck(SIGMA_Y, 1.0, friction, rotation, constraint)
-                .scaled_to_box(width, 1.0);
-        // The loose top of the W = 80R deposit collapses at near-zero stress without
-        // settling (docs/verification-notes.md); those increments are carried over,
-        // recorded, and `unconverged_increments_near_target` checks that none of
-        // the increments the quantities average is among them.
-        settings.carry_over = true;
+        let settings = compaction_settings(friction, rotation, constraint, width);
         let mut net = Network::new(&packing, settings);
         let records = compact(&mut net, path, AREA_STEP, TARGET_DENSITY).map_err(|e| {
             crate::error::TampError::Other(format!("{}, {name}: {e}", ctx.spec.name))

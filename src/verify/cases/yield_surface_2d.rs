@@ -37,12 +37,13 @@
 //! reloading increment of every probe).
 
 use super::ballistic_deposition_2d::fill_box;
+use super::compaction_2d::compaction_settings;
 use crate::error::{Result, TampError};
 use crate::generate::distribution::SizeDistribution;
 use crate::output::plot::{Panel, Series, write_svg};
 use crate::quasistatic::affine_yield::Sym2;
 use crate::quasistatic::compaction::{StrainPath, compact};
-use crate::quasistatic::network::{Constraint, Friction, Network, NetworkSettings};
+use crate::quasistatic::network::{Constraint, Friction, Network};
 use crate::quasistatic::yield_probe::{ProbeSettings, YieldPoint, enclosed_area, probe, unload};
 use crate::verify::{CaseContext, Measured};
 use std::f64::consts::FRAC_1_SQRT_2;
@@ -50,7 +51,6 @@ use std::fmt::Write;
 
 const TARGET_DENSITY: f64 = 0.85;
 const AREA_STEP: f64 = 1e-3;
-const SIGMA_Y: f64 = 1.0;
 const DIRECTIONS: usize = 9;
 /// Fig 10's labels: compacted with local rearrangement, probed affinely, and the
 /// reverse (frictionless both).
@@ -123,13 +123,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
             let context = |e: String| {
                 TampError::Other(format!("{}, {path:?}, {variant}: {e}", ctx.spec.name))
             };
-            // The deposit fills a square box: its height is its width.
-            let mut net_settings =
-                NetworkSettings::redanz_fleck(SIGMA_Y, 1.0, friction, true, constraint)
-                    .scaled_to_box(width, 1.0);
-            // As in compaction_2d: increments on the way may be carried over out
-            // of balance, the state that is probed may not.
-            net_settings.carry_over = true;
+            let net_settings = compaction_settings(friction, true, constraint, width);
             let mut net = Network::new(&packing, net_settings);
             let records = compact(&mut net, path, AREA_STEP, TARGET_DENSITY)
                 .map_err(|e| context(e.to_string()))?;
