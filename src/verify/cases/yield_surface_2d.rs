@@ -18,7 +18,10 @@
 //!   the hydrostatic and the closed die ratios (the paper: about one half, its
 //!   non-affine surfaces accurate to about 10 %);
 //! * `sticking_over_affine_size`: the same for sticking over affine (the paper:
-//!   comparable in size);
+//!   comparable in size). The affine surface is the frictionless one on both paths:
+//!   Fig 9 draws only that one and §3.4 compares every surface with it (citing
+//!   friction as minor under affine motion), unlike the compaction curves, which
+//!   `compaction_2d` sets against the affine run with the same friction;
 //! * `affine_probe_size_error`: the size of the affine probe's surface over that of
 //!   the affine construction on the compacted network's own contacts through the
 //!   same nine directions, minus one, the larger over the two paths. The
