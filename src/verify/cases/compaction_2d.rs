@@ -174,12 +174,6 @@ fn run(ctx: &CaseContext, path: StrainPath) -> Result<Vec<Measured>> {
         .iter()
         .map(|r| r.deviation.normal.max(r.deviation.tangential))
         .fold(0.0, f64::max);
-    // §3.1: hydrostatic affine straining gives no slip, so friction cannot act.
-    let affine_friction_effect = Measured::new(
-        "affine_friction_effect",
-        (affine_sticking - affine).abs() / affine.abs(),
-        0.0,
-    );
     let mut measured = if quick {
         vec![
             Measured::new(
@@ -235,7 +229,12 @@ fn run(ctx: &CaseContext, path: StrainPath) -> Result<Vec<Measured>> {
         ]
     };
     if path == StrainPath::Hydrostatic {
-        measured.push(affine_friction_effect);
+        // §3.1: hydrostatic affine straining gives no slip, so friction cannot act.
+        measured.push(Measured::new(
+            "affine_friction_effect",
+            (affine_sticking - affine).abs() / affine.abs(),
+            0.0,
+        ));
     }
     Ok(measured)
 }
