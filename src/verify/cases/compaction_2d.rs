@@ -52,20 +52,16 @@
 //! affine motion against D, Figs 7–8) and
 //! `<case>.csv` (every increment of every run) to the report directory.
 
-use super::ballistic_deposition_2d::fill_box;
+use super::compacted_deposit::compacted;
 use crate::error::Result;
-use crate::generate::distribution::SizeDistribution;
 use crate::output::plot::{Panel, Series, write_svg};
-use crate::quasistatic::compaction::{CompactionRecord, StrainPath, compact};
-use crate::quasistatic::network::{Constraint, Friction, Network, NetworkSettings};
+use crate::quasistatic::compaction::{CompactionRecord, StrainPath};
+use crate::quasistatic::network::{Constraint, Friction};
 use crate::verify::{CaseContext, Measured};
 use std::fmt::Write;
 
-const TARGET_DENSITY: f64 = 0.85;
 /// The window over which the stress and Z at the target are averaged.
 const WINDOW: f64 = 0.84;
-const AREA_STEP: f64 = 1e-3;
-const SIGMA_Y: f64 = 1.0;
 
 struct Run {
     name: &'static str,
@@ -82,29 +78,9 @@ pub fn closed_die(ctx: &CaseContext) -> Result<Vec<Measured>> {
     run(ctx, StrainPath::ClosedDie)
 }
 
-/// The settings this case and `yield_surface_2d` compact the deposit of width
-/// `width` with.
-pub(super) fn compaction_settings(
-    friction: Friction,
-    rotation: bool,
-    constraint: Constraint,
-    width: f64,
-) -> NetworkSettings {
-    // The deposit fills a square box: its height is its width.
-    let mut settings = NetworkSettings::redanz_fleck(SIGMA_Y, 1.0, friction, rotation, constraint)
-        .scaled_to_box(width, 1.0);
-    // The loose top of the W = 80R deposit collapses at near-zero stress without
-    // settling (docs/verification-notes.md); those increments are carried over and
-    // recorded, and the callers check the states they draw conclusions from
-    // (`unconverged_increments_near_target`; the probed state of yield_surface_2d).
-    settings.carry_over = true;
-    settings
-}
-
 fn run(ctx: &CaseContext, path: StrainPath) -> Result<Vec<Measured>> {
     let quick = ctx.spec.name.ends_with("_quick");
     let width = if quick { 20.0 } else { 80.0 };
-    let packing = fill_box(&SizeDistribution::Uniform { min: 0.9, max: 1.1 }, 1, width)?;
     let variants: [(&'static str, Friction, bool, Constraint); 6] = [
         ("affine", Friction::Frictionless, true, Constraint::Affine),
         (
@@ -125,15 +101,13 @@ fn run(ctx: &CaseContext, path: StrainPath) -> Result<Vec<Measured>> {
     ];
     let mut runs = Vec::new();
     for (name, friction, rotation, constraint) in variants {
-        let settings = compaction_settings(friction, rotation, constraint, width);
-        let mut net = Network::new(&packing, settings);
-        let records = compact(&mut net, path, AREA_STEP, TARGET_DENSITY).map_err(|e| {
+        let c = compacted(width, path, friction, rotation, constraint).map_err(|e| {
             crate::error::TampError::Other(format!("{}, {name}: {e}", ctx.spec.name))
         })?;
         runs.push(Run {
             name,
-            records,
-            final_stress: (net.stress().yy, net.stress_from_contacts().yy),
+            final_stress: (c.network.stress().yy, c.network.stress_from_contacts().yy),
+            records: c.records.clone(),
         });
     }
     let at_target = |name: &str, f: fn(&CompactionRecord) -> f64| {

@@ -4,6 +4,7 @@
 mod affine_yield_2d;
 mod ballistic_deposition_2d;
 mod binary_packing;
+mod compacted_deposit;
 mod compaction_2d;
 mod density_segregation;
 mod energy_conservation_elastic;

@@ -36,24 +36,23 @@
 //! are plotted, not checked: the paper finds both about half the affine–affine size,
 //! tamp 0.79 and 0.21 at W = 20R (docs/verification-notes.md says why).
 //!
+//! The compacted states are `compacted_deposit`'s, shared with `compaction_2d`: in
+//! a full-tier run this case probes the states those cases left.
+//!
 //! Writes `<case>.svg` (Fig 9: the surfaces of each path) and `<case>.csv` (every
 //! reloading increment of every probe).
 
-use super::ballistic_deposition_2d::fill_box;
-use super::compaction_2d::compaction_settings;
+use super::compacted_deposit::compacted;
 use crate::error::{Result, TampError};
-use crate::generate::distribution::SizeDistribution;
 use crate::output::plot::{Panel, Series, write_svg};
 use crate::quasistatic::affine_yield::Sym2;
-use crate::quasistatic::compaction::{StrainPath, compact};
+use crate::quasistatic::compaction::StrainPath;
 use crate::quasistatic::network::{Constraint, Friction, Network};
 use crate::quasistatic::yield_probe::{ProbeSettings, YieldPoint, enclosed_area, probe, unload};
 use crate::verify::{CaseContext, Measured};
 use std::f64::consts::FRAC_1_SQRT_2;
 use std::fmt::Write;
 
-const TARGET_DENSITY: f64 = 0.85;
-const AREA_STEP: f64 = 1e-3;
 const DIRECTIONS: usize = 9;
 /// Fig 10's labels: compacted with local rearrangement, probed affinely, and the
 /// reverse (frictionless both).
@@ -110,7 +109,6 @@ fn affine_construction(net: &Network, rate: Sym2) -> Sym2 {
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let quick = ctx.spec.name.ends_with("_quick");
     let width = if quick { 20.0 } else { 80.0 };
-    let packing = fill_box(&SizeDistribution::Uniform { min: 0.9, max: 1.1 }, 1, width)?;
     let variants: [(&'static str, Friction, Constraint); 3] = [
         ("affine", Friction::Frictionless, Constraint::Affine),
         ("mu = 0", Friction::Frictionless, Constraint::Die),
@@ -121,34 +119,27 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let mut affine_error: f64 = 0.0;
     let mut constructions = Vec::new();
     for path in [StrainPath::Hydrostatic, StrainPath::ClosedDie] {
-        let mut compacted = Vec::new();
+        let mut nets = Vec::new();
         for (variant, friction, constraint) in variants {
             let context = |e: String| {
                 TampError::Other(format!("{}, {path:?}, {variant}: {e}", ctx.spec.name))
             };
-            let net_settings = compaction_settings(friction, true, constraint, width);
-            let mut net = Network::new(&packing, net_settings);
-            let records = compact(&mut net, path, AREA_STEP, TARGET_DENSITY)
+            let c = compacted(width, path, friction, true, constraint)
                 .map_err(|e| context(e.to_string()))?;
             // The probes start from the last state alone; an avalanche on the way
             // that was carried over has been relaxed since.
-            let last = records.last().expect("compact records its start");
+            let last = c.records.last().expect("compact records its start");
             if !last.converged {
                 return Err(context(format!(
                     "the compacted state at D = {:.4} is out of balance (residual {:.2e})",
                     last.density, last.residual
                 )));
             }
+            let mut net = c.network.clone();
             net.settings.carry_over = false;
-            compacted.push((variant, net));
+            nets.push((variant, net));
         }
-        let network = |name: &str| {
-            &compacted
-                .iter()
-                .find(|(v, _)| *v == name)
-                .expect("variant")
-                .1
-        };
+        let network = |name: &str| &nets.iter().find(|(v, _)| *v == name).expect("variant").1;
         // (label, compacted network, constraint while probing); Fig 10 crosses the
         // frictionless constraints after hydrostatic compaction.
         let mut probes = vec![
@@ -160,11 +151,11 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
             probes.push((LR_AFFINE, network("mu = 0"), Constraint::Affine));
             probes.push((AFFINE_LR, network("affine"), Constraint::Die));
         }
-        for (variant, compacted, constraint) in probes {
+        for (variant, state, constraint) in probes {
             let context = |e: TampError| {
                 TampError::Other(format!("{}, {path:?}, {variant}: {e}", ctx.spec.name))
             };
-            let mut net = compacted.clone();
+            let mut net = state.clone();
             let unloaded_strain =
                 unload(&mut net, loading_direction(path), &settings).map_err(context)?;
             if net.settings.constraint != constraint {
@@ -181,7 +172,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
             if variant == "affine" {
                 let construction: Vec<Sym2> = points
                     .iter()
-                    .map(|p| affine_construction(compacted, p.direction))
+                    .map(|p| affine_construction(state, p.direction))
                     .collect();
                 let size = enclosed_area(
                     &construction
