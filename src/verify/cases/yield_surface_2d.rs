@@ -106,97 +106,33 @@ fn affine_construction(net: &Network, rate: Sym2) -> Sym2 {
     s
 }
 
+/// What the probes have measured so far.
+#[derive(Default)]
+struct Probed {
+    surfaces: Vec<Surface>,
+    /// The affine construction through the affine probe's directions, per path.
+    constructions: Vec<(StrainPath, Vec<Sym2>)>,
+    /// The larger |size(affine probe)/size(construction) − 1| over the paths.
+    affine_error: f64,
+}
+
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let quick = ctx.spec.name.ends_with("_quick");
     let width = if quick { 20.0 } else { 80.0 };
-    let variants: [(&'static str, Friction, Constraint); 3] = [
-        ("affine", Friction::Frictionless, Constraint::Affine),
-        ("mu = 0", Friction::Frictionless, Constraint::Die),
-        ("sticking", Friction::Sticking, Constraint::Die),
-    ];
-    let settings = ProbeSettings::redanz_fleck();
-    let mut surfaces = Vec::new();
-    let mut affine_error: f64 = 0.0;
-    let mut constructions = Vec::new();
+    let mut probed = Probed::default();
     for path in [StrainPath::Hydrostatic, StrainPath::ClosedDie] {
-        let mut nets = Vec::new();
-        for (variant, friction, constraint) in variants {
-            let context = |e: String| {
-                TampError::Other(format!("{}, {path:?}, {variant}: {e}", ctx.spec.name))
-            };
-            let c = compacted(width, path, friction, true, constraint)
-                .map_err(|e| context(e.to_string()))?;
-            // The probes start from the last state alone; an avalanche on the way
-            // that was carried over has been relaxed since.
-            let last = c.records.last().expect("compact records its start");
-            if !last.converged {
-                return Err(context(format!(
-                    "the compacted state at D = {:.4} is out of balance (residual {:.2e})",
-                    last.density, last.residual
-                )));
-            }
-            let mut net = c.network.clone();
-            net.settings.carry_over = false;
-            nets.push((variant, net));
-        }
-        let network = |name: &str| &nets.iter().find(|(v, _)| *v == name).expect("variant").1;
-        // (label, compacted network, constraint while probing); Fig 10 crosses the
-        // frictionless constraints after hydrostatic compaction.
-        let mut probes = vec![
-            ("affine", network("affine"), Constraint::Affine),
-            ("mu = 0", network("mu = 0"), Constraint::Die),
-            ("sticking", network("sticking"), Constraint::Die),
-        ];
-        if path == StrainPath::Hydrostatic {
-            probes.push((LR_AFFINE, network("mu = 0"), Constraint::Affine));
-            probes.push((AFFINE_LR, network("affine"), Constraint::Die));
-        }
-        for (variant, state, constraint) in probes {
-            let context = |e: TampError| {
-                TampError::Other(format!("{}, {path:?}, {variant}: {e}", ctx.spec.name))
-            };
-            let mut net = state.clone();
-            let unloaded_strain =
-                unload(&mut net, loading_direction(path), &settings).map_err(context)?;
-            if net.settings.constraint != constraint {
-                // Unloading belongs to the compaction; the probing constraint takes
-                // over at the unloaded state, where the network first finds its
-                // equilibrium under the new constraint.
-                net.settings.constraint = constraint;
-                net.increment(Sym2::new(0.0, 0.0, 0.0)).map_err(context)?;
-            }
-            let mut points = Vec::new();
-            for d in probe_directions() {
-                points.push(probe(&net, d, unloaded_strain, &settings).map_err(context)?);
-            }
-            if variant == "affine" {
-                let construction: Vec<Sym2> = points
-                    .iter()
-                    .map(|p| affine_construction(state, p.direction))
-                    .collect();
-                let size = enclosed_area(
-                    &construction
-                        .iter()
-                        .map(|s| (s.xx, s.yy))
-                        .collect::<Vec<_>>(),
-                )
-                .sqrt();
-                constructions.push((path, construction));
-                let probed = Surface {
-                    path,
-                    variant,
-                    points: points.clone(),
-                }
-                .size();
-                affine_error = affine_error.max((probed / size - 1.0).abs());
-            }
-            surfaces.push(Surface {
-                path,
-                variant,
-                points,
-            });
+        if let Err(e) = probe_path(ctx, width, path, &mut probed) {
+            // The surfaces finished before the failure are a result too (at W = 80R
+            // the hydrostatic path alone takes about an hour), so they are written.
+            write_report(ctx, &probed.surfaces, &probed.constructions)?;
+            return Err(e);
         }
     }
+    let Probed {
+        surfaces,
+        constructions,
+        affine_error,
+    } = probed;
     write_report(ctx, &surfaces, &constructions)?;
     let size = |path: StrainPath, variant: &str| {
         surfaces
@@ -222,6 +158,93 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         ),
         Measured::new("affine_probe_size_error", affine_error, 0.0),
     ])
+}
+
+/// Compact along `path` three ways, unload, and probe each state (and after
+/// hydrostatic compaction the crossed constraints of Fig 10) into `out`.
+fn probe_path(ctx: &CaseContext, width: f64, path: StrainPath, out: &mut Probed) -> Result<()> {
+    let variants: [(&'static str, Friction, Constraint); 3] = [
+        ("affine", Friction::Frictionless, Constraint::Affine),
+        ("mu = 0", Friction::Frictionless, Constraint::Die),
+        ("sticking", Friction::Sticking, Constraint::Die),
+    ];
+    let settings = ProbeSettings::redanz_fleck();
+    let mut nets = Vec::new();
+    for (variant, friction, constraint) in variants {
+        let context =
+            |e: String| TampError::Other(format!("{}, {path:?}, {variant}: {e}", ctx.spec.name));
+        let c = compacted(width, path, friction, true, constraint)
+            .map_err(|e| context(e.to_string()))?;
+        // The probes start from the last state alone; an avalanche on the way
+        // that was carried over has been relaxed since.
+        let last = c.records.last().expect("compact records its start");
+        if !last.converged {
+            return Err(context(format!(
+                "the compacted state at D = {:.4} is out of balance (residual {:.2e})",
+                last.density, last.residual
+            )));
+        }
+        let mut net = c.network.clone();
+        net.settings.carry_over = false;
+        nets.push((variant, net));
+    }
+    let network = |name: &str| &nets.iter().find(|(v, _)| *v == name).expect("variant").1;
+    // (label, compacted network, constraint while probing); Fig 10 crosses the
+    // frictionless constraints after hydrostatic compaction.
+    let mut probes = vec![
+        ("affine", network("affine"), Constraint::Affine),
+        ("mu = 0", network("mu = 0"), Constraint::Die),
+        ("sticking", network("sticking"), Constraint::Die),
+    ];
+    if path == StrainPath::Hydrostatic {
+        probes.push((LR_AFFINE, network("mu = 0"), Constraint::Affine));
+        probes.push((AFFINE_LR, network("affine"), Constraint::Die));
+    }
+    for (variant, state, constraint) in probes {
+        let context =
+            |e: TampError| TampError::Other(format!("{}, {path:?}, {variant}: {e}", ctx.spec.name));
+        let mut net = state.clone();
+        let unloaded_strain =
+            unload(&mut net, loading_direction(path), &settings).map_err(context)?;
+        if net.settings.constraint != constraint {
+            // Unloading belongs to the compaction; the probing constraint takes
+            // over at the unloaded state, where the network first finds its
+            // equilibrium under the new constraint.
+            net.settings.constraint = constraint;
+            net.increment(Sym2::new(0.0, 0.0, 0.0)).map_err(context)?;
+        }
+        let mut points = Vec::new();
+        for d in probe_directions() {
+            points.push(probe(&net, d, unloaded_strain, &settings).map_err(context)?);
+        }
+        if variant == "affine" {
+            let construction: Vec<Sym2> = points
+                .iter()
+                .map(|p| affine_construction(state, p.direction))
+                .collect();
+            let size = enclosed_area(
+                &construction
+                    .iter()
+                    .map(|s| (s.xx, s.yy))
+                    .collect::<Vec<_>>(),
+            )
+            .sqrt();
+            out.constructions.push((path, construction));
+            let probed = Surface {
+                path,
+                variant,
+                points: points.clone(),
+            }
+            .size();
+            out.affine_error = out.affine_error.max((probed / size - 1.0).abs());
+        }
+        out.surfaces.push(Surface {
+            path,
+            variant,
+            points,
+        });
+    }
+    Ok(())
 }
 
 fn write_report(
