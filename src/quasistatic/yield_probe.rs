@@ -28,6 +28,11 @@
 //! `unload_to` of its loaded value. Not to zero: a network with no force left has no
 //! stiffness to tell FIRE where the cylinders belong, and the paper's surfaces near
 //! Σ = 0 are hand-sketched anyway.
+//!
+//! **Equilibrium.** Every increment is relaxed to static equilibrium by the network's
+//! FIRE corrector. A network whose settings allow `carry_over` may commit one out of
+//! balance; `Unloading::unconverged` and `YieldPoint::unconverged` count those, so a
+//! caller can refuse a surface read off such states.
 
 use super::affine_yield::Sym2;
 use super::network::Network;
@@ -66,9 +71,17 @@ fn scaled(d: Sym2, by: f64) -> Sym2 {
     Sym2::new(d.xx * by, d.yy * by, d.xy * by)
 }
 
-/// Unload `net` elastically against the unit loading direction `loading`; returns
-/// the strain it took, the elastic range that sizes `probe`'s first increment.
-pub fn unload(net: &mut Network, loading: Sym2, settings: &ProbeSettings) -> Result<f64> {
+/// The unloaded state's record.
+#[derive(Clone, Copy, Debug)]
+pub struct Unloading {
+    /// The strain it took: the elastic range that sizes `probe`'s first increment.
+    pub strain: f64,
+    /// Unloading increments committed out of balance (`NetworkSettings::carry_over`).
+    pub unconverged: usize,
+}
+
+/// Unload `net` elastically against the unit loading direction `loading`.
+pub fn unload(net: &mut Network, loading: Sym2, settings: &ProbeSettings) -> Result<Unloading> {
     let s_loaded = work_conjugate(net.stress(), loading);
     if s_loaded <= 0.0 {
         return Err(TampError::Other(format!(
@@ -79,7 +92,7 @@ pub fn unload(net: &mut Network, loading: Sym2, settings: &ProbeSettings) -> Res
     let target = settings.unload_to * s_loaded;
     // A first step far inside the elastic range measures the unloading stiffness.
     let first = 1e-2 * settings.offset;
-    net.increment(scaled(loading, -first))?;
+    let mut unconverged = usize::from(!net.increment(scaled(loading, -first))?.converged);
     let mut strain = first;
     let mut s = work_conjugate(net.stress(), loading);
     let stiffness = (s_loaded - s) / first;
@@ -103,7 +116,8 @@ pub fn unload(net: &mut Network, loading: Sym2, settings: &ProbeSettings) -> Res
         // Aimed below the target so round-off cannot leave it just above.
         let remaining = (s - 0.5 * target) / secant;
         for _ in 0..10 {
-            net.increment(scaled(loading, -remaining / 10.0))?;
+            let report = net.increment(scaled(loading, -remaining / 10.0))?;
+            unconverged += usize::from(!report.converged);
             increments += 1;
         }
         strain += remaining;
@@ -113,7 +127,10 @@ pub fn unload(net: &mut Network, loading: Sym2, settings: &ProbeSettings) -> Res
             secant = (before - s) / remaining;
         }
     }
-    Ok(strain)
+    Ok(Unloading {
+        strain,
+        unconverged,
+    })
 }
 
 /// One reloading curve and the yield point on it.
@@ -127,6 +144,8 @@ pub struct YieldPoint {
     pub elastic_stiffness: f64,
     /// (ε, Σ) after each reloading increment, starting at the unloaded state.
     pub curve: Vec<(f64, Sym2)>,
+    /// Reloading increments committed out of balance (`NetworkSettings::carry_over`).
+    pub unconverged: usize,
 }
 
 /// Reload a copy of the unloaded network along the unit direction `direction` until
@@ -143,7 +162,7 @@ pub fn probe(
     let s0 = work_conjugate(start, direction);
     let mut curve = vec![(0.0, start)];
     let first = 0.25 * elastic_strain.min(settings.step);
-    net.increment(scaled(direction, first))?;
+    let mut unconverged = usize::from(!net.increment(scaled(direction, first))?.converged);
     curve.push((first, net.stress()));
     let k0 = (work_conjugate(net.stress(), direction) - s0) / first;
     if k0 <= 0.0 {
@@ -157,7 +176,7 @@ pub fn probe(
     let mut strain = first;
     while strain < settings.max_strain {
         strain += settings.step;
-        net.increment(scaled(direction, settings.step))?;
+        unconverged += usize::from(!net.increment(scaled(direction, settings.step))?.converged);
         curve.push((strain, net.stress()));
         let (a, b) = (curve[curve.len() - 2], curve[curve.len() - 1]);
         let (ga, gb) = (gap(a), gap(b));
@@ -173,6 +192,7 @@ pub fn probe(
                 ),
                 elastic_stiffness: k0,
                 curve,
+                unconverged,
             });
         }
     }
@@ -224,9 +244,11 @@ mod tests {
         let overlap = (8.0 - (net.centres[4].x - net.centres[0].x)) / 4.0;
         let settings = ProbeSettings::redanz_fleck();
         let d = Sym2::new(-1.0, 0.0, 0.0);
-        let unloaded_strain = unload(&mut net, d, &settings).unwrap();
+        let unloaded = unload(&mut net, d, &settings).unwrap();
         assert!(work_conjugate(net.stress(), d) <= settings.unload_to * (-loaded));
-        let point = probe(&net, d, unloaded_strain, &settings).unwrap();
+        assert_eq!(unloaded.unconverged, 0);
+        let point = probe(&net, d, unloaded.strain, &settings).unwrap();
+        assert_eq!(point.unconverged, 0);
         // By the offset rule the plastic shortening at yield is ε_offset of the
         // end-to-end distance 8, a quarter of it per contact, on eq 2: the yield force
         // is the loaded one hardened to u + 2ε_offset. The 10⁻³ covers the secant k₀
@@ -241,13 +263,27 @@ mod tests {
         let mut net = compressed_chain();
         let loaded = net.stress().xx;
         let settings = ProbeSettings::redanz_fleck();
-        let unloaded_strain = unload(&mut net, Sym2::new(-1.0, 0.0, 0.0), &settings).unwrap();
-        let point = probe(&net, Sym2::new(1.0, 0.0, 0.0), unloaded_strain, &settings).unwrap();
+        let unloaded = unload(&mut net, Sym2::new(-1.0, 0.0, 0.0), &settings).unwrap();
+        let point = probe(&net, Sym2::new(1.0, 0.0, 0.0), unloaded.strain, &settings).unwrap();
         assert!(
             point.stress.xx.abs() < 1e-6 * loaded.abs(),
             "{:?}",
             point.stress
         );
+    }
+
+    #[test]
+    fn increments_committed_out_of_balance_are_counted() {
+        let mut net = compressed_chain();
+        let settings = ProbeSettings::redanz_fleck();
+        let d = Sym2::new(-1.0, 0.0, 0.0);
+        // One FIRE iteration cannot bring the chain to 1e-8 after the predictor.
+        net.settings.max_iterations = 1;
+        net.settings.carry_over = true;
+        let unloaded = unload(&mut net, d, &settings).unwrap();
+        assert!(unloaded.unconverged > 0, "{unloaded:?}");
+        let point = probe(&net, d, unloaded.strain, &settings).unwrap();
+        assert!(point.unconverged > 0);
     }
 
     #[test]
