@@ -52,22 +52,27 @@
 //! affine motion against D, Figs 7–8) and
 //! `<case>.csv` (every increment of every run) to the report directory.
 
-use super::compacted_deposit::compacted;
+use super::compacted_deposit::{Compacted, compacted};
 use crate::error::Result;
 use crate::output::plot::{Panel, Series, write_svg};
 use crate::quasistatic::compaction::{CompactionRecord, StrainPath};
 use crate::quasistatic::network::{Constraint, Friction};
 use crate::verify::{CaseContext, Measured};
 use std::fmt::Write;
+use std::sync::Arc;
 
 /// The window over which the stress and Z at the target are averaged.
 const WINDOW: f64 = 0.84;
 
 struct Run {
     name: &'static str,
-    records: Vec<CompactionRecord>,
-    /// (Σ₂₂ by eq 13, Σ₂₂ from the contacts) at the end.
-    final_stress: (f64, f64),
+    compacted: Arc<Compacted>,
+}
+
+impl Run {
+    fn records(&self) -> &[CompactionRecord] {
+        &self.compacted.records
+    }
 }
 
 pub fn hydrostatic(ctx: &CaseContext) -> Result<Vec<Measured>> {
@@ -101,19 +106,15 @@ fn run(ctx: &CaseContext, path: StrainPath) -> Result<Vec<Measured>> {
     ];
     let mut runs = Vec::new();
     for (name, friction, rotation, constraint) in variants {
-        let c = compacted(width, path, friction, rotation, constraint).map_err(|e| {
+        let compacted = compacted(width, path, friction, rotation, constraint).map_err(|e| {
             crate::error::TampError::Other(format!("{}, {name}: {e}", ctx.spec.name))
         })?;
-        runs.push(Run {
-            name,
-            final_stress: (c.network.stress().yy, c.network.stress_from_contacts().yy),
-            records: c.records.clone(),
-        });
+        runs.push(Run { name, compacted });
     }
     let at_target = |name: &str, f: fn(&CompactionRecord) -> f64| {
         let run = runs.iter().find(|r| r.name == name).expect("variant");
         let window: Vec<f64> = run
-            .records
+            .records()
             .iter()
             .filter(|r| r.density >= WINDOW)
             .map(f)
@@ -131,10 +132,12 @@ fn run(ctx: &CaseContext, path: StrainPath) -> Result<Vec<Measured>> {
     let affine_sticking = at_target("affine sticking", stress);
     let sticking = runs.iter().find(|r| r.name == "sticking").expect("variant");
     write_report(ctx, &runs)?;
-    let gap = (sticking.final_stress.0 - sticking.final_stress.1) / sticking.final_stress.0;
+    // Σ₂₂ by eq 13 against Σ₂₂ from the contact forces, at the end.
+    let net = &sticking.compacted.network;
+    let gap = (net.stress().yy - net.stress_from_contacts().yy) / net.stress().yy;
     let unconverged = runs
         .iter()
-        .flat_map(|r| &r.records)
+        .flat_map(|r| r.records())
         .filter(|r| r.density >= WINDOW && !r.converged)
         .count() as f64;
     // The frictionless affine run only: a sticking cylinder may still rotate under
@@ -144,7 +147,7 @@ fn run(ctx: &CaseContext, path: StrainPath) -> Result<Vec<Measured>> {
         .iter()
         .find(|r| r.name == "affine")
         .expect("variant")
-        .records
+        .records()
         .iter()
         .map(|r| r.deviation.normal.max(r.deviation.tangential))
         .fold(0.0, f64::max);
@@ -220,7 +223,7 @@ fn write_report(ctx: &CaseContext, runs: &[Run]) -> Result<()> {
          normal_deviation,tangential_deviation,affine_tangential_over_normal,converged\n",
     );
     for run in runs {
-        for r in &run.records {
+        for r in run.records() {
             let _ = writeln!(
                 csv,
                 "{},{:.6},{:.6e},{:.6e},{:.6e},{:.4},{:.4},{},{:.3e},{:.4e},{:.4e},{:.4e},{}",
@@ -244,7 +247,7 @@ fn write_report(ctx: &CaseContext, runs: &[Run]) -> Result<()> {
     let name = &ctx.spec.name;
     crate::output::write_atomic(&ctx.report_dir.join(format!("{name}.csv")), csv.as_bytes())?;
     let curve = |run: &Run, f: fn(&CompactionRecord) -> f64| -> Vec<(f64, f64)> {
-        run.records.iter().map(|r| (r.density, f(r))).collect()
+        run.records().iter().map(|r| (r.density, f(r))).collect()
     };
     let mut stress = Vec::new();
     for run in runs {

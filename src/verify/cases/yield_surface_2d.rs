@@ -195,13 +195,21 @@ fn probe_path(ctx: &CaseContext, width: f64, path: StrainPath, out: &mut Probed)
                 last.density, last.residual
             )));
         }
-        // Probing commits an increment that runs out of FIRE iterations and counts it
-        // (`unconverged_probe_increments`) rather than stopping: the W = 80R closed-die
-        // frictionless network, which has not consolidated by D = 0.85, needs more than
-        // the cap on some reloading increments, and the other surfaces still stand.
-        nets.push((variant, c.network.clone()));
+        nets.push((variant, c));
     }
-    let network = |name: &str| &nets.iter().find(|(v, _)| *v == name).expect("variant").1;
+    // The networks keep the compaction's `carry_over`: a probe increment that runs out
+    // of FIRE iterations is committed and counted (`unconverged_probe_increments`)
+    // rather than ending the case. The W = 80R closed-die frictionless network, not
+    // consolidated at D = 0.85, needs more than the cap on some reloading increments,
+    // and the other surfaces still stand.
+    let network = |name: &str| {
+        &nets
+            .iter()
+            .find(|(v, _)| *v == name)
+            .expect("variant")
+            .1
+            .network
+    };
     // (label, compacted network, constraint while probing); Fig 10 crosses the
     // frictionless constraints after hydrostatic compaction.
     let mut probes = vec![
