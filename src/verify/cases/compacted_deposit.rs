@@ -19,8 +19,8 @@ use crate::quasistatic::network::{Constraint, Friction, Network, NetworkSettings
 use std::collections::BTreeMap;
 use std::sync::{Arc, Mutex};
 
-pub(super) const TARGET_DENSITY: f64 = 0.85;
-pub(super) const AREA_STEP: f64 = 1e-3;
+const TARGET_DENSITY: f64 = 0.85;
+const AREA_STEP: f64 = 1e-3;
 const SIGMA_Y: f64 = 1.0;
 const SEED: u64 = 1;
 
