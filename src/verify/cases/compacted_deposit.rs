@@ -22,7 +22,9 @@ use std::sync::{Arc, Mutex};
 const TARGET_DENSITY: f64 = 0.85;
 const AREA_STEP: f64 = 1e-3;
 const SIGMA_Y: f64 = 1.0;
-const SEED: u64 = 1;
+/// The deposit every case compacts and probes; the full tier of `compaction_2d`
+/// adds others for its frictionless quantities.
+pub(super) const SEED: u64 = 1;
 
 /// One compaction to the target: every increment's record and the final network.
 pub(super) struct Compacted {
@@ -52,17 +54,18 @@ fn compaction_settings(
 /// and the path's `Debug` forms).
 static KEPT: Mutex<BTreeMap<String, Arc<Compacted>>> = Mutex::new(BTreeMap::new());
 
-/// The deposit of width `width` compacted along `path` to D = 0.85, computed on the
-/// first call and kept for the rest of the process.
+/// The deposit of width `width` grown with `seed`, compacted along `path` to D = 0.85,
+/// computed on the first call and kept for the rest of the process.
 pub(super) fn compacted(
     width: f64,
+    seed: u64,
     path: StrainPath,
     friction: Friction,
     rotation: bool,
     constraint: Constraint,
 ) -> Result<Arc<Compacted>> {
     let settings = compaction_settings(friction, rotation, constraint, width);
-    let key = format!("{width:?} {path:?} {settings:?}");
+    let key = format!("{width:?} {seed} {path:?} {settings:?}");
     // Held while computing, so a second caller waits and then shares the result; a
     // caller that panicked cannot have left a half-made entry, so poisoning is moot.
     let mut kept = KEPT.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
@@ -71,12 +74,12 @@ pub(super) fn compacted(
     }
     let packing = fill_box(
         &SizeDistribution::Uniform { min: 0.9, max: 1.1 },
-        SEED,
+        seed,
         width,
     )?;
     let mut network = Network::new(&packing, settings);
     let records = compact(&mut network, path, AREA_STEP, TARGET_DENSITY)
-        .map_err(|e| TampError::Other(format!("W = {width}R, {path:?}: {e}")))?;
+        .map_err(|e| TampError::Other(format!("W = {width}R, seed {seed}, {path:?}: {e}")))?;
     let c = Arc::new(Compacted { records, network });
     kept.insert(key, Arc::clone(&c));
     Ok(c)
@@ -90,12 +93,24 @@ mod tests {
     fn a_kept_compaction_is_shared_and_equals_a_fresh_one() {
         let (width, path) = (10.0, StrainPath::ClosedDie);
         let (friction, rotation, constraint) = (Friction::Sticking, true, Constraint::Die);
-        let first = compacted(width, path, friction, rotation, constraint).unwrap();
-        let again = compacted(width, path, friction, rotation, constraint).unwrap();
+        let first = compacted(width, SEED, path, friction, rotation, constraint).unwrap();
+        let again = compacted(width, SEED, path, friction, rotation, constraint).unwrap();
         assert!(Arc::ptr_eq(&first, &again), "the second call recomputed");
         // The other friction is a different run, not the kept one.
-        let other = compacted(width, path, Friction::Frictionless, rotation, constraint).unwrap();
+        let other = compacted(
+            width,
+            SEED,
+            path,
+            Friction::Frictionless,
+            rotation,
+            constraint,
+        )
+        .unwrap();
         assert!(!Arc::ptr_eq(&first, &other));
+        // So is another deposit.
+        let reseeded = compacted(width, SEED + 1, path, friction, rotation, constraint).unwrap();
+        assert!(!Arc::ptr_eq(&first, &reseeded));
+        assert_ne!(reseeded.network.centres, first.network.centres);
 
         let packing = fill_box(
             &SizeDistribution::Uniform { min: 0.9, max: 1.1 },

@@ -46,7 +46,7 @@
 //! Writes `<case>.svg` (Fig 9: the surfaces of each path) and `<case>.csv` (every
 //! reloading increment of every probe).
 
-use super::compacted_deposit::compacted;
+use super::compacted_deposit::{SEED, compacted};
 use crate::error::{Result, TampError};
 use crate::output::plot::{Panel, Series, write_svg};
 use crate::quasistatic::affine_yield::Sym2;
@@ -184,7 +184,7 @@ fn probe_path(ctx: &CaseContext, width: f64, path: StrainPath, out: &mut Probed)
     for (variant, friction, constraint) in variants {
         let context =
             |e: String| TampError::Other(format!("{}, {path:?}, {variant}: {e}", ctx.spec.name));
-        let c = compacted(width, path, friction, true, constraint)
+        let c = compacted(width, SEED, path, friction, true, constraint)
             .map_err(|e| context(e.to_string()))?;
         // The probes start from the last state alone; an avalanche on the way
         // that was carried over has been relaxed since.
