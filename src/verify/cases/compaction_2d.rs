@@ -26,7 +26,7 @@
 //! The two frictionless quantities are means over the deposits of seeds 1, 2 and 3
 //! (each die run over the affine run on its own deposit): where a frictionless network
 //! jams is a draw, not a property of the packing law (`MORE_FRICTIONLESS`). The
-//! others, and the plots' other curves, are seed 1's.
+//! other quantities are seed 1's; the CSV and the plots carry every run.
 //!
 //! Quick tier, W = 20R: a quarter-width box is looser (D₀ 0.743 against 0.795) and a
 //! third of its cylinders touch a wall, whose contacts Z does not count, so the
