@@ -224,7 +224,8 @@ fn timed(
 fn status_of(result: &verify::CaseResult) -> &'static str {
     match result.status {
         Status::Pass => "pass",
-        Status::Fail => "fail",
+        Status::KnownDeviation => "known deviation",
+        Status::Fail | Status::UnexpectedPass => "fail",
         Status::Error
             if result
                 .error

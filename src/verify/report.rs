@@ -8,6 +8,8 @@ fn status(s: Status) -> &'static str {
         Status::Pass => "pass",
         Status::Fail => "**FAIL**",
         Status::Error => "**ERROR**",
+        Status::KnownDeviation => "known deviation",
+        Status::UnexpectedPass => "**UNEXPECTED PASS**",
     }
 }
 
@@ -65,7 +67,12 @@ pub fn markdown(r: &VerificationReport) -> String {
                 .paper_value
                 .map(|p| format!(" The paper states {p:e}."))
                 .unwrap_or_default();
-            let _ = writeln!(s, "- `{}`: {}{}", q.name, q.why, paper);
+            let deviation = q
+                .known_deviation
+                .as_deref()
+                .map(|d| format!(" tamp departs from this reference, as {d} records."))
+                .unwrap_or_default();
+            let _ = writeln!(s, "- `{}`: {}{}{}", q.name, q.why, paper, deviation);
         }
         for plot in &c.plots {
             let _ = writeln!(s, "\n![{plot}]({plot})");
