@@ -19,10 +19,12 @@
 //!
 //!   s(ε) = s₀ + k₀ (ε − ε_offset),
 //!
-//! with k₀ the secant stiffness of the first reloading step; Σ there (linearly
-//! interpolated between increments) is the yield point. The elastic strain is about
-//! 10⁻⁴ at D = 0.85 (F_N/k_unload over 2R), an order below the offset, so the point
-//! moves little with k₀.
+//! with k₀ the steepest secant stiffness of the reloading increments so far, the line
+//! drawn through the start of that increment (the offset method's compensation of a
+//! soft start: a compacted network's first, small reloading increment can be ten times
+//! softer than the next ones); Σ there (linearly interpolated between increments) is
+//! the yield point. The elastic strain is about 10⁻⁴ at D = 0.85 (F_N/k_unload over
+//! 2R), an order below the offset, so the point moves little with k₀.
 //!
 //! **Unloading** follows the loading direction backwards until s along it is at most
 //! `unload_to` of its loaded value. Not to zero: a network with no force left has no
@@ -140,7 +142,7 @@ pub struct YieldPoint {
     pub direction: Sym2,
     /// Σ at yield.
     pub stress: Sym2,
-    /// k₀, the secant stiffness of the first reloading increment.
+    /// k₀, the slope of the elastic line (`yield_in_last_increment`).
     pub elastic_stiffness: f64,
     /// (ε, Σ) after each reloading increment, starting at the unloaded state.
     pub curve: Vec<(f64, Sym2)>,
@@ -150,7 +152,8 @@ pub struct YieldPoint {
 
 /// Reload a copy of the unloaded network along the unit direction `direction` until
 /// it yields. `elastic_strain` sizes the first increment (the unloading strain is a
-/// good measure): it must stay elastic so that k₀ is the elastic stiffness.
+/// good measure): it stays within the elastic range, so the elastic line
+/// (`yield_in_last_increment`) is drawn from the start of the curve.
 pub fn probe(
     unloaded: &Network,
     direction: Sym2,
@@ -164,24 +167,22 @@ pub fn probe(
     let first = 0.25 * elastic_strain.min(settings.step);
     let mut unconverged = usize::from(!net.increment(scaled(direction, first))?.converged);
     curve.push((first, net.stress()));
-    let k0 = (work_conjugate(net.stress(), direction) - s0) / first;
-    if k0 <= 0.0 {
+    let k_first = (work_conjugate(net.stress(), direction) - s0) / first;
+    if k_first <= 0.0 {
         return Err(TampError::Other(format!(
-            "yield probe: no elastic stiffness along ({:.3}, {:.3}, {:.3}) (k₀ = {k0:.3e})",
+            "yield probe: no elastic stiffness along ({:.3}, {:.3}, {:.3}) (k₀ = {k_first:.3e})",
             direction.xx, direction.yy, direction.xy
         )));
     }
-    // Above the shifted elastic line: not yet yielded.
-    let gap = |(e, s): (f64, Sym2)| work_conjugate(s, direction) - s0 - k0 * (e - settings.offset);
+    let mut s_curve = vec![(0.0, s0), (first, work_conjugate(net.stress(), direction))];
     let mut strain = first;
     while strain < settings.max_strain {
         strain += settings.step;
         unconverged += usize::from(!net.increment(scaled(direction, settings.step))?.converged);
         curve.push((strain, net.stress()));
-        let (a, b) = (curve[curve.len() - 2], curve[curve.len() - 1]);
-        let (ga, gb) = (gap(a), gap(b));
-        if ga > 0.0 && gb <= 0.0 {
-            let t = ga / (ga - gb);
+        s_curve.push((strain, work_conjugate(net.stress(), direction)));
+        if let Some((t, k0)) = yield_in_last_increment(&s_curve, settings.offset) {
+            let (a, b) = (curve[curve.len() - 2], curve[curve.len() - 1]);
             let lerp = |x: f64, y: f64| x + t * (y - x);
             return Ok(YieldPoint {
                 direction,
@@ -200,6 +201,34 @@ pub fn probe(
         "yield probe: no yield along ({:.3}, {:.3}, {:.3}) within a reloading strain of {:.1e}",
         direction.xx, direction.yy, direction.xy, settings.max_strain
     )))
+}
+
+/// Whether the reloading curve s(ε) so far yields in its last increment: the
+/// fraction along it where s falls below the elastic line shifted by `offset`, and
+/// that line's slope k₀. The elastic line runs through the start of the steepest
+/// increment so far with its slope, as the offset method compensates a soft start
+/// (a "toe"): a compacted network's first reloading increment can be ten times softer
+/// than the next ones, and a line with its slope would put yield far up the
+/// hardening branch, or beyond `max_strain`.
+fn yield_in_last_increment(curve: &[(f64, f64)], offset: f64) -> Option<(f64, f64)> {
+    let n = curve.len();
+    if n < 2 {
+        return None;
+    }
+    let (anchor, k0) = curve
+        .windows(2)
+        .map(|w| (w[0], (w[1].1 - w[0].1) / (w[1].0 - w[0].0)))
+        .fold(None, |best: Option<((f64, f64), f64)>, (a, k)| match best {
+            Some((_, kb)) if kb >= k => best,
+            _ => Some((a, k)),
+        })?;
+    if k0 <= 0.0 {
+        return None;
+    }
+    // Above the shifted elastic line: not yet yielded.
+    let gap = |(e, s): (f64, f64)| s - anchor.1 - k0 * (e - anchor.0 - offset);
+    let (ga, gb) = (gap(curve[n - 2]), gap(curve[n - 1]));
+    (ga > 0.0 && gb <= 0.0).then(|| (ga / (ga - gb), k0))
 }
 
 /// The area enclosed by Σ = 0 and the yield points in the (Σ₁₁, Σ₂₂) plane, taken in
@@ -256,6 +285,52 @@ mod tests {
         let hardened = |strain: f64| loading_force(overlap + 2.0 * strain, 0.5, 1.0);
         let expected = hardened(settings.offset) / hardened(0.0);
         assert_relative_eq!(point.stress.xx / loaded, expected, max_relative = 1e-3);
+    }
+
+    /// Reloading increments of a curve that is soft for its first 2.5e-5 (slope 60)
+    /// when `toe`, then elastic (slope 800) until s = 0.24, where it yields and hardens
+    /// slowly (slope 10): the shape of a compacted network's reloading whose first
+    /// increment is soft (seed 8's closed die sticking network, W = 20R, probed at
+    /// ψ = 157.5°, has slopes 59, 679, 823, 697, then under 200).
+    fn toe_curve(toe: bool) -> Vec<(f64, f64)> {
+        let elastic_from = if toe { 2.5e-5 } else { 0.0 };
+        let s_toe = 60.0 * elastic_from;
+        let knee = elastic_from + (0.24 - s_toe) / 800.0;
+        let s_at = |e: f64| {
+            if e <= elastic_from {
+                60.0 * e
+            } else if e <= knee {
+                s_toe + 800.0 * (e - elastic_from)
+            } else {
+                0.24 + 10.0 * (e - knee)
+            }
+        };
+        let mut strains = vec![0.0, 2.5e-5];
+        while strains.last().unwrap() < &5e-3 {
+            strains.push(strains.last().unwrap() + 1e-4);
+        }
+        strains.into_iter().map(|e| (e, s_at(e))).collect()
+    }
+
+    fn first_yield(curve: &[(f64, f64)], offset: f64) -> Option<f64> {
+        (2..=curve.len()).find_map(|n| {
+            yield_in_last_increment(&curve[..n], offset).map(|(t, _)| {
+                let (a, b) = (curve[n - 2], curve[n - 1]);
+                a.1 + t * (b.1 - a.1)
+            })
+        })
+    }
+
+    #[test]
+    fn a_soft_first_increment_does_not_move_the_yield_point() {
+        let offset = ProbeSettings::redanz_fleck().offset;
+        let without = first_yield(&toe_curve(false), offset).expect("yields");
+        let with = first_yield(&toe_curve(true), offset).expect("yields");
+        // Past the knee at s = 0.24 the curve gains about 10 × the offset strain.
+        assert!((without - 0.2501).abs() < 1e-4, "{without}");
+        // Only the start of the elastic part moves, so the point does not; the
+        // first increment's secant (slope 60) would not find yield by ε = 5e-3.
+        assert!((with - without).abs() < 1e-9, "{with} against {without}");
     }
 
     #[test]
