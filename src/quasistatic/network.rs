@@ -177,6 +177,22 @@ struct ContactHistory {
     tangential_force: f64,
 }
 
+/// A force-carrying contact, as `Network::contact_forces` reports it.
+#[derive(Clone, Copy, Debug)]
+pub struct ContactForce {
+    /// n, from i to j.
+    pub normal: Vec2,
+    /// l = xⱼ − xᵢ.
+    pub branch: Vec2,
+    /// F_N.
+    pub normal_force: f64,
+    /// The largest overlap u_N the contact has reached: where its loading branch
+    /// (eq 2) resumes.
+    pub max_overlap: f64,
+    /// R₁R₂/(R₁ + R₂).
+    pub effective_radius: f64,
+}
+
 /// A contact evaluated at trial positions.
 #[derive(Clone, Copy, Debug)]
 struct ContactState {
@@ -950,17 +966,20 @@ impl Network {
         self.height *= 1.0 + de.yy;
     }
 
-    /// (normal n from i to j, branch l = xⱼ − xᵢ, F_N) of every force-carrying contact.
-    pub fn contact_forces(&self) -> Vec<(Vec2, Vec2, f64)> {
+    /// Every force-carrying contact.
+    pub fn contact_forces(&self) -> Vec<ContactForce> {
         self.contacts
             .iter()
             .filter(|c| c.normal_force > 0.0)
             .map(|c| {
-                (
-                    c.normal,
-                    self.centres[c.j] - self.centres[c.i],
-                    c.normal_force,
-                )
+                let (ri, rj) = (self.radii[c.i], self.radii[c.j]);
+                ContactForce {
+                    normal: c.normal,
+                    branch: self.centres[c.j] - self.centres[c.i],
+                    normal_force: c.normal_force,
+                    max_overlap: c.max_overlap,
+                    effective_radius: ri * rj / (ri + rj),
+                }
             })
             .collect()
     }

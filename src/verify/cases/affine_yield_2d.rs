@@ -166,7 +166,8 @@ fn write_surface(
         }
         surface.push(analytic(path, (e11, e22), (r11, r22), d, z0));
         let mut s = (0.0, 0.0);
-        for (n, l, f) in &contacts {
+        for c in &contacts {
+            let (n, l, f) = (c.normal, c.branch, c.normal_force);
             if r11 * n.x * n.x + r22 * n.y * n.y < 0.0 {
                 s.0 -= f * n.x * l.x / area;
                 s.1 -= f * n.y * l.y / area;
