@@ -1,7 +1,7 @@
 //! Hydrostatic and closed die compaction of a deposited cylinder packing (Redanz &
 //! Fleck 2001 §3.1–3.2, Figs 5–6) by the quasi-static network (`quasistatic::network`).
 //!
-//! Scene: the seed-1 polydispersed deposit (r uniform in [0.9R, 1.1R]) of
+//! Scene: the polydispersed deposits (r uniform in [0.9R, 1.1R]) of
 //! `ballistic_deposition_2d`, W = 80R (full tier) or W = 20R (quick tier), σ_y = 1,
 //! compacted from its deposited density to D = 0.85 in increments of 1e-3 of the box
 //! area, six ways: affine (every cylinder follows eqs 14–15, which prescribe
@@ -25,8 +25,9 @@
 //!
 //! The two frictionless quantities are means over the deposits of seeds 1, 2 and 3
 //! (each die run over the affine run on its own deposit): where a frictionless network
-//! jams is a draw, not a property of the packing law (`MORE_FRICTIONLESS`). The
-//! other quantities are seed 1's; the CSV and the plots carry every run.
+//! jams is a draw, not a property of the packing law (`MORE_SEEDS_FULL`). The
+//! other quantities are seed 1's. The plots draw seed 1's runs; the CSV carries
+//! every run.
 //!
 //! Quick tier, W = 20R: a quarter-width box is looser (D₀ 0.743 against 0.795) and a
 //! third of its cylinders touch a wall, whose contacts Z does not count, so the
@@ -34,14 +35,20 @@
 //! on the box: friction raises the stress (`frictionless_over_sticking_stress` < 1),
 //! sticking is comparable to affine (`sticking_over_affine_stress`), and Z drops by
 //! at most 0.5 from sticking to frictionless (`coordination_drop_frictionless`).
+//! Each is taken over the deposits of seeds 1–16 (`MORE_SEEDS_QUICK`), on which the
+//! μ = 0, sticking and affine sticking runs are repeated: the ordering as its largest
+//! ratio (it holds on every deposit), the others as means, since a bound on every
+//! network bounds their mean. Seed 1 alone passed all three; over sixteen deposits
+//! the Z drop and the closed-die sticking ratio do not, and their case files mark
+//! them as known deviations (docs/paper-discrepancies.md §24).
 //!
 //! Hydrostatic, both tiers: `affine_friction_effect`, the relative difference of the
 //! two affine runs' Σ₂₂, zero because affine hydrostatic straining prescribes no
 //! slip (§3.1).
 //!
 //! Both tiers: `equilibrium_gap_sticking`, (Σ₂₂ by eq 13 − Σ₂₂ from the contact
-//! forces)/Σ₂₂ of the sticking run at D = 0.85, zero when the free cylinders are in
-//! static equilibrium (eq 10).
+//! forces)/Σ₂₂ of the sticking run at D = 0.85 (the largest over the deposits that
+//! ran one), zero when the free cylinders are in static equilibrium (eq 10).
 //!
 //! `unconverged_increments_near_target`: increments with D ≥ 0.84 in any run whose
 //! FIRE relaxation ran out of iterations (`NetworkSettings::carry_over`); zero, so
@@ -69,20 +76,35 @@ use std::sync::Arc;
 /// The window over which the stress and Z at the target are averaged.
 const WINDOW: f64 = 0.84;
 
-/// Full tier: the frictionless runs (affine and die) on further deposits. A frictionless
-/// network jams where its path leads it, so one deposit is one draw: at W = 80R the
-/// hydrostatic onset ranged from D = 0.823 to beyond 0.85 and the stress at the target
-/// by a factor of 20 over three deposits and two tolerances
-/// (docs/verification-notes.md). The frictionless quantities are means over seed 1
-/// and these.
-const MORE_FRICTIONLESS: [(&str, &str, u64); 2] = [
-    ("affine seed 2", "mu = 0 seed 2", 2),
-    ("affine seed 3", "mu = 0 seed 3", 3),
-];
+/// A frictionless network jams where its path leads it, so one deposit is one draw:
+/// at W = 80R the hydrostatic onset ranged from D = 0.823 to beyond 0.85 over three
+/// deposits and two tolerances, and at W = 20R the frictionless network of 9 of 24
+/// deposits had not consolidated by D = 0.85 (docs/verification-notes.md). The
+/// quantities that involve it are therefore taken over several deposits: seed 1, whose
+/// six runs are drawn, and these, with the runs the quantities need.
+const MORE_SEEDS_QUICK: std::ops::RangeInclusive<u64> = 2..=16;
+const MORE_SEEDS_FULL: std::ops::RangeInclusive<u64> = 2..=3;
+/// On further deposits: the quick tier's quantities set the frictionless and the
+/// affine runs against the sticking one; at W = 80R a sticking run costs up to 40
+/// minutes, and the full tier averages only the frictionless quantities.
+const MORE_VARIANTS_QUICK: [&str; 3] = ["affine sticking", "mu = 0", "sticking"];
+const MORE_VARIANTS_FULL: [&str; 2] = ["affine", "mu = 0"];
 
 struct Run {
-    name: &'static str,
+    name: String,
+    /// The deposit's seed.
+    seed: u64,
     compacted: Arc<Compacted>,
+}
+
+/// The name of `variant`'s run on the deposit of `seed` (seed 1's runs keep the
+/// variant's own name).
+fn run_name(variant: &str, seed: u64) -> String {
+    if seed == SEED {
+        variant.to_string()
+    } else {
+        format!("{variant} seed {seed}")
+    }
 }
 
 impl Run {
@@ -120,32 +142,40 @@ fn run(ctx: &CaseContext, path: StrainPath) -> Result<Vec<Measured>> {
             Constraint::Die,
         ),
     ];
-    let more: &[(&str, &str, u64)] = if quick { &[] } else { &MORE_FRICTIONLESS };
-    let mut runs = Vec::new();
+    let (more_seeds, more_variants): (_, &[&str]) = if quick {
+        (MORE_SEEDS_QUICK, &MORE_VARIANTS_QUICK)
+    } else {
+        (MORE_SEEDS_FULL, &MORE_VARIANTS_FULL)
+    };
+    let seeds: Vec<u64> = std::iter::once(SEED).chain(more_seeds.clone()).collect();
     let seeded = variants
-        .into_iter()
-        .map(|(name, friction, rotation, constraint)| (name, SEED, friction, rotation, constraint))
-        .chain(more.iter().flat_map(|&(affine, die, seed)| {
-            [
-                (
-                    affine,
-                    seed,
-                    Friction::Frictionless,
-                    true,
-                    Constraint::Affine,
-                ),
-                (die, seed, Friction::Frictionless, true, Constraint::Die),
-            ]
+        .iter()
+        .map(|&v| (SEED, v))
+        .chain(more_seeds.flat_map(|seed| {
+            variants
+                .iter()
+                .filter(|v| more_variants.contains(&v.0))
+                .map(move |&v| (seed, v))
         }));
-    for (name, seed, friction, rotation, constraint) in seeded {
+    let mut runs = Vec::new();
+    for (seed, (variant, friction, rotation, constraint)) in seeded {
+        let name = run_name(variant, seed);
         let compacted =
             compacted(width, seed, path, friction, rotation, constraint).map_err(|e| {
                 crate::error::TampError::Other(format!("{}, {name}: {e}", ctx.spec.name))
             })?;
-        runs.push(Run { name, compacted });
+        runs.push(Run {
+            name,
+            seed,
+            compacted,
+        });
     }
-    let at_target = |name: &str, f: fn(&CompactionRecord) -> f64| {
-        let run = runs.iter().find(|r| r.name == name).expect("variant");
+    let run_of = |variant: &str, seed: u64| {
+        let name = run_name(variant, seed);
+        runs.iter().find(|r| r.name == name).expect("variant")
+    };
+    let at_seed = |variant: &str, seed: u64, f: fn(&CompactionRecord) -> f64| {
+        let run = run_of(variant, seed);
         let window: Vec<f64> = run
             .records()
             .iter()
@@ -154,6 +184,17 @@ fn run(ctx: &CaseContext, path: StrainPath) -> Result<Vec<Measured>> {
             .collect();
         window.iter().sum::<f64>() / window.len().max(1) as f64
     };
+    let at_target = |variant: &str, f: fn(&CompactionRecord) -> f64| at_seed(variant, SEED, f);
+    // Over the deposits that ran `variants`.
+    let over_seeds = |variants: &[&str], f: &dyn Fn(u64) -> f64| -> Vec<f64> {
+        seeds
+            .iter()
+            .filter(|&&s| s == SEED || variants.iter().all(|v| more_variants.contains(v)))
+            .map(|&s| f(s))
+            .collect()
+    };
+    let mean = |v: Vec<f64>| v.iter().sum::<f64>() / v.len() as f64;
+    let largest = |v: Vec<f64>| v.into_iter().fold(f64::NEG_INFINITY, f64::max);
     let stress = |r: &CompactionRecord| r.stress_yy;
     let z = |r: &CompactionRecord| r.coordination;
     // Each die run is set against the affine run with its own contact law: affine
@@ -163,11 +204,15 @@ fn run(ctx: &CaseContext, path: StrainPath) -> Result<Vec<Measured>> {
     // hydrostatic straining the affine slip is zero and the two affine runs agree.
     let affine = at_target("affine", stress);
     let affine_sticking = at_target("affine sticking", stress);
-    let sticking = runs.iter().find(|r| r.name == "sticking").expect("variant");
     write_report(ctx, &runs)?;
-    // Σ₂₂ by eq 13 against Σ₂₂ from the contact forces, at the end.
-    let net = &sticking.compacted.network;
-    let gap = (net.stress().yy - net.stress_from_contacts().yy) / net.stress().yy;
+    // Σ₂₂ by eq 13 against Σ₂₂ from the contact forces, at the end: the largest in
+    // magnitude over the sticking runs.
+    let gap = over_seeds(&["sticking"], &|s| {
+        let net = &run_of("sticking", s).compacted.network;
+        (net.stress().yy - net.stress_from_contacts().yy) / net.stress().yy
+    })
+    .into_iter()
+    .fold(0.0, |a: f64, g| if g.abs() > a.abs() { g } else { a });
     let unconverged = runs
         .iter()
         .flat_map(|r| r.records())
@@ -176,29 +221,34 @@ fn run(ctx: &CaseContext, path: StrainPath) -> Result<Vec<Measured>> {
     // The frictionless affine run only: a sticking cylinder may still rotate under
     // eqs 14–15, which prescribe translations, and its rolling is a real deviation
     // of the slip from the affine one (0.67 in the W = 20R closed die).
-    let affine_deviation = runs
-        .iter()
-        .find(|r| r.name == "affine")
-        .expect("variant")
+    let affine_deviation = run_of("affine", SEED)
         .records()
         .iter()
         .map(|r| r.deviation.normal.max(r.deviation.tangential))
         .fold(0.0, f64::max);
     let mut measured = if quick {
+        // The ordering holds for every deposit, so the largest ratio is checked; the
+        // comparisons the paper states as sizes are means over the deposits.
         vec![
             Measured::new(
                 "frictionless_over_sticking_stress",
-                at_target("mu = 0", stress) / at_target("sticking", stress),
+                largest(over_seeds(&["mu = 0", "sticking"], &|s| {
+                    at_seed("mu = 0", s, stress) / at_seed("sticking", s, stress)
+                })),
                 1.0,
             ),
             Measured::new(
                 "sticking_over_affine_stress",
-                at_target("sticking", stress) / affine_sticking,
+                mean(over_seeds(&["sticking", "affine sticking"], &|s| {
+                    at_seed("sticking", s, stress) / at_seed("affine sticking", s, stress)
+                })),
                 1.0,
             ),
             Measured::new(
                 "coordination_drop_frictionless",
-                at_target("sticking", z) - at_target("mu = 0", z),
+                mean(over_seeds(&["sticking", "mu = 0"], &|s| {
+                    at_seed("sticking", s, z) - at_seed("mu = 0", s, z)
+                })),
                 0.5,
             ),
             Measured::new("equilibrium_gap_sticking", gap, 0.0),
@@ -213,16 +263,12 @@ fn run(ctx: &CaseContext, path: StrainPath) -> Result<Vec<Measured>> {
             StrainPath::ClosedDie => (3.5, 3.0),
         };
         // Each frictionless die run over the affine run on its own deposit.
-        let frictionless: Vec<(&str, &str)> = std::iter::once(("affine", "mu = 0"))
-            .chain(more.iter().map(|&(affine, die, _)| (affine, die)))
-            .collect();
-        let over_seeds = |f: &dyn Fn(&str, &str) -> f64| {
-            frictionless.iter().map(|&(a, d)| f(a, d)).sum::<f64>() / frictionless.len() as f64
-        };
         vec![
             Measured::new(
                 "frictionless_over_affine_stress",
-                over_seeds(&|a, d| at_target(d, stress) / at_target(a, stress)),
+                mean(over_seeds(&["mu = 0", "affine"], &|s| {
+                    at_seed("mu = 0", s, stress) / at_seed("affine", s, stress)
+                })),
                 0.5,
             ),
             Measured::new(
@@ -232,7 +278,7 @@ fn run(ctx: &CaseContext, path: StrainPath) -> Result<Vec<Measured>> {
             ),
             Measured::new(
                 "coordination_frictionless",
-                over_seeds(&|_, d| at_target(d, z)),
+                mean(over_seeds(&["mu = 0"], &|s| at_seed("mu = 0", s, z))),
                 coordination.0,
             ),
             Measured::new(
@@ -289,8 +335,11 @@ fn write_report(ctx: &CaseContext, runs: &[Run]) -> Result<()> {
     let curve = |run: &Run, f: fn(&CompactionRecord) -> f64| -> Vec<(f64, f64)> {
         run.records().iter().map(|r| (r.density, f(r))).collect()
     };
+    // Seed 1's six runs are drawn; the other deposits' runs are in the CSV (sixteen
+    // deposits' curves would hide the variants' order).
+    let drawn: Vec<&Run> = runs.iter().filter(|r| r.seed == SEED).collect();
     let mut stress = Vec::new();
-    for run in runs {
+    for run in &drawn {
         stress.push(Series::line(
             &format!("-Sigma22, {}", run.name),
             curve(run, |r| -r.stress_yy),
@@ -300,20 +349,21 @@ fn write_report(ctx: &CaseContext, runs: &[Run]) -> Result<()> {
             curve(run, |r| -r.stress_xx),
         ));
     }
-    let coordination: Vec<Series> = runs
+    let coordination: Vec<Series> = drawn
         .iter()
-        .map(|run| Series::line(run.name, curve(run, |r| r.coordination)))
+        .map(|run| Series::line(&run.name, curve(run, |r| r.coordination)))
         .collect();
     // The first record is the deposit, before any increment; the affine run's
     // deviation is zero to round-off (`affine_run_deviation`) and is left out.
     let deviation = |f: fn(&CompactionRecord) -> f64| -> Vec<Series> {
-        runs.iter()
+        drawn
+            .iter()
             .map(|run| {
                 if run.name == "affine" {
                     // Kept, empty, so each variant has the same colour in every panel.
                     Series::line("affine (zero, not drawn)", Vec::new())
                 } else {
-                    Series::line(run.name, curve(run, f).into_iter().skip(1).collect())
+                    Series::line(&run.name, curve(run, f).into_iter().skip(1).collect())
                 }
             })
             .collect()
