@@ -174,13 +174,15 @@ pub fn probe(
             direction.xx, direction.yy, direction.xy
         )));
     }
-    let mut s_curve = vec![(0.0, s0), (first, work_conjugate(net.stress(), direction))];
     let mut strain = first;
     while strain < settings.max_strain {
         strain += settings.step;
         unconverged += usize::from(!net.increment(scaled(direction, settings.step))?.converged);
         curve.push((strain, net.stress()));
-        s_curve.push((strain, work_conjugate(net.stress(), direction)));
+        let s_curve: Vec<(f64, f64)> = curve
+            .iter()
+            .map(|&(e, stress)| (e, work_conjugate(stress, direction)))
+            .collect();
         if let Some((t, k0)) = yield_in_last_increment(&s_curve, settings.offset) {
             let (a, b) = (curve[curve.len() - 2], curve[curve.len() - 1]);
             let lerp = |x: f64, y: f64| x + t * (y - x);
