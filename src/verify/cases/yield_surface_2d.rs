@@ -30,10 +30,10 @@
 //!   construction is Appendix A's rule (eq A5) applied to the real contacts,
 //!   Σ(Ė) = −(1/V) Σ_{c: n·Ė·n < 0} F_c n ⊗ l_c: those that load carry their force,
 //!   hardened along eq 2 by the approach the offset strain gives them, and the others
-//!   unload rigidly. It is an independent, rigid-plastic evaluation that checks the
-//!   unload–reload machinery and the offset rule. (Without the hardening it falls
-//!   short by up to 6 % after closed die compaction: contacts transverse to the die
-//!   axis carry small overlaps u, and F ∝ √u hardens them most.);
+//!   unload rigidly. It is an independent evaluation, rigid-plastic but for that
+//!   hardening, that checks the unload–reload machinery and the offset rule. (Without the hardening it falls
+//!   short by up to 6 % after closed die compaction, where the contacts transverse
+//!   to the die axis likely carry small overlaps u, which F ∝ √u hardens most.);
 //! * `unconverged_probe_increments`: unloading and reloading increments, over every
 //!   surface drawn (Fig 10's included), whose FIRE relaxation ran out of iterations
 //!   and was committed out of balance; zero, so every yield point is read off static
