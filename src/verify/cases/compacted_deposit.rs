@@ -1,12 +1,12 @@
 //! The compacted deposits that `compaction_2d` and `yield_surface_2d` share
 //! (Redanz & Fleck 2001 §3.1–3.2 and §3.4 compact the same packing to D = 0.85).
 //!
-//! Both cases compact the seed-1 polydispersed deposit of `ballistic_deposition_2d`
-//! (r uniform in [0.9R, 1.1R], σ_y = 1) in a square box of width W to D = 0.85, in
-//! increments of 1e-3 of the box area, with the same settings. At W = 80R one such
-//! run takes up to about 40 minutes, and the yield surfaces need three of each
-//! path's six. Each (W, path, contact law, constraint) is therefore compacted once
-//! per process and kept: a full-tier `tamp verify` probes the states the compaction
+//! Both cases compact polydispersed deposits of `ballistic_deposition_2d` (r uniform
+//! in [0.9R, 1.1R], σ_y = 1; seed 1's, and in the quick tier those of seeds 2–16 too)
+//! in a square box of width W to D = 0.85, in increments of 1e-3 of the box area,
+//! with the same settings. At W = 80R one such run takes up to about 40 minutes, and
+//! the yield surfaces need three of each path's six. Each (W, seed, path, contact
+//! law, constraint) is therefore compacted once per process and kept: a full-tier `tamp verify` probes the states the compaction
 //! cases left, and only the probes cost `yield_surface_2d` time. The compaction is
 //! deterministic (seeded deposit, fixed iteration order), so a kept state is bit for
 //! bit the one the case would have computed itself; a case run alone computes it.
@@ -22,9 +22,19 @@ use std::sync::{Arc, Mutex};
 const TARGET_DENSITY: f64 = 0.85;
 const AREA_STEP: f64 = 1e-3;
 const SIGMA_Y: f64 = 1.0;
-/// The deposit every case compacts and probes; the full tier of `compaction_2d`
-/// adds others for its frictionless quantities.
+/// The deposit every case compacts, probes and draws; where a frictionless network
+/// jams is a draw, so the cases take their comparisons over further deposits too.
 pub(super) const SEED: u64 = 1;
+
+/// How a run on the deposit of `seed` is labelled in the cases' CSVs: seed 1's runs
+/// keep the variant's own name, the others' add their seed.
+pub(super) fn run_label(variant: &str, seed: u64) -> String {
+    if seed == SEED {
+        variant.to_string()
+    } else {
+        format!("{variant} seed {seed}")
+    }
+}
 
 /// One compaction to the target: every increment's record and the final network.
 pub(super) struct Compacted {

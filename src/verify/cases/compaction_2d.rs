@@ -64,7 +64,7 @@
 //! affine motion against D, Figs 7–8) and
 //! `<case>.csv` (every increment of every run) to the report directory.
 
-use super::compacted_deposit::{Compacted, SEED, compacted};
+use super::compacted_deposit::{Compacted, SEED, compacted, run_label};
 use crate::error::Result;
 use crate::output::plot::{Panel, Series, write_svg};
 use crate::quasistatic::compaction::{CompactionRecord, StrainPath};
@@ -95,16 +95,6 @@ struct Run {
     /// The deposit's seed.
     seed: u64,
     compacted: Arc<Compacted>,
-}
-
-/// The name of `variant`'s run on the deposit of `seed` (seed 1's runs keep the
-/// variant's own name).
-fn run_name(variant: &str, seed: u64) -> String {
-    if seed == SEED {
-        variant.to_string()
-    } else {
-        format!("{variant} seed {seed}")
-    }
 }
 
 impl Run {
@@ -159,7 +149,7 @@ fn run(ctx: &CaseContext, path: StrainPath) -> Result<Vec<Measured>> {
         }));
     let mut runs = Vec::new();
     for (seed, (variant, friction, rotation, constraint)) in seeded {
-        let name = run_name(variant, seed);
+        let name = run_label(variant, seed);
         let compacted =
             compacted(width, seed, path, friction, rotation, constraint).map_err(|e| {
                 crate::error::TampError::Other(format!("{}, {name}: {e}", ctx.spec.name))
@@ -171,7 +161,7 @@ fn run(ctx: &CaseContext, path: StrainPath) -> Result<Vec<Measured>> {
         });
     }
     let run_of = |variant: &str, seed: u64| {
-        let name = run_name(variant, seed);
+        let name = run_label(variant, seed);
         runs.iter().find(|r| r.name == name).expect("variant")
     };
     let at_seed = |variant: &str, seed: u64, f: fn(&CompactionRecord) -> f64| {

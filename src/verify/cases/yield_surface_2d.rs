@@ -31,9 +31,10 @@
 //!   Σ(Ė) = −(1/V) Σ_{c: n·Ė·n < 0} F_c n ⊗ l_c: those that load carry their force,
 //!   hardened along eq 2 by the approach the offset strain gives them, and the others
 //!   unload rigidly. It is an independent evaluation, rigid-plastic but for that
-//!   hardening, that checks the unload–reload machinery and the offset rule. (Without the hardening it falls
-//!   short by up to 6 % after closed die compaction, where the contacts transverse
-//!   to the die axis likely carry small overlaps u, which F ∝ √u hardens most.);
+//!   hardening, that checks the unload–reload machinery and the offset rule.
+//!   (Without the hardening it falls short by up to 6 % after closed die
+//!   compaction, where the contacts transverse to the die axis likely carry small
+//!   overlaps u, which F ∝ √u hardens most.);
 //! * `unconverged_probe_increments`: unloading and reloading increments, over every
 //!   surface drawn (Fig 10's included), whose FIRE relaxation ran out of iterations
 //!   and was committed out of balance; zero, so every yield point is read off static
@@ -51,7 +52,7 @@
 //! Writes `<case>.svg` (Fig 9: seed 1's surfaces of each path) and `<case>.csv`
 //! (every reloading increment of every probe, every deposit's).
 
-use super::compacted_deposit::{SEED, compacted};
+use super::compacted_deposit::{SEED, compacted, run_label};
 use crate::error::{Result, TampError};
 use crate::output::plot::{Panel, Series, write_svg};
 use crate::quasistatic::affine_yield::Sym2;
@@ -322,12 +323,7 @@ fn write_report(
          stress_yy_over_sigma_y,stress_xy_over_sigma_y,yield\n",
     );
     for s in surfaces {
-        // Seed 1's surfaces keep the variant's name, as in compaction_2d's CSV.
-        let variant = if s.seed == SEED {
-            s.variant.to_string()
-        } else {
-            format!("{} seed {}", s.variant, s.seed)
-        };
+        let variant = run_label(s.variant, s.seed);
         for p in &s.points {
             for (e, st) in &p.curve {
                 let _ = writeln!(
