@@ -1,4 +1,4 @@
-//! Cost of ONE contact evaluation (`ContactLaw::evaluate`) for every law in the
+//! Cost of ONE contact evaluation (`Composed::evaluate`) for every law in the
 //! library, each role measured on top of the simplest base it needs:
 //!
 //! - `normal/*`: each normal law alone (no damping, no tangential, no cohesion);
@@ -8,19 +8,26 @@
 //!
 //! Benchmark names are the scene-file law names. One contact geometry is used
 //! throughout (R* = 0.5 mm, δ = 1 µm, a relative velocity with both normal and
-//! tangential parts) so the numbers compare the laws, not the inputs. The law, the
-//! geometry and the pair properties go through `black_box`, so the law is dispatched
-//! at run time as in the simulation rather than constant-folded.
-//!
-//! A contact history is passed exactly as the simulation passes it: `Some` only when
-//! `law.has_history()`, otherwise `None` (the law then uses a scratch record).
+//! tangential parts) so the numbers compare the laws, not the inputs. The law is
+//! turned into its monomorphic type once (`ContactLaw::visit`), as the simulation
+//! does per run; its parameters, the geometry and the pair properties go through
+//! `black_box`, so nothing is constant-folded. The contact state is the law's own
+//! type, as in the simulation.
 //!
 //! Run with `cargo bench --bench contact_laws`.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
 use tamp::contact::damping::liggghts::LiggghtsModel;
-use tamp::contact::history::ContactHistory;
+use tamp::contact::damping::{Constant, CriticalFraction};
+use tamp::contact::model::{
+    CohesionModel, Composed, DampingModel, LawVisitor, NormalModel, StateOf, TangentialModel,
+};
+use tamp::contact::normal::{Hertz, Hysteretic, KuwabaraKono, Linear, Storakers, WaltonBraun};
+use tamp::contact::tangential::{
+    Coulomb, CundallStrack, HaffWerner, LiggghtsHistory, MindlinDeresiewicz, MindlinNoSlip,
+    storakers, walton_braun,
+};
 use tamp::contact::van_der_waals::VanDerWaals;
 use tamp::contact::{
     ContactGeometry, ContactLaw, damping::Damping, normal::NormalLaw, tangential::TangentialLaw,
@@ -81,7 +88,7 @@ fn law(
 /// Benchmark each `(name, law, geometry)` in the criterion group `group` (so ids read
 /// `group/name`).
 ///
-/// For laws with history the same record is evaluated over and over. The normal
+/// For laws with a state the same state is evaluated over and over. The normal
 /// laws with memory then sit on their loading branch (δ = δ_max every call), and
 /// the tangential springs saturate at the Coulomb limit within the first few
 /// hundred calls of warm-up, so what is timed is a steadily sliding contact: the
@@ -96,57 +103,65 @@ fn bench_group(c: &mut Criterion, group: &str, cases: Vec<(&str, ContactLaw, Con
     let pair = pair_properties();
     let mut group = c.benchmark_group(group);
     for (name, law, g) in cases {
-        let mut history = ContactHistory::default();
         group.bench_function(name, |b| {
-            // Branch once, outside the timed loop, as the simulation does (its
-            // contact loop is monomorphised on whether the law has history).
-            if law.has_history() {
-                b.iter(|| {
-                    black_box(black_box(&law).evaluate(
-                        black_box(&g),
-                        black_box(&pair),
-                        Some(&mut history),
-                        black_box(DT),
-                    ))
-                })
-            } else {
-                b.iter(|| {
-                    black_box(black_box(&law).evaluate(
-                        black_box(&g),
-                        black_box(&pair),
-                        None,
-                        black_box(DT),
-                    ))
-                })
-            }
+            law.visit(Timed {
+                bencher: b,
+                g: &g,
+                pair: &pair,
+            })
         });
     }
     group.finish();
+}
+
+/// Time one law as its own type, with a state of its own type.
+struct Timed<'a, 'b> {
+    bencher: &'a mut criterion::Bencher<'b>,
+    g: &'a ContactGeometry,
+    pair: &'a PairProperties,
+}
+
+impl LawVisitor for Timed<'_, '_> {
+    type Output = ();
+    fn visit<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel>(
+        self,
+        law: Composed<N, D, T, C>,
+    ) {
+        let mut state = StateOf::<N, T>::default();
+        self.bencher.iter(|| {
+            black_box(black_box(&law).evaluate(
+                black_box(self.g),
+                black_box(self.pair),
+                &mut state,
+                black_box(DT),
+            ))
+        })
+    }
 }
 
 fn bench(c: &mut Criterion) {
     let g = contact_geometry();
 
     let normal = [
-        NormalLaw::Linear { stiffness: 1e5 },
-        NormalLaw::Hertz,
-        NormalLaw::KuwabaraKono {
+        NormalLaw::Linear(Linear { stiffness: 1e5 }),
+        NormalLaw::Hertz(Hertz {}),
+        NormalLaw::KuwabaraKono(KuwabaraKono {
             dissipation_time: 1e-6,
-        },
-        NormalLaw::WaltonBraun {
+        }),
+        NormalLaw::WaltonBraun(WaltonBraun {
             loading_stiffness: 1e5,
             unloading_stiffness: 4e5,
-        },
-        NormalLaw::Hysteretic {
+        }),
+        NormalLaw::Hysteretic(Hysteretic {
             stiffness: 1e5,
             hysteresis: 0.5,
-        },
-        NormalLaw::Storakers {
+        }),
+        NormalLaw::Storakers(Storakers {
             min_with_hertz: false,
-        },
-        NormalLaw::Storakers {
+        }),
+        NormalLaw::Storakers(Storakers {
             min_with_hertz: true,
-        },
+        }),
     ];
     bench_group(
         c,
@@ -165,8 +180,8 @@ fn bench(c: &mut Criterion) {
             (
                 "critical_fraction",
                 law(
-                    NormalLaw::Hertz,
-                    Some(Damping::CriticalFraction { xi: 0.3 }),
+                    NormalLaw::Hertz(Hertz {}),
+                    Some(Damping::CriticalFraction(CriticalFraction { xi: 0.3 })),
                     None,
                     None,
                 ),
@@ -175,8 +190,8 @@ fn bench(c: &mut Criterion) {
             (
                 "constant",
                 law(
-                    NormalLaw::Hertz,
-                    Some(Damping::Constant { gamma_n: 1.0 }),
+                    NormalLaw::Hertz(Hertz {}),
+                    Some(Damping::Constant(Constant { gamma_n: 1.0 })),
                     None,
                     None,
                 ),
@@ -186,37 +201,43 @@ fn bench(c: &mut Criterion) {
     );
 
     let tangential = [
-        TangentialLaw::MindlinDeresiewicz,
-        TangentialLaw::Coulomb,
+        TangentialLaw::MindlinDeresiewicz(MindlinDeresiewicz),
+        TangentialLaw::Coulomb(Coulomb),
         // γ_s |v_t| ≈ 2e-3 N < μ F_n ≈ 1.5e-2 N: the viscous branch.
-        TangentialLaw::HaffWerner { damping: 0.1 },
-        TangentialLaw::CundallStrack { stiffness: 1e4 },
-        TangentialLaw::WaltonBraun { stiffness: 1e4 },
-        TangentialLaw::MindlinNoSlip,
-        TangentialLaw::Storakers { beta: 0.5 },
+        TangentialLaw::HaffWerner(HaffWerner { damping: 0.1 }),
+        TangentialLaw::CundallStrack(CundallStrack { stiffness: 1e4 }),
+        TangentialLaw::WaltonBraun(walton_braun::WaltonBraun { stiffness: 1e4 }),
+        TangentialLaw::MindlinNoSlip(MindlinNoSlip),
+        TangentialLaw::Storakers(storakers::Storakers { beta: 0.5 }),
         // ξ of liggghts_restitution e = 0.5 with Hertz: its tangential dashpot is part of
         // the law.
-        TangentialLaw::LiggghtsHistory {
+        TangentialLaw::LiggghtsHistory(LiggghtsHistory {
             model: LiggghtsModel::Hertz,
             xi: 0.196_7,
-        },
+        }),
     ];
     bench_group(
         c,
         "tangential",
         tangential
             .into_iter()
-            .map(|t| (t.name(), law(NormalLaw::Hertz, None, Some(t), None), g))
+            .map(|t| {
+                (
+                    t.name(),
+                    law(NormalLaw::Hertz(Hertz {}), None, Some(t), None),
+                    g,
+                )
+            })
             .collect(),
     );
 
-    let cohesive = law(NormalLaw::Hertz, None, None, Some(VDW));
+    let cohesive = law(NormalLaw::Hertz(Hertz {}), None, None, Some(VDW));
     bench_group(
         c,
         "cohesion",
         vec![
             // In contact the attraction is saturated at h_min.
-            ("van_der_waals_contact", cohesive.clone(), g),
+            ("van_der_waals_contact", cohesive, g),
             // A 10 nm gap, inside the 100 nm cut-off: no normal law, only A R*/(6h²).
             (
                 "van_der_waals_gap",

@@ -5,8 +5,8 @@
 //! `SimState` holds what the step loop changes: the particle arrays (force and torque
 //! included: the next step's first half-kick uses the last step's forces, which are
 //! stored rather than re-evaluated), Δt, step and time, the neighbour list's pairs,
-//! per-pair histories, reference positions and radii and build count, the per-facet
-//! wall histories, the force on each wall, each wall's displacement and velocity, the
+//! reference positions and radii and build count, the contact states (per pair and per
+//! touched wall facet, in the shape of the scene's laws), the force on each wall, each wall's displacement and velocity, the
 //! energy book (W, its scale, the last prescribed power that the trapezoidal work rule
 //! averages with, E_mech(0)), the running maximum overlap, the growth stage's target
 //! radii, and each pouring source's next event, count left, pending radius and random
@@ -17,8 +17,8 @@
 //! stability limits, the neighbour list's detector, skin and space, and each source's
 //! region, size law and schedule. The build is deterministic (the seed fixes every
 //! random draw), so what it rebuilds is what the interrupted run had. A checkpoint is
-//! therefore valid only for its scene: the file carries the scene's SHA-256 and
-//! tamp's version, and `Checkpoint::into_state` refuses any other.
+//! therefore valid only for its scene: the file carries the scene's SHA-256, tamp's
+//! version and the checkpoint format, and any other is refused.
 //!
 //! Why the restored run is bit-exact:
 //! - every double is written as the shortest decimal that reads back to it (serde_json
@@ -32,7 +32,6 @@
 //!
 //! JSON has no infinities or NaN; a run stops as unstable before one reaches the state.
 
-use crate::contact::history::ContactHistory;
 use crate::error::{Result, TampError};
 use crate::particles::{Particles, Vec3};
 use crate::simulation::Simulation;
@@ -41,9 +40,15 @@ use serde::de::DeserializeOwned;
 use serde::{Deserialize, Serialize};
 use std::path::Path;
 
+/// The layout of `SimState` this tamp writes and reads. Format 2 stores the contact
+/// states typed by the scene's laws (`contact_states`) and the `prescribed` flags;
+/// files without the field are format 1 (tamp before the typed contact states).
+pub const CHECKPOINT_FORMAT: u32 = 2;
+
 /// A checkpoint file: a state and the scene and tamp version it belongs to.
 #[derive(Serialize, Deserialize)]
 pub struct Checkpoint<T> {
+    pub checkpoint_format: u32,
     pub tamp_version: String,
     /// The commit that wrote it: a different commit of the same version is accepted,
     /// but may step differently, so the reader can warn.
@@ -55,6 +60,7 @@ pub struct Checkpoint<T> {
 impl<T> Checkpoint<T> {
     pub fn new(scene_sha256: &str, state: T) -> Self {
         Checkpoint {
+            checkpoint_format: CHECKPOINT_FORMAT,
             tamp_version: crate::VERSION.to_string(),
             git_commit: crate::GIT_COMMIT.to_string(),
             scene_sha256: scene_sha256.to_string(),
@@ -113,6 +119,26 @@ pub fn require_checkpoints_for_resume(resume: bool, checkpoint_every: u64) -> Re
 pub fn read_checkpoint<T: DeserializeOwned>(path: &Path) -> Result<T> {
     let bytes = std::fs::read(path)
         .map_err(|e| TampError::io(format!("reading checkpoint {}", path.display()), e))?;
+    // The format first, so that an older layout is named as such rather than as a
+    // missing field somewhere inside it.
+    #[derive(Deserialize)]
+    struct Format {
+        #[serde(default = "format_one")]
+        checkpoint_format: u32,
+    }
+    fn format_one() -> u32 {
+        1
+    }
+    if let Ok(Format { checkpoint_format }) = serde_json::from_slice::<Format>(&bytes)
+        && checkpoint_format != CHECKPOINT_FORMAT
+    {
+        return Err(TampError::input(
+            path.display().to_string(),
+            format!(
+                "is checkpoint format {checkpoint_format}; this tamp reads format {CHECKPOINT_FORMAT} only (it stores each contact's state in the shape of the scene's laws): run the scene again from the start"
+            ),
+        ));
+    }
     let de = &mut serde_json::Deserializer::from_slice(&bytes);
     serde_path_to_error::deserialize(de).map_err(|e| {
         let at = match e.path().to_string() {
@@ -134,7 +160,9 @@ pub struct SimState {
     step: u64,
     time: f64,
     neighbors: NeighborState,
-    wall_history: Vec<Vec<Vec<(u32, ContactHistory)>>>,
+    /// The per-pair and per-facet contact states, in the shape of the scene's laws
+    /// (`contact::states::ContactStates`).
+    contact_states: serde_json::Value,
     wall_force: Vec<Vec3>,
     walls: Vec<WallState>,
     external_work: f64,
@@ -149,7 +177,6 @@ pub struct SimState {
 #[derive(Serialize, Deserialize)]
 struct NeighborState {
     pairs: Vec<(u32, u32)>,
-    history: Vec<ContactHistory>,
     reference_position: Vec<Vec3>,
     reference_radius: Vec<f64>,
     builds: u64,
@@ -180,12 +207,11 @@ impl SimState {
             time: sim.time,
             neighbors: NeighborState {
                 pairs: n.pairs.clone(),
-                history: n.history.clone(),
                 reference_position: n.reference_position.clone(),
                 reference_radius: n.reference_radius.clone(),
                 builds: n.builds,
             },
-            wall_history: sim.wall_history.clone(),
+            contact_states: sim.states.to_json(),
             wall_force: sim.wall_force.clone(),
             walls: sim
                 .walls
@@ -218,9 +244,28 @@ impl SimState {
     /// (exit 2) a state that cannot belong to that scene.
     pub fn restore(self, sim: &mut Simulation) -> Result<()> {
         self.check_fits(sim)?;
+        let mut states = sim.states.clone();
+        states.load_json(self.contact_states).map_err(|e| {
+            TampError::input(
+                "checkpoint.contact_states",
+                format!("does not hold the states of the scene's contact laws: {e}"),
+            )
+        })?;
+        if !states.fits(
+            self.neighbors.pairs.len(),
+            self.particles.len(),
+            sim.walls.len(),
+        ) {
+            let rule = if states.is_kept() {
+                "lacks a state for each contact, which the scene's contact laws keep"
+            } else {
+                "holds contact states, but the scene's contact laws keep none"
+            };
+            return Err(TampError::input("checkpoint.contact_states", rule));
+        }
+        sim.states = states;
         let n = self.neighbors;
         sim.neighbors.pairs = n.pairs;
-        sim.neighbors.history = n.history;
         sim.neighbors.reference_position = n.reference_position;
         sim.neighbors.reference_radius = n.reference_radius;
         sim.neighbors.builds = n.builds;
@@ -238,7 +283,6 @@ impl SimState {
         sim.dt = self.dt;
         sim.step = self.step;
         sim.time = self.time;
-        sim.wall_history = self.wall_history;
         sim.wall_force = self.wall_force;
         sim.external_work = self.external_work;
         sim.external_work_scale = self.external_work_scale;
@@ -306,7 +350,7 @@ impl SimState {
             p.mass.len(),
             p.inertia.len(),
             p.material.len(),
-            p.motion.len(),
+            p.prescribed.len(),
         ];
         if lengths.iter().any(|&l| l != n) {
             return refuse(
@@ -330,21 +374,6 @@ impl SimState {
                     sim.target_radius.len()
                 ),
             );
-        }
-        let history_fits = if sim.law.has_history() {
-            nb.history.len() == nb.pairs.len()
-                && self.wall_history.len() == walls
-                && self.wall_history.iter().all(|h| h.len() == n)
-        } else {
-            nb.history.is_empty() && self.wall_history.is_empty()
-        };
-        if !history_fits {
-            let rule = if sim.law.has_history() {
-                "lacks a history for each contact, which the scene's contact law keeps"
-            } else {
-                "holds contact histories, but the scene's contact law keeps none"
-            };
-            return refuse("history", rule.to_string());
         }
         Ok(())
     }
@@ -391,6 +420,16 @@ mod tests {
         crate::scene::build(&scene).unwrap().sim
     }
 
+    /// Every number in a JSON value, in document order.
+    fn numbers(v: &serde_json::Value, out: &mut Vec<f64>) {
+        match v {
+            serde_json::Value::Number(x) => out.push(x.as_f64().unwrap()),
+            serde_json::Value::Array(a) => a.iter().for_each(|x| numbers(x, out)),
+            serde_json::Value::Object(o) => o.values().for_each(|x| numbers(x, out)),
+            _ => {}
+        }
+    }
+
     /// The bits of every double in a state, in a fixed order.
     fn bits(s: &SimState) -> Vec<u64> {
         let p = &s.particles;
@@ -400,16 +439,8 @@ mod tests {
             .chain(&p.torque)
             .chain(&s.wall_force);
         let vectors = vectors.chain(&s.neighbors.reference_position);
-        let histories = s
-            .neighbors
-            .history
-            .iter()
-            .chain(s.wall_history.iter().flatten().flatten().map(|(_, h)| h));
         let mut out: Vec<f64> = vectors.flat_map(|v| v.iter().copied()).collect();
-        for h in histories {
-            out.extend(h.tangential.iter().chain(&h.axis));
-            out.extend([h.max_overlap, h.turning_force, h.previous_normal_force]);
-        }
+        numbers(&s.contact_states, &mut out);
         for w in &s.walls {
             out.extend(w.displacement.iter().chain(&w.velocity));
         }
@@ -486,6 +517,27 @@ mod tests {
         assert!(
             err.to_string()
                 .starts_with("checkpoint.particles: holds 2 particles, but the scene builds 3"),
+            "{err}"
+        );
+    }
+
+    #[test]
+    fn a_checkpoint_of_an_older_format_is_refused_naming_the_format() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("old.json");
+        // Format 1 had no `checkpoint_format` field.
+        std::fs::write(
+            &path,
+            r#"{"tamp_version": "0.1.0", "git_commit": "e4fb2aa", "scene_sha256": "x", "state": {}}"#,
+        )
+        .unwrap();
+        let err = read_checkpoint::<Checkpoint<SimState>>(&path)
+            .err()
+            .expect("refused");
+        assert_eq!(err.exit_code(), 2);
+        assert!(
+            err.to_string()
+                .contains("is checkpoint format 1; this tamp reads format 2"),
             "{err}"
         );
     }

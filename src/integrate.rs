@@ -6,33 +6,26 @@
 //! LIGGGHTS. Spins follow the same kicks with torque/I; spheres need no orientation.
 //! Prescribed particles keep their velocity and are only drifted.
 
-use crate::particles::{Motion, Particles, Vec3};
+use crate::particles::{Particles, Vec3};
 
-/// Half kick of free particles' velocities. Returns nothing; prescribed velocities are re-imposed.
-pub fn kick(p: &mut Particles, half_dt: f64) {
+/// Half kick of the free particles' velocities, and of their spins when rotation is
+/// on (one pass over the particles); prescribed particles keep their velocity.
+pub fn kick(p: &mut Particles, half_dt: f64, rotation: bool) {
     for i in 0..p.len() {
-        match p.motion[i] {
-            Motion::Free => p.velocity[i] += p.force[i] * (half_dt / p.mass[i]),
-            Motion::Prescribed(v) => p.velocity[i] = v,
+        if !p.prescribed[i] {
+            p.velocity[i] += p.force[i] * (half_dt / p.mass[i]);
+            if rotation {
+                p.omega[i] += p.torque[i] * (half_dt / p.inertia[i]);
+            }
         }
     }
 }
 
-pub fn kick_spin(p: &mut Particles, half_dt: f64) {
-    for i in 0..p.len() {
-        if p.motion[i] == Motion::Free {
-            p.omega[i] += p.torque[i] * (half_dt / p.inertia[i]);
-        }
-    }
-}
-
-/// Drift all positions; returns the work gravity does during the drift
-/// (exact for a constant field: Σ m g·Δx).
 pub fn drift(p: &mut Particles, dt: f64, gravity: Option<&Vec3>) -> f64 {
     let mut work = 0.0;
     for i in 0..p.len() {
         let dx = p.velocity[i] * dt;
-        if let (Some(g), Motion::Free) = (gravity, p.motion[i]) {
+        if let (Some(g), false) = (gravity, p.prescribed[i]) {
             work += p.mass[i] * g.dot(&dx);
         }
         p.position[i] += dx;

@@ -27,7 +27,10 @@ pub struct Particles {
     /// Moment of inertia, already multiplied by the scene's rotational-inertia scale.
     pub inertia: Vec<f64>,
     pub material: Vec<usize>,
-    pub motion: Vec<Motion>,
+    /// Whether the particle moves at its prescribed velocity (`Motion::Prescribed`,
+    /// held in `velocity`) rather than by Newton–Euler: one flag, so the per-particle
+    /// passes and the contact loop read a byte, not the 32-byte `Motion`.
+    pub prescribed: Vec<bool>,
 }
 
 impl Particles {
@@ -67,7 +70,14 @@ impl Particles {
         self.inertia
             .push(inertia_scale * 0.4 * mass * radius * radius);
         self.material.push(material);
-        self.motion.push(motion);
+        self.prescribed
+            .push(matches!(motion, Motion::Prescribed(_)));
+    }
+
+    /// From now on particle `i` moves at velocity `v` whatever the force.
+    pub fn prescribe(&mut self, i: usize, v: Vec3) {
+        self.prescribed[i] = true;
+        self.velocity[i] = v;
     }
 
     pub fn translational_kinetic_energy(&self) -> f64 {

@@ -11,28 +11,29 @@
 //! tamp has; a clearly negative D means the integration is adding energy (unstable).
 
 use crate::boundary::{Boundary, shape::ShapeContact};
-use crate::contact::damping::liggghts::LiggghtsModel;
-use crate::contact::{
-    ContactGeometry, ContactLaw, history::ContactHistory, normal::NormalLaw,
-    tangential::TangentialLaw,
+use crate::contact::model::{
+    CohesionModel, Composed, DampingModel, LawVisitor, NormalModel, StateOf, TangentialModel,
 };
+use crate::contact::states::{ContactStates, StateStore};
+use crate::contact::{ContactForce, ContactGeometry, ContactLaw};
 use crate::detect::NeighborList;
 use crate::error::{Result, TampError};
 use crate::generate::pour::Source;
 use crate::generate::rsi;
 use crate::growth::Growth;
 use crate::integrate;
+use crate::material::PairProperties;
 use crate::material::{Material, PairTable, effective_mass, effective_radius};
 use crate::particles::{Motion, Particles, Vec3};
 use crate::timestep::critical_time_step;
 
 /// Effective mass of a pair; a prescribed particle moves whatever the force, so it
 /// counts as infinitely heavy, like a wall.
-#[inline]
+#[inline(always)]
 fn contact_mass(p: &Particles, i: usize, j: usize) -> f64 {
-    match (p.motion[i], p.motion[j]) {
-        (Motion::Free, Motion::Prescribed(_)) => p.mass[i],
-        (Motion::Prescribed(_), Motion::Free) => p.mass[j],
+    match (p.prescribed[i], p.prescribed[j]) {
+        (false, true) => p.mass[i],
+        (true, false) => p.mass[j],
         _ => effective_mass(p.mass[i], p.mass[j]),
     }
 }
@@ -40,9 +41,117 @@ fn contact_mass(p: &Particles, i: usize, j: usize) -> f64 {
 /// Add the weight m g of every free particle to its force.
 fn add_weights(p: &mut Particles, g: Vec3) {
     for i in 0..p.len() {
-        if p.motion[i] == Motion::Free {
+        if !p.prescribed[i] {
             p.force[i] += g * p.mass[i];
         }
+    }
+}
+
+/// What pair and wall contacts share once their geometry is known: the overlap
+/// limit, the scene's laws, and a finite force. Returns the force on particle i
+/// and its parts; the error says what went wrong, for the caller to place.
+#[inline(always)]
+fn resolve<N, D, T, C>(
+    law: &Composed<N, D, T, C>,
+    g: &ContactGeometry,
+    ratio: f64,
+    max_fraction: f64,
+    pair: &PairProperties,
+    state: &mut StateOf<N, T>,
+    dt: f64,
+) -> std::result::Result<(Vec3, ContactForce), String>
+where
+    N: NormalModel,
+    D: DampingModel,
+    T: TangentialModel,
+    C: CohesionModel,
+{
+    let overlap = g.overlap;
+    if ratio > max_fraction {
+        return Err(format!(
+            "overlap {overlap:.4e} m is {ratio:.3} of the smaller radius (limit {max_fraction})"
+        ));
+    }
+    let f = law.evaluate(g, pair, state, dt);
+    let total = g.normal * f.normal + f.tangential;
+    if !total.iter().all(|c| c.is_finite()) {
+        return Err(format!(
+            "non-finite contact force at overlap {overlap:.4e} m"
+        ));
+    }
+    Ok((total, f))
+}
+
+/// Give this step's contacts of one particle with one wall (`found`) the states of
+/// the same facets last step; a facet touched anew starts fresh.
+#[inline(always)]
+fn carry_facet_states<S: Copy + Default>(states: &mut Vec<(u32, S)>, found: &[ShapeContact]) {
+    let same =
+        states.len() == found.len() && states.iter().zip(found).all(|((f, _), c)| *f == c.facet);
+    if !same {
+        let previous = std::mem::take(states);
+        states.extend(found.iter().map(|c| {
+            let kept = previous.iter().find(|(f, _)| *f == c.facet);
+            (c.facet, kept.map_or_else(S::default, |(_, s)| *s))
+        }));
+    }
+}
+
+/// `Simulation::compute_forces` for the scene's laws as types.
+struct ForceLoop<'a, const ROT: bool>(&'a mut Simulation);
+
+impl<const ROT: bool> LawVisitor for ForceLoop<'_, ROT> {
+    type Output = Result<()>;
+    fn visit<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel>(
+        self,
+        law: Composed<N, D, T, C>,
+    ) -> Result<()> {
+        self.0.compute_forces_with::<N, D, T, C, ROT>(&law)
+    }
+}
+
+/// An empty state store of the scene's laws' state type.
+struct NewStates {
+    particles: usize,
+    boundaries: usize,
+}
+
+impl LawVisitor for NewStates {
+    type Output = Box<dyn StateStore>;
+    fn visit<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel>(
+        self,
+        _: Composed<N, D, T, C>,
+    ) -> Box<dyn StateStore> {
+        Box::new(ContactStates::<StateOf<N, T>>::new(
+            self.particles,
+            self.boundaries,
+        ))
+    }
+}
+
+/// `Simulation::stored_energy` for the scene's laws as types.
+struct StoredEnergy<'a>(&'a Simulation);
+
+impl LawVisitor for StoredEnergy<'_> {
+    type Output = f64;
+    fn visit<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel>(
+        self,
+        law: Composed<N, D, T, C>,
+    ) -> f64 {
+        self.0.stored_energy_with(&law)
+    }
+}
+
+/// `Simulation::critical_time_step` for the scene's laws as types.
+struct CriticalStep<'a>(&'a Simulation, Option<f64>);
+
+impl LawVisitor for CriticalStep<'_> {
+    type Output = Option<f64>;
+    fn visit<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel>(
+        self,
+        law: Composed<N, D, T, C>,
+    ) -> Option<f64> {
+        self.0.critical_time_step_with(&law, self.1)
     }
 }
 
@@ -80,13 +189,11 @@ pub struct Simulation {
     pub step: u64,
     pub time: f64,
     pub neighbors: NeighborList,
-    /// History of particle–boundary contacts, `[boundary][particle]` → (facet, history)
-    /// for each facet touched; empty when the law keeps none.
-    pub(crate) wall_history: Vec<Vec<Vec<(u32, ContactHistory)>>>,
+    /// What each pair and wall contact keeps between steps, typed by the scene's
+    /// laws (`contact::states`).
+    pub(crate) states: Box<dyn StateStore>,
     /// Scratch list of the contacts of one particle with one boundary.
     scratch: Vec<ShapeContact>,
-    /// Scratch copy of one particle's facet histories from the previous step.
-    scratch_history: Vec<(u32, ContactHistory)>,
     /// Force the particles exert on each wall at the current step, N.
     pub wall_force: Vec<Vec3>,
     pub limits: StabilityLimits,
@@ -120,13 +227,11 @@ impl Simulation {
         mut neighbors: NeighborList,
         limits: StabilityLimits,
     ) -> Result<Self> {
-        let n = particles.len();
-        let wall_history = if law.has_history() {
-            vec![vec![Vec::new(); n]; walls.len()]
-        } else {
-            Vec::new()
-        };
-        neighbors.rebuild(&particles.position, &particles.radius);
+        let mut states = law.visit(NewStates {
+            particles: particles.len(),
+            boundaries: walls.len(),
+        });
+        neighbors.rebuild(&particles.position, &particles.radius, &mut *states);
         let mut sim = Simulation {
             wall_force: vec![Vec3::zeros(); walls.len()],
             particles,
@@ -140,9 +245,8 @@ impl Simulation {
             step: 0,
             time: 0.0,
             neighbors,
-            wall_history,
+            states,
             scratch: Vec::new(),
-            scratch_history: Vec::new(),
             limits,
             external_work: 0.0,
             external_work_scale: 0.0,
@@ -166,10 +270,7 @@ impl Simulation {
 
     pub fn step(&mut self) -> Result<()> {
         let dt = self.dt;
-        integrate::kick(&mut self.particles, 0.5 * dt);
-        if self.rotation {
-            integrate::kick_spin(&mut self.particles, 0.5 * dt);
-        }
+        integrate::kick(&mut self.particles, 0.5 * dt, self.rotation);
         let growing = self.is_growing();
         let gravity = self.active_gravity();
         let gravity_work = integrate::drift(&mut self.particles, dt, gravity.as_ref());
@@ -191,13 +292,13 @@ impl Simulation {
                 return Err(self.unstable(what));
             }
         }
-        self.neighbors
-            .update(&self.particles.position, &self.particles.radius);
+        self.neighbors.update(
+            &self.particles.position,
+            &self.particles.radius,
+            &mut *self.states,
+        );
         self.compute_forces()?;
-        integrate::kick(&mut self.particles, 0.5 * dt);
-        if self.rotation {
-            integrate::kick_spin(&mut self.particles, 0.5 * dt);
-        }
+        integrate::kick(&mut self.particles, 0.5 * dt, self.rotation);
         self.step += 1;
         self.time += dt;
         if growing && !self.is_growing() {
@@ -311,9 +412,7 @@ impl Simulation {
                     Motion::Free,
                 );
                 let i = self.particles.len() - 1;
-                for h in &mut self.wall_history {
-                    h.push(Vec::new());
-                }
+                self.states.add_particle();
                 let brought = 0.5 * self.particles.mass[i] * velocity.norm_squared()
                     + 0.5 * self.particles.inertia[i] * omega.norm_squared();
                 self.external_work += brought;
@@ -344,18 +443,27 @@ impl Simulation {
     }
 
     fn compute_forces(&mut self) -> Result<()> {
-        match (self.rotation, self.law.has_history()) {
-            (false, false) => self.compute_forces_with::<false, false>(),
-            (false, true) => self.compute_forces_with::<false, true>(),
-            (true, false) => self.compute_forces_with::<true, false>(),
-            (true, true) => self.compute_forces_with::<true, true>(),
+        let law = self.law;
+        if self.rotation {
+            law.visit(ForceLoop::<true>(self))
+        } else {
+            law.visit(ForceLoop::<false>(self))
         }
     }
 
-    /// Contact, wall and body forces at the current positions. `ROT`: spins enter
-    /// contact velocities and torques are accumulated. `HIST`: contacts carry
-    /// history (a tangential state or the normal law's δ_max).
-    fn compute_forces_with<const ROT: bool, const HIST: bool>(&mut self) -> Result<()> {
+    /// Contact, wall and body forces at the current positions, for the scene's laws
+    /// as types. `ROT`: spins enter contact velocities and torques are accumulated.
+    fn compute_forces_with<N, D, T, C, const ROT: bool>(
+        &mut self,
+        law: &Composed<N, D, T, C>,
+    ) -> Result<()>
+    where
+        N: NormalModel,
+        D: DampingModel,
+        T: TangentialModel,
+        C: CohesionModel,
+    {
+        let kept = ContactStates::<StateOf<N, T>>::KEPT;
         let gravity = self.active_gravity();
         let p = &mut self.particles;
         let n = p.len();
@@ -369,9 +477,15 @@ impl Simulation {
         let dt = self.dt;
         let max_fraction = self.limits.max_overlap_fraction;
         let mut worst = self.max_overlap_ratio;
-        let torques = ROT && self.law.tangential.is_some();
-        let law_reach = self.law.reach();
+        let torques = ROT && T::ACTIVE;
+        let law_reach = law.cohesion.reach();
         let space = self.neighbors.space;
+        let states = self
+            .states
+            .as_any_mut()
+            .downcast_mut::<ContactStates<StateOf<N, T>>>()
+            .expect("the contact states were made for the scene's laws");
+        let mut fresh = StateOf::<N, T>::default();
 
         for (k, &(i, j)) in self.neighbors.pairs.iter().enumerate() {
             let (i, j) = (i as usize, j as usize);
@@ -379,8 +493,8 @@ impl Simulation {
             let reach = p.radius[i] + p.radius[j];
             let dist2 = d.norm_squared();
             if dist2 >= (reach + law_reach).powi(2) {
-                if HIST {
-                    self.neighbors.history[k] = ContactHistory::default();
+                if kept {
+                    states.pairs[k] = Default::default();
                 }
                 continue;
             }
@@ -393,11 +507,6 @@ impl Simulation {
                 // meets the overlap limit first unless it is at least (R_i + R_j)/R_min ≥ 2.
                 return Err(self.unstable(format!(
                     "contact {i}-{j}: the centres coincide (overlap {overlap:.4e} m), so the contact normal is undefined"
-                )));
-            }
-            if ratio > max_fraction {
-                return Err(self.unstable(format!(
-                    "contact {i}-{j}: overlap {overlap:.4e} m is {ratio:.3} of the smaller radius (limit {max_fraction})"
                 )));
             }
             let normal = d / dist;
@@ -418,18 +527,15 @@ impl Simulation {
                 relative_velocity,
             };
             let pair = self.pair_table.get(p.material[i], p.material[j]);
-            let history = if HIST {
-                Some(&mut self.neighbors.history[k])
+            let state = if kept {
+                &mut states.pairs[k]
             } else {
-                None
+                &mut fresh
             };
-            let f = self.law.evaluate(&g, pair, history, dt);
-            let total = normal * f.normal + f.tangential;
-            if !total.iter().all(|c| c.is_finite()) {
-                return Err(self.unstable(format!(
-                    "contact {i}-{j}: non-finite contact force at overlap {overlap:.4e} m"
-                )));
-            }
+            let (total, f) = match resolve(law, &g, ratio, max_fraction, pair, state, dt) {
+                Ok(forces) => forces,
+                Err(what) => return Err(self.unstable(format!("contact {i}-{j}: {what}"))),
+            };
             p.force[i] += total;
             p.force[j] -= total;
             if torques {
@@ -440,38 +546,27 @@ impl Simulation {
         }
 
         let mut found = std::mem::take(&mut self.scratch);
-        let mut previous = std::mem::take(&mut self.scratch_history);
         for (w, wall) in self.walls.iter().enumerate() {
             let mut on_wall = Vec3::zeros();
             for i in 0..n {
                 found.clear();
                 wall.contacts(&p.position[i], p.radius[i], law_reach, &mut found);
-                if found.is_empty() {
-                    if HIST {
-                        self.wall_history[w][i].clear();
-                    }
-                    continue;
+                if kept {
+                    // The states of the facets touched last step, carried to this
+                    // step's contacts by facet.
+                    carry_facet_states(&mut states.walls[w][i], &found);
                 }
-                // Histories of the facets touched last step, carried to this step's
-                // contacts; both buffers keep their capacity, so the walls' loop allocates
-                // nothing of its own (revolved and mesh shapes still gather their
-                // candidate parts in a fresh Vec for each sphere that touches them).
-                if HIST {
-                    previous.clear();
-                    previous.extend_from_slice(&self.wall_history[w][i]);
-                    self.wall_history[w][i].clear();
-                }
-                for c in &found {
-                    let overlap = c.overlap;
+                for (
+                    c,
+                    &ShapeContact {
+                        facet,
+                        overlap,
+                        normal,
+                    },
+                ) in found.iter().enumerate()
+                {
                     let ratio = overlap / p.radius[i];
                     worst = worst.max(ratio);
-                    if ratio > max_fraction {
-                        return Err(self.unstable(format!(
-                            "contact {i}-wall '{}' (facet {}): overlap {overlap:.4e} m is {ratio:.3} of the radius (limit {max_fraction})",
-                            wall.name, c.facet
-                        )));
-                    }
-                    let normal = c.normal;
                     let lever = p.radius[i] - 0.5 * overlap;
                     let mut relative_velocity = p.velocity[i] - wall.velocity;
                     if ROT {
@@ -485,24 +580,20 @@ impl Simulation {
                         relative_velocity,
                     };
                     let pair = self.pair_table.get(p.material[i], wall.material);
-                    // `previous` is only filled when contacts have history.
-                    let mut history = previous
-                        .iter()
-                        .find(|(f, _)| *f == c.facet)
-                        .map_or_else(ContactHistory::default, |(_, h)| *h);
-                    let f = self
-                        .law
-                        .evaluate(&g, pair, HIST.then_some(&mut history), dt);
-                    if HIST {
-                        self.wall_history[w][i].push((c.facet, history));
-                    }
-                    let total = normal * f.normal + f.tangential;
-                    if !total.iter().all(|c| c.is_finite()) {
-                        return Err(self.unstable(format!(
-                            "contact {i}-wall '{}' (facet {}): non-finite contact force",
-                            wall.name, c.facet
-                        )));
-                    }
+                    let state = if kept {
+                        &mut states.walls[w][i][c].1
+                    } else {
+                        &mut fresh
+                    };
+                    let (total, f) = match resolve(law, &g, ratio, max_fraction, pair, state, dt) {
+                        Ok(forces) => forces,
+                        Err(what) => {
+                            return Err(self.unstable(format!(
+                                "contact {i}-wall '{}' (facet {facet}): {what}",
+                                wall.name
+                            )));
+                        }
+                    };
                     p.force[i] += total;
                     on_wall -= total;
                     if torques {
@@ -513,7 +604,6 @@ impl Simulation {
             self.wall_force[w] = on_wall;
         }
         self.scratch = found;
-        self.scratch_history = previous;
         self.max_overlap_ratio = worst;
         Ok(())
     }
@@ -522,7 +612,7 @@ impl Simulation {
     fn prescribed_power(&self) -> f64 {
         let p = &self.particles;
         let driven: f64 = (0..p.len())
-            .filter(|&i| p.motion[i] != Motion::Free)
+            .filter(|&i| p.prescribed[i])
             .map(|i| -p.force[i].dot(&p.velocity[i]))
             .sum();
         let walls: f64 = self
@@ -564,38 +654,51 @@ impl Simulation {
         out
     }
 
-    fn pair_history(&self, k: usize) -> Option<&ContactHistory> {
-        self.neighbors.history.get(k)
+    /// The state of the scene's laws, as the type `S` the force loop knows.
+    fn states_as<S: crate::contact::model::ContactState>(&self) -> &ContactStates<S> {
+        self.states
+            .as_any()
+            .downcast_ref::<ContactStates<S>>()
+            .expect("the contact states were made for the scene's laws")
     }
 
-    /// The stored state of the contact between particles `i` and `j` (either order)
-    /// after the last force evaluation; `None` when the pair is not in the neighbour
-    /// list or the law keeps no history. Read-only: for tests and diagnostics that
-    /// follow one contact's tangential state.
-    pub fn contact_history(&self, i: usize, j: usize) -> Option<&ContactHistory> {
+    /// What the contacts keep between steps (read-only: for checkpoints, tests and
+    /// diagnostics).
+    pub fn contact_states(&self) -> &dyn StateStore {
+        &*self.states
+    }
+
+    /// The tangential spring or force of the contact between particles `i` and `j`
+    /// (either order) after the last force evaluation; `None` when the pair is not in
+    /// the neighbour list or the law keeps no state. For tests and diagnostics that
+    /// follow one contact.
+    pub fn contact_tangential(&self, i: usize, j: usize) -> Option<Vec3> {
         let key = (i.min(j) as u32, i.max(j) as u32);
         let k = self.neighbors.pairs.binary_search(&key).ok()?;
-        self.pair_history(k)
-    }
-
-    fn wall_contact_history(&self, w: usize, i: usize, facet: u32) -> Option<&ContactHistory> {
-        self.wall_history
-            .get(w)
-            .and_then(|h| h.get(i))
-            .and_then(|list| list.iter().find(|(f, _)| *f == facet).map(|(_, h)| h))
+        self.states.pair_tangential(k)
     }
 
     /// Energy stored in all contacts (pairs and walls) and in cohesion, J.
     pub fn stored_energy(&self) -> f64 {
+        self.law.visit(StoredEnergy(self))
+    }
+
+    fn stored_energy_with<N, D, T, C>(&self, law: &Composed<N, D, T, C>) -> f64
+    where
+        N: NormalModel,
+        D: DampingModel,
+        T: TangentialModel,
+        C: CohesionModel,
+    {
         let p = &self.particles;
-        let reach = self.law.reach();
+        let reach = law.cohesion.reach();
+        let states = self.states_as::<StateOf<N, T>>();
         let pairs: f64 = self
             .touching_pairs(reach)
             .map(|(k, i, j, overlap)| {
                 let pair = self.pair_table.get(p.material[i], p.material[j]);
                 let r_eff = effective_radius(p.radius[i], p.radius[j]);
-                self.law
-                    .stored_energy(overlap, r_eff, pair, self.pair_history(k))
+                law.stored_energy(overlap, r_eff, pair, &states.pair(k))
             })
             .sum();
         let walls: f64 = self
@@ -603,8 +706,7 @@ impl Simulation {
             .into_iter()
             .map(|(w, i, facet, overlap)| {
                 let pair = self.pair_table.get(p.material[i], self.walls[w].material);
-                let history = self.wall_contact_history(w, i, facet);
-                self.law.stored_energy(overlap, p.radius[i], pair, history)
+                law.stored_energy(overlap, p.radius[i], pair, &states.wall(w, i, facet))
             })
             .sum();
         pairs + walls
@@ -616,7 +718,7 @@ impl Simulation {
         let p = &self.particles;
         self.gravity.map_or(0.0, |g| {
             (0..p.len())
-                .filter(|&i| p.motion[i] == Motion::Free)
+                .filter(|&i| !p.prescribed[i])
                 .map(|i| -p.mass[i] * g.dot(&p.position[i]))
                 .sum()
         })
@@ -689,22 +791,34 @@ impl Simulation {
     /// Returns `None` when a nonlinear law has neither a characteristic velocity nor
     /// any current contact to take a stiffness from.
     pub fn critical_time_step(&self, characteristic_velocity: Option<f64>) -> Option<f64> {
+        self.law.visit(CriticalStep(self, characteristic_velocity))
+    }
+
+    fn critical_time_step_with<N, D, T, C>(
+        &self,
+        law: &Composed<N, D, T, C>,
+        characteristic_velocity: Option<f64>,
+    ) -> Option<f64>
+    where
+        N: NormalModel,
+        D: DampingModel,
+        T: TangentialModel,
+        C: CohesionModel,
+    {
         let p = &self.particles;
+        let states = self.states_as::<StateOf<N, T>>();
         let mut met = vec![ContactsMet::default(); p.len()];
         for (k, i, j, overlap) in self.touching_pairs(0.0) {
             let pair = self.pair_table.get(p.material[i], p.material[j]);
             let r_eff = effective_radius(p.radius[i], p.radius[j]);
-            let (k_n, k_t) = self
-                .law
-                .stiffness(overlap, r_eff, pair, self.pair_history(k));
+            let (k_n, k_t) = law.stiffness(overlap, r_eff, pair, &states.pair(k));
             for b in [i, j] {
                 met[b].add(k_n, k_t);
             }
         }
         for (w, i, facet, overlap) in self.touching_walls(0.0) {
             let pair = self.pair_table.get(p.material[i], self.walls[w].material);
-            let history = self.wall_contact_history(w, i, facet);
-            let (k_n, k_t) = self.law.stiffness(overlap, p.radius[i], pair, history);
+            let (k_n, k_t) = law.stiffness(overlap, p.radius[i], pair, &states.wall(w, i, facet));
             met[i].add(k_n, k_t);
         }
         // Each body: (mass, radius at full size, moment of inertia, material, the
@@ -733,19 +847,18 @@ impl Simulation {
         }
         let mut best: Option<f64> = None;
         for (mass, radius, inertia, material, met) in bodies {
-            let impact = match (&self.law.normal, characteristic_velocity) {
-                (NormalLaw::Linear { .. }, _)
-                | (NormalLaw::Hysteretic { .. }, _)
-                | (NormalLaw::WaltonBraun { .. }, _)
-                | (_, Some(_)) => (0..self.materials.len())
-                    .map(|b| {
-                        let pair = self.pair_table.get(material, b);
-                        let v = characteristic_velocity.unwrap_or(0.0);
-                        self.law.normal.impact_stiffness(mass, v, radius, pair)
-                    })
-                    .fold(0.0, f64::max),
-                (_, None) => 0.0,
-            };
+            let impact =
+                if !law.normal.stiffness_depends_on_speed() || characteristic_velocity.is_some() {
+                    (0..self.materials.len())
+                        .map(|b| {
+                            let pair = self.pair_table.get(material, b);
+                            let v = characteristic_velocity.unwrap_or(0.0);
+                            law.normal.impact_stiffness(mass, v, radius, pair)
+                        })
+                        .fold(0.0, f64::max)
+                } else {
+                    0.0
+                };
             let lever = if self.rotation {
                 1.0 + mass * radius.powi(2) / inertia
             } else {
@@ -756,30 +869,22 @@ impl Simulation {
                 // No normal stiffness known: the estimate is undefined for this body.
                 continue;
             }
-            if let Some(
-                TangentialLaw::CundallStrack { stiffness }
-                | TangentialLaw::WaltonBraun { stiffness },
-            ) = self.law.tangential
-            {
-                k = k.max(stiffness * lever);
-            }
-            if let Some(TangentialLaw::LiggghtsHistory {
-                model: LiggghtsModel::Hooke,
-                ..
-            }) = self.law.tangential
-            {
-                // k_t = k_n of the linear law, known before any contact.
-                k = k.max(impact * lever);
+            if T::ACTIVE {
+                // A fixed spring (k_s), or LIGGGHTS hooke's k_t = k_n, is known
+                // before any contact.
+                k = k.max(law.tangential.stiffness_before_contact(impact) * lever);
             }
             k = k.max(met.tangential * lever);
-            let viscous = match self.law.tangential {
-                Some(TangentialLaw::HaffWerner { damping }) if damping > 0.0 => {
-                    // The dashpots of all its contacts act on the particle together.
-                    Some(2.0 * mass / (damping * lever * met.count.max(1) as f64))
-                }
-                _ => None,
+            // Viscous friction: the dashpots of all its contacts act on the particle together.
+            let viscous = law
+                .tangential
+                .viscous_coefficient()
+                .map(|damping| 2.0 * mass / (damping * lever * met.count.max(1) as f64));
+            let xi = if D::ACTIVE {
+                law.damping.ratio(mass, k)
+            } else {
+                0.0
             };
-            let xi = self.law.damping.map(|d| d.ratio(mass, k)).unwrap_or(0.0);
             let elastic = critical_time_step(k, mass, xi);
             let dt = viscous.map_or(elastic, |v| v.min(elastic));
             best = Some(best.map_or(dt, |b: f64| b.min(dt)));

@@ -5,10 +5,14 @@
 //! the friction cone.
 
 use tamp::contact::damping::liggghts::LiggghtsModel;
-use tamp::contact::history::ContactHistory;
-use tamp::contact::normal::NormalLaw;
-use tamp::contact::tangential::TangentialLaw;
-use tamp::contact::{ContactGeometry, ContactLaw};
+use tamp::contact::normal::{
+    Hertz, Hysteretic, KuwabaraKono, Linear, NormalLaw, Storakers, WaltonBraun,
+};
+use tamp::contact::tangential::{
+    Coulomb, CundallStrack, HaffWerner, LiggghtsHistory, MindlinDeresiewicz, MindlinNoSlip,
+    TangentialLaw, storakers, walton_braun,
+};
+use tamp::contact::{ContactForce, ContactGeometry, ContactLaw};
 use tamp::material::{Hollomon, PairProperties};
 use tamp::particles::Vec3;
 
@@ -31,48 +35,52 @@ fn pair() -> PairProperties {
 
 fn normal_laws() -> Vec<NormalLaw> {
     vec![
-        NormalLaw::Linear { stiffness: 1e7 },
-        NormalLaw::Hertz,
-        NormalLaw::KuwabaraKono {
+        NormalLaw::Linear(Linear { stiffness: 1e7 }),
+        NormalLaw::Hertz(Hertz {}),
+        NormalLaw::KuwabaraKono(KuwabaraKono {
             dissipation_time: 1e-7,
-        },
-        NormalLaw::WaltonBraun {
+        }),
+        NormalLaw::WaltonBraun(WaltonBraun {
             loading_stiffness: 1e7,
             unloading_stiffness: 3e7,
-        },
-        NormalLaw::Hysteretic {
+        }),
+        NormalLaw::Hysteretic(Hysteretic {
             stiffness: 1e7,
             hysteresis: 0.5,
-        },
-        NormalLaw::Storakers {
+        }),
+        NormalLaw::Storakers(Storakers {
             min_with_hertz: false,
-        },
-        NormalLaw::Storakers {
+        }),
+        NormalLaw::Storakers(Storakers {
             min_with_hertz: true,
-        },
+        }),
     ]
 }
 
 fn tangential_laws() -> Vec<Option<TangentialLaw>> {
     vec![
         None,
-        Some(TangentialLaw::MindlinDeresiewicz),
-        Some(TangentialLaw::Coulomb),
-        Some(TangentialLaw::HaffWerner { damping: 50.0 }),
-        Some(TangentialLaw::CundallStrack { stiffness: 1e6 }),
-        Some(TangentialLaw::WaltonBraun { stiffness: 1e6 }),
-        Some(TangentialLaw::MindlinNoSlip),
-        Some(TangentialLaw::Storakers { beta: 1.0 }),
+        Some(TangentialLaw::MindlinDeresiewicz(MindlinDeresiewicz)),
+        Some(TangentialLaw::Coulomb(Coulomb)),
+        Some(TangentialLaw::HaffWerner(HaffWerner { damping: 50.0 })),
+        Some(TangentialLaw::CundallStrack(CundallStrack {
+            stiffness: 1e6,
+        })),
+        Some(TangentialLaw::WaltonBraun(walton_braun::WaltonBraun {
+            stiffness: 1e6,
+        })),
+        Some(TangentialLaw::MindlinNoSlip(MindlinNoSlip)),
+        Some(TangentialLaw::Storakers(storakers::Storakers { beta: 1.0 })),
         // Without tangential damping (ξ = 0, a scene without damping): with it, LIGGGHTS's
         // sticking force may leave the cone by γ_t|v_t| (liggghts_history.rs tests).
-        Some(TangentialLaw::LiggghtsHistory {
+        Some(TangentialLaw::LiggghtsHistory(LiggghtsHistory {
             model: LiggghtsModel::Hertz,
             xi: 0.0,
-        }),
-        Some(TangentialLaw::LiggghtsHistory {
+        })),
+        Some(TangentialLaw::LiggghtsHistory(LiggghtsHistory {
             model: LiggghtsModel::Hooke,
             xi: 0.0,
-        }),
+        })),
     ]
 }
 
@@ -81,7 +89,7 @@ fn every_law() -> Vec<ContactLaw> {
     for n in normal_laws() {
         for t in tangential_laws() {
             out.push(ContactLaw {
-                normal: n.clone(),
+                normal: n,
                 damping: None,
                 tangential: t,
                 cohesion: None,
@@ -89,6 +97,17 @@ fn every_law() -> Vec<ContactLaw> {
         }
     }
     out
+}
+
+/// The forces of a fresh contact driven along `path` at the step `dt`.
+fn forces(
+    law: &ContactLaw,
+    pair: &PairProperties,
+    path: &[ContactGeometry],
+    dt: f64,
+) -> Vec<ContactForce> {
+    let path: Vec<(ContactGeometry, f64)> = path.iter().map(|g| (*g, dt)).collect();
+    law.forces_along(pair, &path)
 }
 
 fn geometry(normal: Vec3, overlap: f64, relative_velocity: Vec3) -> ContactGeometry {
@@ -115,7 +134,7 @@ fn normal_force_matches_closed_forms_at_several_overlaps() {
         * R_EFF.powf(1.0 - m / 2.0);
     for overlap in [1e-8f64, 1e-7, 1e-6, 5e-6] {
         let approach = 0.01; // loading: dδ/dt > 0
-        let expected = [
+        let expected = vec![
             1e7 * overlap,
             k_hertz * overlap.powf(1.5),
             k_hertz * (overlap.powf(1.5) + 1.5 * 1e-7 * overlap.sqrt() * approach),
@@ -124,11 +143,10 @@ fn normal_force_matches_closed_forms_at_several_overlaps() {
             c_storakers * overlap.powf(1.0 + m / 2.0),
             (c_storakers * overlap.powf(1.0 + m / 2.0)).min(k_hertz * overlap.powf(1.5)),
         ];
-        for (law, want) in normal_laws().iter().zip(expected) {
-            let mut max_overlap = 0.0;
-            let got = law
-                .response(overlap, approach, R_EFF, &pair(), &mut max_overlap)
-                .force;
+        let laws = normal_laws();
+        assert_eq!(laws.len(), expected.len(), "a closed form for every law");
+        for (law, want) in laws.iter().zip(expected) {
+            let got = law.response(overlap, approach, R_EFF, &pair()).force;
             assert!(
                 (got - want).abs() <= 1e-12 * want,
                 "{} at {overlap:e}: {got:e} vs {want:e}",
@@ -142,8 +160,7 @@ fn normal_force_matches_closed_forms_at_several_overlaps() {
 fn force_is_continuous_at_first_touch() {
     for law in every_law() {
         let g = geometry(Vec3::z(), 1e-300, Vec3::new(0.0, 0.0, -1e-3));
-        let mut h = ContactHistory::default();
-        let f = law.evaluate(&g, &pair(), Some(&mut h), 1e-7);
+        let f = forces(&law, &pair(), &[g], 1e-7)[0];
         assert!(
             f.normal.abs() < 1e-100 && f.tangential.norm() < 1e-100,
             "{} + {:?}",
@@ -158,21 +175,16 @@ fn swapping_the_bodies_reverses_the_force() {
     let n = Vec3::new(0.0, 0.6, 0.8);
     let v = Vec3::new(0.02, -0.01, -0.015);
     for law in every_law() {
-        let (mut h1, mut h2) = (ContactHistory::default(), ContactHistory::default());
-        let mut totals = (Vec3::zeros(), Vec3::zeros());
         // A few steps so that history laws leave their first branch.
-        for k in 0..5 {
-            let overlap = 1e-6 * (1.0 + k as f64);
-            let g = geometry(n, overlap, v);
-            let swapped = geometry(-n, overlap, -v);
-            let f1 = law.evaluate(&g, &pair(), Some(&mut h1), 1e-5);
-            let f2 = law.evaluate(&swapped, &pair(), Some(&mut h2), 1e-5);
-            totals = (
-                n * f1.normal + f1.tangential,
-                -n * f2.normal + f2.tangential,
-            );
-        }
-        let (a, b) = totals;
+        let overlaps: Vec<f64> = (0..5).map(|k| 1e-6 * (1.0 + k as f64)).collect();
+        let path: Vec<_> = overlaps.iter().map(|&d| geometry(n, d, v)).collect();
+        let swapped: Vec<_> = overlaps.iter().map(|&d| geometry(-n, d, -v)).collect();
+        let f1 = *forces(&law, &pair(), &path, 1e-5).last().unwrap();
+        let f2 = *forces(&law, &pair(), &swapped, 1e-5).last().unwrap();
+        let (a, b) = (
+            n * f1.normal + f1.tangential,
+            -n * f2.normal + f2.tangential,
+        );
         assert!(
             (a + b).norm() <= 1e-12 * a.norm(),
             "{} + {:?}",
@@ -186,13 +198,15 @@ fn swapping_the_bodies_reverses_the_force() {
 fn friction_never_leaves_the_cone() {
     let n = Vec3::z();
     for law in every_law().into_iter().filter(|l| l.tangential.is_some()) {
-        let mut h = ContactHistory::default();
-        for k in 0..400 {
-            let t = k as f64 * 0.05;
-            let overlap = 1e-6 * (1.5 + t.sin());
-            let v = Vec3::new((3.0 * t).cos(), (1.7 * t).sin(), 0.0) * 0.05;
-            let g = geometry(n, overlap, v + n * (-1e-3 * t.cos()));
-            let f = law.evaluate(&g, &pair(), Some(&mut h), 1e-5);
+        let path: Vec<_> = (0..400)
+            .map(|k| {
+                let t = k as f64 * 0.05;
+                let overlap = 1e-6 * (1.5 + t.sin());
+                let v = Vec3::new((3.0 * t).cos(), (1.7 * t).sin(), 0.0) * 0.05;
+                geometry(n, overlap, v + n * (-1e-3 * t.cos()))
+            })
+            .collect();
+        for (k, f) in forces(&law, &pair(), &path, 1e-5).into_iter().enumerate() {
             assert!(
                 f.tangential.norm() <= MU * f.normal.max(0.0) * (1.0 + 1e-12) + 1e-300,
                 "{} + {:?} at step {k}",
@@ -211,8 +225,6 @@ fn work_absorbed(law: &ContactLaw, max_overlap: f64) -> f64 {
     let steps = 20_000;
     let period = 1e-3;
     let dt = period / steps as f64;
-    let mut h = ContactHistory::default();
-    let mut work = 0.0;
     let position = |t: f64| {
         let phase = std::f64::consts::PI * t / period;
         (
@@ -220,18 +232,22 @@ fn work_absorbed(law: &ContactLaw, max_overlap: f64) -> f64 {
             0.3 * max_overlap * (2.0 * phase).sin(),
         )
     };
-    for k in 0..steps {
-        let t = (k as f64 + 0.5) * dt;
-        let (d0, s0) = position(t - 0.5 * dt);
-        let (d1, s1) = position(t + 0.5 * dt);
-        let overlap = 0.5 * (d0 + d1);
-        // Relative velocity of i: approach means −n; the tangential slip along x.
-        let v = Vec3::new((s1 - s0) / dt, 0.0, -(d1 - d0) / dt);
-        let g = geometry(n, overlap, v);
-        let f = law.evaluate(&g, &pair(), Some(&mut h), dt);
+    let path: Vec<_> = (0..steps)
+        .map(|k| {
+            let t = (k as f64 + 0.5) * dt;
+            let (d0, s0) = position(t - 0.5 * dt);
+            let (d1, s1) = position(t + 0.5 * dt);
+            let overlap = 0.5 * (d0 + d1);
+            // Relative velocity of i: approach means −n; the tangential slip along x.
+            let v = Vec3::new((s1 - s0) / dt, 0.0, -(d1 - d0) / dt);
+            geometry(n, overlap, v)
+        })
+        .collect();
+    let mut work = 0.0;
+    for (g, f) in path.iter().zip(forces(law, &pair(), &path, dt)) {
         let force = n * f.normal + f.tangential;
         // The contact force on i does work force·v dt on i; the contact absorbs minus that.
-        work -= force.dot(&v) * dt;
+        work -= force.dot(&g.relative_velocity) * dt;
     }
     work
 }
@@ -243,11 +259,7 @@ fn dissipative_laws_absorb_work_over_closed_cycles() {
         // cycle it beyond, at 1e-5 m for this pair.
         let max_overlap = 1e-5;
         let absorbed = work_absorbed(&law, max_overlap);
-        let scale = law
-            .normal
-            .response(max_overlap, 0.0, R_EFF, &pair(), &mut max_overlap.clone())
-            .force
-            * max_overlap;
+        let scale = law.normal.response(max_overlap, 0.0, R_EFF, &pair()).force * max_overlap;
         let name = format!(
             "{} + {:?}",
             law.normal.name(),
@@ -291,7 +303,7 @@ fn newtons_third_law_holds_in_a_simulation() {
     let base: Scene = serde_json::from_str(text).unwrap();
     // liggghts_history exists only with LIGGGHTS's normal models (scenes refuse the rest).
     let buildable = |law: &ContactLaw| {
-        !matches!(law.tangential, Some(TangentialLaw::LiggghtsHistory { .. }))
+        !matches!(law.tangential, Some(TangentialLaw::LiggghtsHistory(_)))
             || LiggghtsModel::of(&law.normal).is_some()
     };
     for law in every_law().into_iter().filter(buildable) {
@@ -315,40 +327,48 @@ fn newtons_third_law_holds_in_a_simulation() {
 fn spec_of(n: &NormalLaw) -> tamp::scene::schema::NormalSpec {
     use tamp::scene::schema::NormalSpec as S;
     match *n {
-        NormalLaw::Linear { stiffness } => S::Linear { stiffness },
-        NormalLaw::Hertz => S::Hertz {},
-        NormalLaw::KuwabaraKono { dissipation_time } => S::KuwabaraKono { dissipation_time },
-        NormalLaw::WaltonBraun {
+        NormalLaw::Linear(Linear { stiffness }) => S::Linear { stiffness },
+        NormalLaw::Hertz(_) => S::Hertz {},
+        NormalLaw::KuwabaraKono(KuwabaraKono { dissipation_time }) => {
+            S::KuwabaraKono { dissipation_time }
+        }
+        NormalLaw::WaltonBraun(WaltonBraun {
             loading_stiffness,
             unloading_stiffness,
-        } => S::WaltonBraun {
+        }) => S::WaltonBraun {
             loading_stiffness,
             unloading_stiffness,
         },
-        NormalLaw::Hysteretic {
+        NormalLaw::Hysteretic(Hysteretic {
             stiffness,
             hysteresis,
-        } => S::Hysteretic {
+        }) => S::Hysteretic {
             stiffness,
             hysteresis,
         },
-        NormalLaw::Storakers { min_with_hertz } => S::Storakers { min_with_hertz },
+        NormalLaw::Storakers(Storakers { min_with_hertz }) => S::Storakers { min_with_hertz },
     }
 }
 
 fn tangential_spec_of(t: TangentialLaw) -> tamp::scene::schema::TangentialSpec {
     use tamp::scene::schema::{TangentialLawName as N, TangentialSpec};
     let (law, stiffness, damping, beta) = match t {
-        TangentialLaw::MindlinDeresiewicz => (N::MindlinDeresiewicz, None, None, None),
-        TangentialLaw::Coulomb => (N::Coulomb, None, None, None),
-        TangentialLaw::HaffWerner { damping } => (N::HaffWerner, None, Some(damping), None),
-        TangentialLaw::CundallStrack { stiffness } => {
+        TangentialLaw::MindlinDeresiewicz(_) => (N::MindlinDeresiewicz, None, None, None),
+        TangentialLaw::Coulomb(_) => (N::Coulomb, None, None, None),
+        TangentialLaw::HaffWerner(HaffWerner { damping }) => {
+            (N::HaffWerner, None, Some(damping), None)
+        }
+        TangentialLaw::CundallStrack(CundallStrack { stiffness }) => {
             (N::CundallStrack, Some(stiffness), None, None)
         }
-        TangentialLaw::WaltonBraun { stiffness } => (N::WaltonBraun, Some(stiffness), None, None),
-        TangentialLaw::MindlinNoSlip => (N::MindlinNoSlip, None, None, None),
-        TangentialLaw::Storakers { beta } => (N::Storakers, None, None, Some(beta)),
-        TangentialLaw::LiggghtsHistory { .. } => (N::LiggghtsHistory, None, None, None),
+        TangentialLaw::WaltonBraun(walton_braun::WaltonBraun { stiffness }) => {
+            (N::WaltonBraun, Some(stiffness), None, None)
+        }
+        TangentialLaw::MindlinNoSlip(_) => (N::MindlinNoSlip, None, None, None),
+        TangentialLaw::Storakers(storakers::Storakers { beta }) => {
+            (N::Storakers, None, None, Some(beta))
+        }
+        TangentialLaw::LiggghtsHistory(_) => (N::LiggghtsHistory, None, None, None),
     };
     TangentialSpec {
         law,
@@ -369,34 +389,24 @@ fn frictionless_tangential_laws_keep_the_normal_memory() {
         ..pair()
     };
     for t in [
-        TangentialLaw::MindlinDeresiewicz,
-        TangentialLaw::WaltonBraun { stiffness: 1e6 },
+        TangentialLaw::MindlinDeresiewicz(MindlinDeresiewicz),
+        TangentialLaw::WaltonBraun(walton_braun::WaltonBraun { stiffness: 1e6 }),
     ] {
         let law = ContactLaw {
-            normal: NormalLaw::WaltonBraun {
+            normal: NormalLaw::WaltonBraun(WaltonBraun {
                 loading_stiffness: 1e7,
                 unloading_stiffness: 2e7,
-            },
+            }),
             damping: None,
             tangential: Some(t),
             cohesion: None,
         };
-        let mut h = ContactHistory::default();
         let v = Vec3::new(1e-3, 0.0, 0.0);
-        for overlap in [1e-6, 2e-6] {
-            law.evaluate(
-                &geometry(Vec3::z(), overlap, v),
-                &frictionless,
-                Some(&mut h),
-                1e-6,
-            );
-        }
-        let f = law.evaluate(
-            &geometry(Vec3::z(), 1.5e-6, v),
-            &frictionless,
-            Some(&mut h),
-            1e-6,
-        );
+        let path: Vec<_> = [1e-6, 2e-6, 1.5e-6]
+            .iter()
+            .map(|&d| geometry(Vec3::z(), d, v))
+            .collect();
+        let f = *forces(&law, &frictionless, &path, 1e-6).last().unwrap();
         // Unloading line: k2 (δ − δ_max (1 − k1/k2)) = 2e7 (1.5e-6 − 1e-6) = 10 N.
         assert!((f.normal - 10.0).abs() < 1e-9, "{}: {}", t.name(), f.normal);
     }

@@ -5,8 +5,9 @@
 #![allow(clippy::approx_constant)]
 
 use serde_json::{Value, json};
+use tamp::contact::normal::{NormalLaw, NormalModel, PeakOverlap, Storakers};
 use tamp::error::TampError;
-use tamp::particles::{Motion, Vec3};
+use tamp::particles::Vec3;
 use tamp::scene;
 use tamp::simulation::Simulation;
 
@@ -257,7 +258,7 @@ fn step_pair_to(sim: &mut Simulation, theta: f64, spin: f64) {
     let e = Vec3::new(theta.cos(), theta.sin(), 0.0);
     for (i, side) in [(0, 1.0), (1, -1.0)] {
         let v = (e * (side * half) - sim.particles.position[i]) / sim.dt;
-        sim.particles.motion[i] = Motion::Prescribed(v);
+        sim.particles.prescribe(i, v);
         sim.particles.omega[i] = Vec3::z() * spin;
     }
     sim.step().expect("driven pair");
@@ -330,7 +331,7 @@ fn contact_normal_turning_90_degrees_while_sticking() {
                 f_t.norm(),
                 mu * f_n
             );
-            let stored = sim.contact_history(0, 1).expect("history").tangential;
+            let stored = sim.contact_tangential(0, 1).expect("history");
             assert!(
                 stored.dot(&n).abs() <= 1e-9 * stored.norm(),
                 "{name} {what}: stored state {stored:?} leaves the plane of {n:?}"
@@ -437,19 +438,21 @@ fn storakers_perfectly_plastic_at_vanishing_overlap() {
         );
         let mut sim = b.sim;
         let pair = *sim.pair_table.get(0, 0);
+        let law = Storakers {
+            min_with_hertz: cap,
+        };
+        assert_eq!(sim.law.normal, NormalLaw::Storakers(law));
         for d in [1e-300, 1e-200, 1e-100, 1e-15, 1e-12, 1e-9] {
-            let mut max_overlap = 0.0;
-            let virgin = sim
-                .law
-                .normal
-                .response(d, 0.0, r_eff, &pair, &mut max_overlap);
-            let (k_n, _) = sim.law.stiffness(d, r_eff, &pair, None);
-            let stored = sim.law.stored_energy(d, r_eff, &pair, None);
-            let mut max_overlap = d;
-            let unloading = sim
-                .law
-                .normal
-                .response(0.5 * d, 0.0, r_eff, &pair, &mut max_overlap);
+            let virgin = law.response(d, 0.0, r_eff, &pair, &mut PeakOverlap::default());
+            let k_n = law.time_step_stiffness(d, r_eff, &pair, &PeakOverlap::default());
+            let stored = law.energy(d, r_eff, &pair, &PeakOverlap::default());
+            let unloading = law.response(
+                0.5 * d,
+                0.0,
+                r_eff,
+                &pair,
+                &mut PeakOverlap { max_overlap: d },
+            );
             for (what, v) in [
                 ("force", virgin.force),
                 ("stiffness", virgin.stiffness),

@@ -248,7 +248,7 @@ fn liggghts_restitution_is_refused_for_laws_liggghts_lacks() {
 
 #[test]
 fn liggghts_restitution_builds_the_critical_fraction_of_its_law() {
-    use tamp::contact::damping::Damping;
+    use tamp::contact::damping::{CriticalFraction, Damping};
     let sqrt_ln2_pi2 = |e: f64| (e.ln().powi(2) + std::f64::consts::PI.powi(2)).sqrt();
     for (normal, e, xi) in [
         (
@@ -268,7 +268,8 @@ fn liggghts_restitution_builds_the_critical_fraction_of_its_law() {
         s["contact"]["damping"] = json!({"kind": "liggghts_restitution", "restitution": e});
         let scene = tamp::scene::parse(&s.to_string()).unwrap();
         let built = tamp::scene::build(&scene).unwrap();
-        let Some(Damping::CriticalFraction { xi: got }) = built.sim.law.damping else {
+        let Some(Damping::CriticalFraction(CriticalFraction { xi: got })) = built.sim.law.damping
+        else {
             panic!(
                 "expected a critical fraction, got {:?}",
                 built.sim.law.damping
@@ -418,8 +419,8 @@ fn liggghts_history_needs_liggghts_normal_law_damping_and_rotation() {
 
 #[test]
 fn liggghts_history_takes_its_model_and_damping_from_the_scene() {
-    use tamp::contact::damping::{Damping, liggghts::LiggghtsModel};
-    use tamp::contact::tangential::TangentialLaw;
+    use tamp::contact::damping::{CriticalFraction, Damping, liggghts::LiggghtsModel};
+    use tamp::contact::tangential::{LiggghtsHistory, TangentialLaw};
     for (normal, damping, model) in [
         (
             json!({"law": "hertz"}),
@@ -446,13 +447,16 @@ fn liggghts_history_takes_its_model_and_damping_from_the_scene() {
         let law = tamp::scene::build(&scene).unwrap().sim.law;
         // γ_t uses the normal damping's ξ; no damping means e = 1, ξ = 0.
         let xi = match law.damping {
-            Some(Damping::CriticalFraction { xi }) => xi,
+            Some(Damping::CriticalFraction(CriticalFraction { xi })) => xi,
             None => 0.0,
             other => panic!("unexpected damping {other:?}"),
         };
         assert_eq!(
             law.tangential,
-            Some(TangentialLaw::LiggghtsHistory { model, xi })
+            Some(TangentialLaw::LiggghtsHistory(LiggghtsHistory {
+                model,
+                xi
+            }))
         );
     }
 }

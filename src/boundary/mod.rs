@@ -49,7 +49,7 @@ impl Boundary {
     }
 
     /// Contacts of a sphere with this boundary, appended to `out`.
-    #[inline]
+    #[inline(always)]
     pub fn contacts(&self, centre: &Vec3, radius: f64, reach: f64, out: &mut Vec<ShapeContact>) {
         self.shape
             .contacts(&(centre - self.displacement), radius, reach, out);

@@ -1,23 +1,47 @@
-//! The composed contact law: normal ∘ damping ∘ tangential, only the roles a scene
-//! enables. Geometry is computed once per contact (by the caller, for pairs and
+//! The composed contact law: normal ∘ damping ∘ tangential ∘ cohesion, only the roles
+//! a scene enables. Geometry is computed once per contact (by the caller, for pairs and
 //! walls alike) and passed read-only; the law returns forces and never applies them.
 //!
 //! Sign convention for every law: `normal` points from the partner (particle j or
 //! the wall) to particle i; overlap δ = R_i + R_j − |x_i − x_j| > 0 in contact
 //! (Rojek's h = −δ); a positive normal force pushes i away from the partner.
+//!
+//! How to add a law (a normal law; the other roles are alike):
+//! 1. Its file, `normal/<law>.rs`: a header with the equations and the source, then a
+//!    type holding the law's parameters that implements `model::NormalModel` (force and
+//!    tangent stiffness, time-step stiffness, recoverable energy, impact stiffness) with
+//!    `type State` what one contact must remember (`()` for nothing; a state type of its
+//!    own derives serde and implements `model::ContactState`). Its closed forms and
+//!    unit tests live there too.
+//! 2. Its variant in `normal::NormalLaw` and the matching arm in `each_normal!` and
+//!    `NormalLaw::name`: exhaustive matches, so the compiler lists what is missing.
+//!    The force loop, the stored energy, the critical time step, checkpoints and the
+//!    contact-law bench take the law from there (`ContactLaw::visit`).
+//! 3. Until the scene schema reads the law types directly, its `NormalSpec` variant
+//!    (`scene/schema.rs`), the mapping in `scene::build::normal_law`, its rules in
+//!    `scene/validate.rs` and its LIGGGHTS counterpart (`damping::liggghts::LiggghtsModel::of`,
+//!    `liggghts/export.rs`) are further places; `tests/contact_laws.rs` needs its closed
+//!    form beside it in `normal_laws`.
+//! 4. A verification case (`verification/`, docs/verification-notes.md) against a
+//!    closed form or a peer code.
 
 pub mod damping;
-pub mod history;
+pub mod model;
 pub mod normal;
+pub mod states;
 pub mod tangential;
 pub mod van_der_waals;
 
 use crate::material::PairProperties;
 use crate::particles::Vec3;
+use crate::{each_damping, each_normal, each_tangential};
 use damping::Damping;
-use history::ContactHistory;
+use model::{
+    CohesionModel, Composed, DampingModel, LawVisitor, NoCohesion, NoDamping, NoFriction,
+    NormalModel, TangentialModel,
+};
 use normal::NormalLaw;
-use tangential::{TangentialInput, TangentialLaw};
+use tangential::TangentialLaw;
 use van_der_waals::VanDerWaals;
 
 /// Geometry of one contact, computed once and shared by all roles.
@@ -53,7 +77,9 @@ pub struct ContactForce {
     pub tangential: Vec3,
 }
 
-#[derive(Clone, Debug, PartialEq)]
+/// The scene's law: one runtime value per role, turned into the monomorphic
+/// `Composed` type once per run by `visit`.
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ContactLaw {
     pub normal: NormalLaw,
     pub damping: Option<Damping>,
@@ -62,7 +88,7 @@ pub struct ContactLaw {
 }
 
 impl ContactLaw {
-    /// Whether contacts carry history (a tangential state or the normal law's δ_max).
+    /// Whether contacts carry state (a tangential state or the normal law's δ_max).
     pub fn has_history(&self) -> bool {
         self.normal.has_memory() || self.tangential.is_some_and(|t| t.has_history())
     }
@@ -72,151 +98,101 @@ impl ContactLaw {
         self.cohesion.map_or(0.0, |c| c.cutoff)
     }
 
-    fn tangential_input(
+    /// The forces of one contact driven along `path` (its geometry and the step at
+    /// each evaluation), starting from a fresh state: one law's behaviour without a
+    /// simulation around it, for tests and studies.
+    pub fn forces_along(
         &self,
-        g: &ContactGeometry,
         pair: &PairProperties,
-        normal_force: f64,
-        normal_stiffness: f64,
-        dt: f64,
-    ) -> TangentialInput {
-        TangentialInput {
-            normal: g.normal,
-            tangential_velocity: g.tangential_velocity(),
-            dt,
-            friction: pair.friction,
-            normal_force,
-            normal_stiffness,
-            overlap: g.overlap,
-            effective_radius: g.effective_radius,
-            effective_shear_modulus: pair.effective_shear_modulus.unwrap_or(0.0),
-            effective_mass: g.effective_mass,
-        }
-    }
-
-    /// The tangential input of a stored contact state at rest (for energies and
-    /// stiffnesses, which depend on the overlap but not on the motion).
-    fn resting_input(
-        &self,
-        overlap: f64,
-        effective_radius: f64,
-        pair: &PairProperties,
-        normal_stiffness: f64,
-    ) -> TangentialInput {
-        let g = ContactGeometry {
-            normal: Vec3::z(),
-            overlap,
-            effective_radius,
-            effective_mass: 0.0,
-            relative_velocity: Vec3::zeros(),
-        };
-        self.tangential_input(&g, pair, 0.0, normal_stiffness, 0.0)
-    }
-
-    /// Evaluate the enabled roles in their fixed order: normal, damping, tangential
-    /// (limited by the contact's normal force), cohesion. `history` is `None` exactly
-    /// when the law has none; it is reset while the bodies are apart.
-    // `always`: with plain `inline` the compiler kept it a call in the pair loop, and
-    // inlining it there measured 3 % less CPU on the LAMMPS chute (docs/performance.md).
-    #[inline(always)]
-    pub fn evaluate(
-        &self,
-        g: &ContactGeometry,
-        pair: &PairProperties,
-        history: Option<&mut ContactHistory>,
-        dt: f64,
-    ) -> ContactForce {
-        let mut scratch = ContactHistory::default();
-        let history = history.unwrap_or(&mut scratch);
-        let mut force = ContactForce::default();
-        if g.overlap > 0.0 {
-            let rate = g.overlap_rate();
-            let elastic = self.normal.response(
-                g.overlap,
-                rate,
-                g.effective_radius,
-                pair,
-                &mut history.max_overlap,
-            );
-            force.normal = elastic.force;
-            if let Some(d) = &self.damping {
-                force.normal += d.coefficient(g.effective_mass, elastic.stiffness) * rate;
+        path: &[(ContactGeometry, f64)],
+    ) -> Vec<ContactForce> {
+        struct Along<'a>(&'a PairProperties, &'a [(ContactGeometry, f64)]);
+        impl LawVisitor for Along<'_> {
+            type Output = Vec<ContactForce>;
+            fn visit<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel>(
+                self,
+                law: Composed<N, D, T, C>,
+            ) -> Vec<ContactForce> {
+                let mut state = model::StateOf::<N, T>::default();
+                self.1
+                    .iter()
+                    .map(|(g, dt)| law.evaluate(g, self.0, &mut state, *dt))
+                    .collect()
             }
-            if let Some(t) = &self.tangential {
-                let input = self.tangential_input(g, pair, force.normal, elastic.stiffness, dt);
-                force.tangential = t.force(&input, history);
-            }
-        } else {
-            *history = ContactHistory::default();
         }
-        if let Some(c) = &self.cohesion {
-            force.normal -= c.force(-g.overlap, g.effective_radius);
-        }
-        force
+        self.visit(Along(pair, path))
     }
 
-    /// Energy stored in the contact (recoverable normal and tangential energy, and
-    /// the cohesive potential), J.
-    pub fn stored_energy(
-        &self,
-        overlap: f64,
-        effective_radius: f64,
-        pair: &PairProperties,
-        history: Option<&ContactHistory>,
-    ) -> f64 {
-        let cohesion = self
-            .cohesion
-            .map_or(0.0, |c| c.energy(-overlap, effective_radius));
-        if overlap <= 0.0 {
-            return cohesion;
-        }
-        let none = ContactHistory::default();
-        let history = history.unwrap_or(&none);
-        let normal = self
-            .normal
-            .energy(overlap, effective_radius, pair, history.max_overlap);
-        let tangential = self.tangential.map_or(0.0, |t| {
-            let k_n = self
-                .normal
-                .stiffness(overlap, effective_radius, pair, history.max_overlap);
-            t.energy(
-                &self.resting_input(overlap, effective_radius, pair, k_n),
-                history,
-            )
-        });
-        normal + tangential + cohesion
+    /// Run `visitor` with the scene's laws as types: every combination of the roles
+    /// is monomorphised, so the visitor's code holds no `match` on a law.
+    pub fn visit<V: LawVisitor>(&self, visitor: V) -> V::Output {
+        each_normal!(self.normal, n => self.with_damping(n, visitor))
     }
 
-    /// Largest tangent stiffness (normal, and tangential with θ = 1) of a stored
-    /// contact state, N/m, for the critical time step (Rojek §3.4).
-    pub fn stiffness(
+    fn with_damping<N: NormalModel, V: LawVisitor>(&self, n: N, v: V) -> V::Output {
+        // Validation refuses a damping role beside a law that dissipates by itself;
+        // a constant condition, so the damped variants of such a law are not compiled.
+        if N::OWN_DISSIPATION {
+            return self.with_tangential(n, NoDamping, v);
+        }
+        match self.damping {
+            None => self.with_tangential(n, NoDamping, v),
+            Some(damping) => each_damping!(damping, d => self.with_tangential(n, d, v)),
+        }
+    }
+
+    fn with_tangential<N: NormalModel, D: DampingModel, V: LawVisitor>(
         &self,
-        overlap: f64,
-        effective_radius: f64,
-        pair: &PairProperties,
-        history: Option<&ContactHistory>,
-    ) -> (f64, f64) {
-        let max_overlap = history.map_or(0.0, |h| h.max_overlap);
-        let k_n = self
-            .normal
-            .time_step_stiffness(overlap, effective_radius, pair, max_overlap);
-        let k_t = self.tangential.map_or(0.0, |t| {
-            t.stiffness(&self.resting_input(overlap, effective_radius, pair, k_n))
-        });
-        (k_n, k_t)
+        n: N,
+        d: D,
+        v: V,
+    ) -> V::Output {
+        match self.tangential {
+            None => self.with_cohesion(n, d, NoFriction, v),
+            Some(tangential) => each_tangential!(tangential, t => self.with_cohesion(n, d, t, v)),
+        }
+    }
+
+    fn with_cohesion<N: NormalModel, D: DampingModel, T: TangentialModel, V: LawVisitor>(
+        &self,
+        normal: N,
+        damping: D,
+        tangential: T,
+        v: V,
+    ) -> V::Output {
+        match self.cohesion {
+            None => v.visit(Composed {
+                normal,
+                damping,
+                tangential,
+                cohesion: NoCohesion,
+            }),
+            Some(cohesion) => v.visit(Composed {
+                normal,
+                damping,
+                tangential,
+                cohesion,
+            }),
+        }
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::contact::damping::CriticalFraction;
+    use crate::contact::model::StateOf;
+    use crate::contact::normal::Hertz;
+    use crate::contact::tangential::CundallStrack;
 
-    fn law() -> ContactLaw {
-        ContactLaw {
-            normal: NormalLaw::Hertz,
-            damping: Some(Damping::CriticalFraction { xi: 0.3 }),
-            tangential: Some(TangentialLaw::CundallStrack { stiffness: 1e5 }),
-            cohesion: None,
+    type Law = Composed<Hertz, CriticalFraction, CundallStrack, NoCohesion>;
+
+    fn law() -> Law {
+        Composed {
+            normal: Hertz {},
+            damping: CriticalFraction { xi: 0.3 },
+            tangential: CundallStrack { stiffness: 1e5 },
+            cohesion: NoCohesion,
         }
     }
 
@@ -243,9 +219,12 @@ mod tests {
             relative_velocity: -g.relative_velocity,
             ..g
         };
-        let (mut s1, mut s2) = (ContactHistory::default(), ContactHistory::default());
-        let f1 = law().evaluate(&g, &pair(), Some(&mut s1), 1e-6);
-        let f2 = law().evaluate(&swapped, &pair(), Some(&mut s2), 1e-6);
+        let (mut s1, mut s2) = (
+            StateOf::<Hertz, CundallStrack>::default(),
+            StateOf::<Hertz, CundallStrack>::default(),
+        );
+        let f1 = law().evaluate(&g, &pair(), &mut s1, 1e-6);
+        let f2 = law().evaluate(&swapped, &pair(), &mut s2, 1e-6);
         let total1 = g.normal * f1.normal + f1.tangential;
         let total2 = swapped.normal * f2.normal + f2.tangential;
         assert!((total1 + total2).norm() <= 1e-12 * total1.norm());
@@ -260,7 +239,17 @@ mod tests {
             effective_mass: 1e-3,
             relative_velocity: Vec3::zeros(),
         };
-        let f = law().evaluate(&g, &pair(), Some(&mut ContactHistory::default()), 1e-6);
+        let f = law().evaluate(&g, &pair(), &mut Default::default(), 1e-6);
         assert!(f.normal.abs() < 1e-300 && f.tangential.norm() == 0.0);
+    }
+
+    /// The state a composed law keeps is what its laws keep: nothing for a
+    /// frictionless Hertz contact, one 3-vector for a Cundall–Strack spring.
+    #[test]
+    fn contact_state_is_sized_to_the_laws() {
+        assert_eq!(std::mem::size_of::<StateOf<Hertz, NoFriction>>(), 0);
+        assert_eq!(std::mem::size_of::<StateOf<Hertz, CundallStrack>>(), 24);
+        const { assert!(!Composed::<Hertz, NoDamping, NoFriction, NoCohesion>::HAS_STATE) };
+        const { assert!(Law::HAS_STATE) };
     }
 }

@@ -15,6 +15,8 @@
 //!   U(h) = U(h_min) − A R*/(6 h_min²) (h_min − h)  for h < h_min
 //! No history. A (J), h_min and h_c (m) are scene parameters.
 
+use crate::contact::model::CohesionModel;
+
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct VanDerWaals {
     /// Hamaker constant A, J.
@@ -43,6 +45,20 @@ impl VanDerWaals {
         let h = gap.max(self.min_separation);
         let far = -scale * (1.0 / h - 1.0 / self.cutoff);
         far - self.force(gap, effective_radius) * (self.min_separation - gap).max(0.0)
+    }
+}
+
+impl CohesionModel for VanDerWaals {
+    const ACTIVE: bool = true;
+    fn reach(&self) -> f64 {
+        self.cutoff
+    }
+    #[inline(always)]
+    fn force(&self, gap: f64, effective_radius: f64) -> f64 {
+        VanDerWaals::force(self, gap, effective_radius)
+    }
+    fn energy(&self, gap: f64, effective_radius: f64) -> f64 {
+        VanDerWaals::energy(self, gap, effective_radius)
     }
 }
 

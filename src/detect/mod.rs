@@ -9,7 +9,7 @@ pub mod cells;
 mod grid;
 pub mod multigrid;
 
-use crate::contact::history::ContactHistory;
+use crate::contact::states::StateStore;
 use crate::particles::Vec3;
 use crate::space::Space;
 
@@ -36,9 +36,9 @@ impl Detector {
     }
 }
 
-/// Candidate pairs with a per-pair history slot, carried across rebuilds by merging
-/// the two sorted lists. Pairs are found within touching + `reach` (the range of
-/// cohesion) + `skin`.
+/// Candidate pairs, found within touching + `reach` (the range of cohesion) + `skin`.
+/// A rebuild hands the old and new lists to the contacts' state store, which
+/// carries each pair's state over by merging the two sorted lists.
 #[derive(Clone, Debug)]
 pub struct NeighborList {
     pub detector: Detector,
@@ -46,31 +46,20 @@ pub struct NeighborList {
     /// Range beyond touching at which the contact law still acts, m.
     pub reach: f64,
     pub pairs: Vec<(u32, u32)>,
-    /// One slot per pair when contacts have history, otherwise empty.
-    pub history: Vec<ContactHistory>,
     pub space: Space,
-    keeps_history: bool,
     pub(crate) reference_position: Vec<Vec3>,
     pub(crate) reference_radius: Vec<f64>,
     pub builds: u64,
 }
 
 impl NeighborList {
-    pub fn new(
-        detector: Detector,
-        skin: f64,
-        reach: f64,
-        keeps_history: bool,
-        space: Space,
-    ) -> Self {
+    pub fn new(detector: Detector, skin: f64, reach: f64, space: Space) -> Self {
         NeighborList {
             space,
             detector,
             skin,
             reach,
             pairs: Vec::new(),
-            history: Vec::new(),
-            keeps_history,
             reference_position: Vec::new(),
             reference_radius: Vec::new(),
             builds: 0,
@@ -80,7 +69,7 @@ impl NeighborList {
     /// Rebuild when there is no reference yet or some particle's displacement plus
     /// radius growth since the last build exceeds skin/2: then no pair outside the
     /// list can have come within reach (|Δx_i| + Δr_i ≤ skin/2 for both partners).
-    pub fn update(&mut self, position: &[Vec3], radius: &[f64]) {
+    pub fn update(&mut self, position: &[Vec3], radius: &[f64], states: &mut dyn StateStore) {
         let half_skin = 0.5 * self.skin;
         let stale = self.reference_position.len() != position.len()
             || (0..position.len()).any(|i| {
@@ -95,27 +84,15 @@ impl NeighborList {
                         > budget * budget
             });
         if stale {
-            self.rebuild(position, radius);
+            self.rebuild(position, radius, states);
         }
     }
 
-    pub fn rebuild(&mut self, position: &[Vec3], radius: &[f64]) {
+    pub fn rebuild(&mut self, position: &[Vec3], radius: &[f64], states: &mut dyn StateStore) {
         let pairs =
             self.detector
                 .candidate_pairs(position, radius, self.skin + self.reach, &self.space);
-        if self.keeps_history {
-            let mut history = vec![ContactHistory::default(); pairs.len()];
-            let mut old = 0;
-            for (k, pair) in pairs.iter().enumerate() {
-                while old < self.pairs.len() && self.pairs[old] < *pair {
-                    old += 1;
-                }
-                if old < self.pairs.len() && self.pairs[old] == *pair {
-                    history[k] = self.history[old];
-                }
-            }
-            self.history = history;
-        }
+        states.carry_pairs(&self.pairs, &pairs);
         self.pairs = pairs;
         self.reference_position = position.to_vec();
         self.reference_radius = radius.to_vec();

@@ -5,8 +5,8 @@ use super::schema::*;
 use crate::boundary::Boundary;
 use crate::contact::{
     ContactLaw,
-    damping::Damping,
     damping::liggghts::{self, LiggghtsModel},
+    damping::{Constant, CriticalFraction, Damping},
     normal::NormalLaw,
     tangential::{TangentialLaw, liggghts_history},
     van_der_waals::VanDerWaals,
@@ -46,27 +46,30 @@ fn insertion_box(region: &BoxRegion) -> InsertionBox {
 /// The normal law a scene names (also used by validation, which needs the law's
 /// LIGGGHTS counterpart before anything is built).
 pub fn normal_law(spec: &NormalSpec) -> NormalLaw {
+    use crate::contact::normal::{Hertz, Hysteretic, KuwabaraKono, Linear, Storakers, WaltonBraun};
     match *spec {
-        NormalSpec::Linear { stiffness } => NormalLaw::Linear { stiffness },
-        NormalSpec::Hertz {} => NormalLaw::Hertz,
+        NormalSpec::Linear { stiffness } => NormalLaw::Linear(Linear { stiffness }),
+        NormalSpec::Hertz {} => NormalLaw::Hertz(Hertz {}),
         NormalSpec::KuwabaraKono { dissipation_time } => {
-            NormalLaw::KuwabaraKono { dissipation_time }
+            NormalLaw::KuwabaraKono(KuwabaraKono { dissipation_time })
         }
         NormalSpec::WaltonBraun {
             loading_stiffness,
             unloading_stiffness,
-        } => NormalLaw::WaltonBraun {
+        } => NormalLaw::WaltonBraun(WaltonBraun {
             loading_stiffness,
             unloading_stiffness,
-        },
+        }),
         NormalSpec::Hysteretic {
             stiffness,
             hysteresis,
-        } => NormalLaw::Hysteretic {
+        } => NormalLaw::Hysteretic(Hysteretic {
             stiffness,
             hysteresis,
-        },
-        NormalSpec::Storakers { min_with_hertz } => NormalLaw::Storakers { min_with_hertz },
+        }),
+        NormalSpec::Storakers { min_with_hertz } => {
+            NormalLaw::Storakers(Storakers { min_with_hertz })
+        }
     }
 }
 
@@ -76,8 +79,10 @@ pub fn contact_law(spec: &ContactSpec) -> Result<ContactLaw> {
     let normal = normal_law(&spec.normal);
     let damping = match spec.damping {
         None => None,
-        Some(DampingSpec::CriticalFraction { xi }) => Some(Damping::CriticalFraction { xi }),
-        Some(DampingSpec::Constant { gamma_n }) => Some(Damping::Constant { gamma_n }),
+        Some(DampingSpec::CriticalFraction { xi }) => {
+            Some(Damping::CriticalFraction(CriticalFraction { xi }))
+        }
+        Some(DampingSpec::Constant { gamma_n }) => Some(Damping::Constant(Constant { gamma_n })),
         Some(DampingSpec::LiggghtsRestitution { restitution }) => {
             let model = LiggghtsModel::of(&normal).ok_or_else(|| {
                 TampError::input(
@@ -85,27 +90,39 @@ pub fn contact_law(spec: &ContactSpec) -> Result<ContactLaw> {
                     liggghts::unsupported_law(spec.normal.law()),
                 )
             })?;
-            Some(Damping::CriticalFraction {
+            Some(Damping::CriticalFraction(CriticalFraction {
                 xi: model.critical_fraction(restitution),
-            })
+            }))
         }
     };
     let tangential = match &spec.tangential {
         None => None,
         Some(t) => {
             let parameter = t.stiffness.or(t.damping).or(t.beta).unwrap_or(0.0);
+            use crate::contact::tangential::{
+                Coulomb, CundallStrack, HaffWerner, MindlinDeresiewicz, MindlinNoSlip, storakers,
+                walton_braun,
+            };
             Some(match t.law {
-                TangentialLawName::MindlinDeresiewicz => TangentialLaw::MindlinDeresiewicz,
-                TangentialLawName::Coulomb => TangentialLaw::Coulomb,
-                TangentialLawName::HaffWerner => TangentialLaw::HaffWerner { damping: parameter },
-                TangentialLawName::CundallStrack => TangentialLaw::CundallStrack {
+                TangentialLawName::MindlinDeresiewicz => {
+                    TangentialLaw::MindlinDeresiewicz(MindlinDeresiewicz)
+                }
+                TangentialLawName::Coulomb => TangentialLaw::Coulomb(Coulomb),
+                TangentialLawName::HaffWerner => {
+                    TangentialLaw::HaffWerner(HaffWerner { damping: parameter })
+                }
+                TangentialLawName::CundallStrack => TangentialLaw::CundallStrack(CundallStrack {
                     stiffness: parameter,
-                },
-                TangentialLawName::WaltonBraun => TangentialLaw::WaltonBraun {
-                    stiffness: parameter,
-                },
-                TangentialLawName::MindlinNoSlip => TangentialLaw::MindlinNoSlip,
-                TangentialLawName::Storakers => TangentialLaw::Storakers { beta: parameter },
+                }),
+                TangentialLawName::WaltonBraun => {
+                    TangentialLaw::WaltonBraun(walton_braun::WaltonBraun {
+                        stiffness: parameter,
+                    })
+                }
+                TangentialLawName::MindlinNoSlip => TangentialLaw::MindlinNoSlip(MindlinNoSlip),
+                TangentialLawName::Storakers => {
+                    TangentialLaw::Storakers(storakers::Storakers { beta: parameter })
+                }
                 TangentialLawName::LiggghtsHistory => liggghts_history(spec, &normal, &damping)?,
             })
         }
@@ -143,9 +160,10 @@ fn liggghts_history(
     })?;
     let xi = match (&spec.damping, damping) {
         (None, _) => 0.0,
-        (Some(DampingSpec::LiggghtsRestitution { .. }), Some(Damping::CriticalFraction { xi })) => {
-            *xi
-        }
+        (
+            Some(DampingSpec::LiggghtsRestitution { .. }),
+            Some(Damping::CriticalFraction(CriticalFraction { xi })),
+        ) => *xi,
         (Some(other), _) => {
             return Err(TampError::input(
                 "contact.damping",
@@ -153,7 +171,9 @@ fn liggghts_history(
             ));
         }
     };
-    Ok(TangentialLaw::LiggghtsHistory { model, xi })
+    Ok(TangentialLaw::LiggghtsHistory(
+        crate::contact::tangential::LiggghtsHistory { model, xi },
+    ))
 }
 
 pub fn build(scene: &Scene) -> Result<BuiltScene> {
@@ -342,7 +362,6 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
         detector,
         scene.broad_phase.skin_fraction * r_min,
         law.reach(),
-        law.has_history(),
         space,
     );
     let limits = StabilityLimits {

@@ -21,7 +21,7 @@ impl Plane {
         (x - self.point).dot(&self.normal)
     }
 
-    #[inline]
+    #[inline(always)]
     pub fn contacts(&self, centre: &Vec3, radius: f64, reach: f64, out: &mut Vec<ShapeContact>) {
         let overlap = radius - self.distance(centre);
         if overlap > -reach {

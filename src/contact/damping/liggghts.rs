@@ -41,9 +41,12 @@ impl LiggghtsModel {
     /// The LIGGGHTS model of a normal law; `None` for laws LIGGGHTS does not have.
     pub fn of(law: &NormalLaw) -> Option<Self> {
         match law {
-            NormalLaw::Hertz => Some(LiggghtsModel::Hertz),
-            NormalLaw::Linear { .. } => Some(LiggghtsModel::Hooke),
-            _ => None,
+            NormalLaw::Hertz(_) => Some(LiggghtsModel::Hertz),
+            NormalLaw::Linear(_) => Some(LiggghtsModel::Hooke),
+            NormalLaw::KuwabaraKono(_)
+            | NormalLaw::WaltonBraun(_)
+            | NormalLaw::Hysteretic(_)
+            | NormalLaw::Storakers(_) => None,
         }
     }
 
@@ -102,8 +105,9 @@ pub fn hooke_stiffness(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::contact::damping::Damping;
+    use crate::contact::damping::{CriticalFraction, DampingModel};
     use crate::contact::normal::hertz::hertz_stiffness;
+    use crate::contact::normal::{Hertz, Linear, Storakers};
     use approx::assert_relative_eq;
 
     // The recorded LIGGGHTS scene: steel spheres, R = 1 mm, E = 2e11 Pa, ν = 0.3.
@@ -138,7 +142,7 @@ mod tests {
             for overlap in [1e-9, 1.6e-6] {
                 let xi = LiggghtsModel::Hertz.critical_fraction(e);
                 let k = hertz_stiffness(overlap, R_EFF, E_EFF);
-                let c = Damping::CriticalFraction { xi }.coefficient(M_EFF, k);
+                let c = CriticalFraction { xi }.coefficient(M_EFF, k);
                 let g = liggghts_hertz_gamma_n(e, overlap);
                 assert!(
                     (c - g).abs() <= 1e-14 * g.abs().max(1e-300),
@@ -158,7 +162,7 @@ mod tests {
                 max_relative = 1e-15
             );
             let xi = LiggghtsModel::Hooke.critical_fraction(e);
-            let c = Damping::CriticalFraction { xi }.coefficient(M_EFF, kn);
+            let c = CriticalFraction { xi }.coefficient(M_EFF, kn);
             assert_relative_eq!(c, gamman, max_relative = 1e-14);
         }
     }
@@ -171,7 +175,7 @@ mod tests {
         assert_relative_eq!(kn, 3.779_275_1e6, max_relative = 1e-7);
         let xi = LiggghtsModel::Hooke.critical_fraction(0.5);
         assert_relative_eq!(
-            Damping::CriticalFraction { xi }.coefficient(M_EFF, kn),
+            CriticalFraction { xi }.coefficient(M_EFF, kn),
             3.385_828_4,
             max_relative = 1e-7
         );
@@ -190,17 +194,17 @@ mod tests {
     #[test]
     fn only_hertz_and_linear_have_a_liggghts_model() {
         assert_eq!(
-            LiggghtsModel::of(&NormalLaw::Hertz),
+            LiggghtsModel::of(&NormalLaw::Hertz(Hertz {})),
             Some(LiggghtsModel::Hertz)
         );
         assert_eq!(
-            LiggghtsModel::of(&NormalLaw::Linear { stiffness: 1.0 }),
+            LiggghtsModel::of(&NormalLaw::Linear(Linear { stiffness: 1.0 })),
             Some(LiggghtsModel::Hooke)
         );
         assert_eq!(
-            LiggghtsModel::of(&NormalLaw::Storakers {
+            LiggghtsModel::of(&NormalLaw::Storakers(Storakers {
                 min_with_hertz: false
-            }),
+            })),
             None
         );
     }

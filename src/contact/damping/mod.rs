@@ -4,9 +4,9 @@
 //! Zhong eqs 7–9 and LIGGGHTS's default `limitForce off`.
 //!
 //! Two forms of c_n:
-//! - `CriticalFraction { xi }`: c_n = ξ · 2√(m* k_n) (Rojek eqs 7–8), with k_n the
+//! - `CriticalFraction`: c_n = ξ · 2√(m* k_n) (Rojek eqs 7–8), with k_n the
 //!   tangent stiffness of the normal law at the current overlap (eq 9, eq 10);
-//! - `Constant { gamma_n }`: c_n = γ_n (Zhong eq 6).
+//! - `Constant`: c_n = γ_n (Zhong eq 6).
 //!
 //! The scene kind `liggghts_restitution` is not a third form: `liggghts.rs` turns
 //! LIGGGHTS's restitution coefficient into the `CriticalFraction` ξ that gives
@@ -14,27 +14,69 @@
 
 pub mod liggghts;
 
+pub use crate::contact::model::DampingModel;
+
+/// c_n = ξ · 2√(m* k_n), Rojek eqs 6–10.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CriticalFraction {
+    pub xi: f64,
+}
+
+impl DampingModel for CriticalFraction {
+    const ACTIVE: bool = true;
+    #[inline(always)]
+    fn coefficient(&self, effective_mass: f64, stiffness: f64) -> f64 {
+        self.xi * critical_damping(effective_mass, stiffness)
+    }
+    fn ratio(&self, _: f64, _: f64) -> f64 {
+        self.xi
+    }
+}
+
+/// c_n = γ_n, Zhong eq 6 (N·s/m).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Constant {
+    pub gamma_n: f64,
+}
+
+impl DampingModel for Constant {
+    const ACTIVE: bool = true;
+    #[inline(always)]
+    fn coefficient(&self, _: f64, _: f64) -> f64 {
+        self.gamma_n
+    }
+    fn ratio(&self, effective_mass: f64, stiffness: f64) -> f64 {
+        self.gamma_n / critical_damping(effective_mass, stiffness)
+    }
+}
+
+/// The scene's damping role.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Damping {
-    CriticalFraction { xi: f64 },
-    Constant { gamma_n: f64 },
+    CriticalFraction(CriticalFraction),
+    Constant(Constant),
+}
+
+/// `each_damping!(damping, d => expr)`: `expr` with `d` bound to the form's own type.
+#[macro_export]
+macro_rules! each_damping {
+    ($damping:expr, $d:ident => $body:expr) => {
+        match $damping {
+            $crate::contact::damping::Damping::CriticalFraction($d) => $body,
+            $crate::contact::damping::Damping::Constant($d) => $body,
+        }
+    };
 }
 
 impl Damping {
     #[inline]
     pub fn coefficient(&self, effective_mass: f64, stiffness: f64) -> f64 {
-        match *self {
-            Damping::CriticalFraction { xi } => xi * critical_damping(effective_mass, stiffness),
-            Damping::Constant { gamma_n } => gamma_n,
-        }
+        each_damping!(self, d => d.coefficient(effective_mass, stiffness))
     }
 
     /// Damping ratio ξ of a contact with this mass and stiffness (for eq 28).
     pub fn ratio(&self, effective_mass: f64, stiffness: f64) -> f64 {
-        match *self {
-            Damping::CriticalFraction { xi } => xi,
-            Damping::Constant { gamma_n } => gamma_n / critical_damping(effective_mass, stiffness),
-        }
+        each_damping!(self, d => d.ratio(effective_mass, stiffness))
     }
 }
 

@@ -11,6 +11,9 @@
 //! Zhong eq 13 prints the constant as 3.21 (0.25 % low; docs/paper-discrepancies.md).
 //! LIGGGHTS keyword: `model hertz`.
 
+use super::{NormalModel, NormalResponse};
+use crate::material::PairProperties;
+
 pub fn hertz_force(overlap: f64, effective_radius: f64, effective_modulus: f64) -> f64 {
     4.0 / 3.0 * effective_modulus * (effective_radius * overlap).sqrt() * overlap
 }
@@ -51,6 +54,49 @@ pub fn hertz_contact_duration(
 ) -> f64 {
     let k_tilde = 4.0 / 3.0 * effective_modulus * effective_radius.sqrt();
     HERTZ_DURATION_CONSTANT * (effective_mass / k_tilde).powf(0.4) * approach_speed.powf(-0.2)
+}
+
+/// The Hertz law (no parameters: E* and R* come from the pair).
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Deserialize, serde::Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct Hertz {}
+
+impl NormalModel for Hertz {
+    type State = ();
+
+    #[inline(always)]
+    fn response(
+        &self,
+        overlap: f64,
+        _: f64,
+        r: f64,
+        pair: &PairProperties,
+        _: &mut (),
+    ) -> NormalResponse {
+        let e = pair.effective_modulus.unwrap_or(0.0);
+        NormalResponse {
+            force: hertz_force(overlap, r, e),
+            stiffness: hertz_stiffness(overlap, r, e),
+        }
+    }
+
+    fn stiffness(&self, overlap: f64, r: f64, pair: &PairProperties, _: &()) -> f64 {
+        hertz_stiffness(overlap, r, pair.effective_modulus.unwrap_or(0.0))
+    }
+
+    fn energy(&self, overlap: f64, r: f64, pair: &PairProperties, _: &()) -> f64 {
+        hertz_energy(overlap, r, pair.effective_modulus.unwrap_or(0.0))
+    }
+
+    /// The tangent stiffness at the largest overlap of a head-on impact.
+    fn impact_stiffness(&self, mass: f64, speed: f64, r: f64, pair: &PairProperties) -> f64 {
+        let e = pair.effective_modulus.unwrap_or(0.0);
+        hertz_stiffness(hertz_max_overlap(mass, speed, r, e), r, e)
+    }
+
+    fn stiffness_depends_on_speed(&self) -> bool {
+        true
+    }
 }
 
 #[cfg(test)]

@@ -10,6 +10,9 @@
 //! No history. Stiffness for the time step: k(1 + γ).
 //! Recoverable (stored) energy: ½ k (1 − γ) δ², released along the unloading branch.
 
+use super::{NormalModel, NormalResponse};
+use crate::material::PairProperties;
+
 pub fn hysteretic_force(overlap: f64, overlap_rate: f64, stiffness: f64, hysteresis: f64) -> f64 {
     let factor = if overlap_rate > 0.0 {
         1.0 + hysteresis
@@ -24,6 +27,50 @@ pub fn hysteretic_force(overlap: f64, overlap_rate: f64, stiffness: f64, hystere
 /// Closed-form restitution of a head-on collision.
 pub fn hysteretic_restitution(hysteresis: f64) -> f64 {
     ((1.0 - hysteresis) / (1.0 + hysteresis)).sqrt()
+}
+
+/// Zhong model V; k_n in N/m, γ dimensionless in [0, 1).
+#[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct Hysteretic {
+    pub stiffness: f64,
+    pub hysteresis: f64,
+}
+
+impl NormalModel for Hysteretic {
+    type State = ();
+    const OWN_DISSIPATION: bool = true;
+
+    #[inline(always)]
+    fn response(
+        &self,
+        overlap: f64,
+        rate: f64,
+        _: f64,
+        _: &PairProperties,
+        _: &mut (),
+    ) -> NormalResponse {
+        NormalResponse {
+            force: hysteretic_force(overlap, rate, self.stiffness, self.hysteresis),
+            stiffness: self.stiffness * (1.0 + self.hysteresis),
+        }
+    }
+
+    fn stiffness(&self, _: f64, _: f64, _: &PairProperties, _: &()) -> f64 {
+        self.stiffness * (1.0 + self.hysteresis)
+    }
+
+    fn energy(&self, overlap: f64, _: f64, _: &PairProperties, _: &()) -> f64 {
+        0.5 * self.stiffness * (1.0 - self.hysteresis) * overlap * overlap
+    }
+
+    fn impact_stiffness(&self, _: f64, _: f64, _: f64, _: &PairProperties) -> f64 {
+        self.stiffness * (1.0 + self.hysteresis)
+    }
+
+    fn stiffness_depends_on_speed(&self) -> bool {
+        false
+    }
 }
 
 #[cfg(test)]

@@ -12,7 +12,9 @@
 //! has units of 1/Pa; Brilliantov's original squares it (docs/paper-discrepancies.md).
 //! No history. Stiffness for the time step: the Hertz tangent 2E*√(R*δ).
 
-use super::hertz::{hertz_force, hertz_stiffness};
+use super::hertz::{Hertz, hertz_force, hertz_stiffness};
+use super::{NormalModel, NormalResponse};
+use crate::material::PairProperties;
 
 pub fn kuwabara_kono_force(
     overlap: f64,
@@ -27,6 +29,51 @@ pub fn kuwabara_kono_force(
         * hertz_stiffness(overlap, effective_radius, effective_modulus)
         * overlap_rate;
     (elastic + viscous).max(0.0)
+}
+
+/// Zhong model III; A is the dissipation time, s.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct KuwabaraKono {
+    pub dissipation_time: f64,
+}
+
+impl NormalModel for KuwabaraKono {
+    type State = ();
+    const OWN_DISSIPATION: bool = true;
+
+    #[inline(always)]
+    fn response(
+        &self,
+        overlap: f64,
+        rate: f64,
+        r: f64,
+        pair: &PairProperties,
+        _: &mut (),
+    ) -> NormalResponse {
+        let e = pair.effective_modulus.unwrap_or(0.0);
+        NormalResponse {
+            force: kuwabara_kono_force(overlap, rate, r, e, self.dissipation_time),
+            stiffness: hertz_stiffness(overlap, r, e),
+        }
+    }
+
+    /// The elastic (Hertz) part's tangent: the stored state has no rate.
+    fn stiffness(&self, overlap: f64, r: f64, pair: &PairProperties, state: &()) -> f64 {
+        Hertz {}.stiffness(overlap, r, pair, state)
+    }
+
+    fn energy(&self, overlap: f64, r: f64, pair: &PairProperties, state: &()) -> f64 {
+        Hertz {}.energy(overlap, r, pair, state)
+    }
+
+    fn impact_stiffness(&self, mass: f64, speed: f64, r: f64, pair: &PairProperties) -> f64 {
+        Hertz {}.impact_stiffness(mass, speed, r, pair)
+    }
+
+    fn stiffness_depends_on_speed(&self) -> bool {
+        true
+    }
 }
 
 #[cfg(test)]

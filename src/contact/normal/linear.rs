@@ -7,6 +7,9 @@
 //! Zhong eqs 7–9, implemented below for the verification cases.
 //! Parameters: k_n in N/m. No history. LIGGGHTS keyword: `model hooke/stiffness`.
 
+use super::{NormalModel, NormalResponse};
+use crate::material::PairProperties;
+
 pub fn linear_force(stiffness: f64, overlap: f64) -> f64 {
     stiffness * overlap
 }
@@ -63,6 +66,48 @@ impl LinearCollision {
         let omega0 = (stiffness / effective_mass).sqrt();
         let beta = -ln_e * omega0 / (std::f64::consts::PI.powi(2) + ln_e * ln_e).sqrt();
         2.0 * effective_mass * beta
+    }
+}
+
+/// Zhong model I: F = k_n δ, k_n in N/m.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct Linear {
+    pub stiffness: f64,
+}
+
+impl NormalModel for Linear {
+    type State = ();
+
+    #[inline(always)]
+    fn response(
+        &self,
+        overlap: f64,
+        _: f64,
+        _: f64,
+        _: &PairProperties,
+        _: &mut (),
+    ) -> NormalResponse {
+        NormalResponse {
+            force: linear_force(self.stiffness, overlap),
+            stiffness: self.stiffness,
+        }
+    }
+
+    fn stiffness(&self, _: f64, _: f64, _: &PairProperties, _: &()) -> f64 {
+        self.stiffness
+    }
+
+    fn energy(&self, overlap: f64, _: f64, _: &PairProperties, _: &()) -> f64 {
+        linear_energy(self.stiffness, overlap)
+    }
+
+    fn impact_stiffness(&self, _: f64, _: f64, _: f64, _: &PairProperties) -> f64 {
+        self.stiffness
+    }
+
+    fn stiffness_depends_on_speed(&self) -> bool {
+        false
     }
 }
 

@@ -23,8 +23,9 @@
 //! History: δ_max (m). Stiffness for the time step (Rojek §3.4): k_p while loading,
 //! k_unl otherwise. Recoverable (stored) energy: 2/5 K [(δ − δ_res)^{5/2} − (−δ_res)₊^{5/2}].
 
-use super::hertz::{hertz_force, hertz_stiffness};
-use crate::material::Hollomon;
+use super::hertz::{Hertz, hertz_force, hertz_stiffness};
+use super::{NormalModel, NormalResponse, PeakOverlap};
+use crate::material::{Hollomon, PairProperties};
 
 /// c^{2+m} of Storåkers' similarity solution, fitted by eq 17.
 pub fn storakers_c_power(exponent: f64) -> f64 {
@@ -57,14 +58,14 @@ pub fn storakers_overlap_at_force(force: f64, effective_radius: f64, hollomon: H
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Storakers {
+pub struct StorakersContact {
     pub effective_radius: f64,
     pub effective_modulus: f64,
     pub hollomon: Hollomon,
     pub min_with_hertz: bool,
 }
 
-impl Storakers {
+impl StorakersContact {
     /// Force and stiffness on the virgin (loading) branch.
     pub fn loading(&self, overlap: f64) -> (f64, f64) {
         let plastic = storakers_plastic(overlap, self.effective_radius, self.hollomon);
@@ -122,17 +123,112 @@ impl Storakers {
     }
 }
 
+/// The Storåkers law; `min_with_hertz` caps the plastic force by Hertz (Martin et
+/// al. 2003). The Hollomon constants σ0* and m come from the pair.
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Deserialize, serde::Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct Storakers {
+    #[serde(default)]
+    pub min_with_hertz: bool,
+}
+
+impl Storakers {
+    /// The law at one contact: R*, E* and the pair's Hollomon constants.
+    pub fn at(&self, effective_radius: f64, pair: &PairProperties) -> StorakersContact {
+        StorakersContact {
+            effective_radius,
+            effective_modulus: pair.effective_modulus.unwrap_or(0.0),
+            hollomon: pair.hollomon.unwrap_or(Hollomon {
+                strength: 0.0,
+                exponent: 0.0,
+            }),
+            min_with_hertz: self.min_with_hertz,
+        }
+    }
+}
+
+impl NormalModel for Storakers {
+    type State = PeakOverlap;
+
+    #[inline(always)]
+    fn response(
+        &self,
+        overlap: f64,
+        _: f64,
+        r: f64,
+        pair: &PairProperties,
+        state: &mut PeakOverlap,
+    ) -> NormalResponse {
+        state.max_overlap = state.max_overlap.max(overlap);
+        let (force, stiffness) = self.at(r, pair).response(overlap, state.max_overlap);
+        NormalResponse { force, stiffness }
+    }
+
+    fn stiffness(&self, overlap: f64, r: f64, pair: &PairProperties, state: &PeakOverlap) -> f64 {
+        self.at(r, pair)
+            .response(overlap, state.max_overlap.max(overlap))
+            .1
+    }
+
+    /// k_p while loading, and the elastic unloading tangent the contact turns onto
+    /// the step its overlap stops growing (Rojek §3.4; see `walton_braun`).
+    fn time_step_stiffness(
+        &self,
+        overlap: f64,
+        r: f64,
+        pair: &PairProperties,
+        state: &PeakOverlap,
+    ) -> f64 {
+        let current = self.stiffness(overlap, r, pair, state);
+        let turning = if overlap > 0.0 {
+            self.at(r, pair)
+                .unloading_stiffness(state.max_overlap.max(overlap))
+        } else {
+            0.0
+        };
+        current.max(turning)
+    }
+
+    fn energy(&self, overlap: f64, r: f64, pair: &PairProperties, state: &PeakOverlap) -> f64 {
+        self.at(r, pair).energy(overlap, state.max_overlap)
+    }
+
+    /// The stiffer of plastic loading (eq 22) and elastic unloading (eq 20) at the
+    /// largest overlap of a head-on impact.
+    fn impact_stiffness(&self, mass: f64, speed: f64, r: f64, pair: &PairProperties) -> f64 {
+        let s = self.at(r, pair);
+        // Kinetic energy absorbed by the plastic branch C δ^p: ½ m v² = C δ^{p+1}/(p+1).
+        let p = 1.0 + 0.5 * s.hollomon.exponent;
+        let c = storakers_prefactor(r, s.hollomon);
+        let d = ((p + 1.0) * 0.5 * mass * speed * speed / c).powf(1.0 / (p + 1.0));
+        let k_plastic = s.loading(d).1;
+        let k_unloading = s.unloading_stiffness(d);
+        // With the Hertz cap the contact may load elastically all the way: take
+        // the Hertz impact stiffness too, whichever is larger.
+        let k_hertz = if self.min_with_hertz {
+            Hertz {}.impact_stiffness(mass, speed, r, pair)
+        } else {
+            0.0
+        };
+        k_plastic.max(k_unloading).max(k_hertz)
+    }
+
+    fn stiffness_depends_on_speed(&self) -> bool {
+        true
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use approx::assert_relative_eq;
 
-    fn nial(m: f64, min_with_hertz: bool) -> Storakers {
+    fn nial(m: f64, min_with_hertz: bool) -> StorakersContact {
         let e = 183e9;
         // NiAl, Rojek Table 2 (clippy mistakes 0.318 for 1/π).
         #[allow(clippy::approx_constant)]
         let nu: f64 = 0.318;
-        Storakers {
+        StorakersContact {
             effective_radius: 5e-6,
             effective_modulus: e / (2.0 * (1.0 - nu * nu)),
             hollomon: Hollomon {
@@ -187,7 +283,7 @@ mod tests {
     }
 
     /// Work of loading along the virgin branch, by the trapezoidal rule.
-    fn loading_work(s: &Storakers, dm: f64) -> f64 {
+    fn loading_work(s: &StorakersContact, dm: f64) -> f64 {
         let n = 100_000;
         let h = dm / n as f64;
         (0..n)

@@ -7,6 +7,8 @@
 //! tangential load (it chatters about v_t = 0 instead). Use it for flows that slide,
 //! not for static packings. No history. No stiffness enters the time step.
 
+use super::{TangentialInput, TangentialModel};
+
 use crate::particles::Vec3;
 
 #[inline]
@@ -16,6 +18,31 @@ pub fn coulomb_force(tangential_velocity: &Vec3, friction: f64, normal_force: f6
         return Vec3::zeros();
     }
     -tangential_velocity * (friction * normal_force.max(0.0) / speed)
+}
+
+/// Zhong model VII: sliding friction only, no spring.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Coulomb;
+
+impl TangentialModel for Coulomb {
+    type State = ();
+
+    #[inline(always)]
+    fn force(&self, input: &TangentialInput, _: &mut ()) -> Vec3 {
+        coulomb_force(
+            &input.tangential_velocity,
+            input.friction,
+            input.normal_force,
+        )
+    }
+
+    fn stiffness(&self, _: &TangentialInput) -> f64 {
+        0.0
+    }
+
+    fn energy(&self, _: &TangentialInput, _: &()) -> f64 {
+        0.0
+    }
 }
 
 #[cfg(test)]

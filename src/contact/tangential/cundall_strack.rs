@@ -13,6 +13,8 @@
 //! docs/models/cundall_strack.md).
 //! History: the spring vector ξ_s (m). Parameters: k_s (N/m), μ from the material pair.
 
+use super::{TangentialInput, TangentialModel};
+
 use super::incremental::cap_to_cone;
 use crate::particles::Vec3;
 
@@ -51,6 +53,42 @@ pub fn cundall_strack_force(
         *spring = -force / stiffness;
     }
     force
+}
+
+/// Zhong model IX; k_s in N/m. State: the spring elongation ξ_s, m.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CundallStrack {
+    pub stiffness: f64,
+}
+
+impl TangentialModel for CundallStrack {
+    type State = Vec3;
+
+    #[inline(always)]
+    fn force(&self, input: &TangentialInput, spring: &mut Vec3) -> Vec3 {
+        cundall_strack_force(
+            spring,
+            &input.normal,
+            &input.tangential_velocity,
+            input.dt,
+            self.stiffness,
+            input.friction,
+            input.normal_force,
+        )
+    }
+
+    fn stiffness(&self, _: &TangentialInput) -> f64 {
+        self.stiffness
+    }
+
+    /// ½ k_s |ξ_s|².
+    fn energy(&self, _: &TangentialInput, spring: &Vec3) -> f64 {
+        0.5 * self.stiffness * spring.norm_squared()
+    }
+
+    fn stiffness_before_contact(&self, _: f64) -> f64 {
+        self.stiffness
+    }
 }
 
 #[cfg(test)]

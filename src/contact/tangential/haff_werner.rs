@@ -8,6 +8,8 @@
 //! stick. No history. Explicit stability of the viscous part needs
 //! Δt < 2 m/γ_s (per particle, with the rotational lever when spin is on).
 
+use super::{TangentialInput, TangentialModel};
+
 use crate::particles::Vec3;
 
 #[inline]
@@ -23,6 +25,39 @@ pub fn haff_werner_force(
     }
     let magnitude = (damping * speed).min(friction * normal_force.max(0.0));
     -tangential_velocity * (magnitude / speed)
+}
+
+/// Zhong model VIII; γ_s in N·s/m.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HaffWerner {
+    pub damping: f64,
+}
+
+impl TangentialModel for HaffWerner {
+    type State = ();
+
+    #[inline(always)]
+    fn force(&self, input: &TangentialInput, _: &mut ()) -> Vec3 {
+        haff_werner_force(
+            &input.tangential_velocity,
+            self.damping,
+            input.friction,
+            input.normal_force,
+        )
+    }
+
+    fn stiffness(&self, _: &TangentialInput) -> f64 {
+        0.0
+    }
+
+    fn energy(&self, _: &TangentialInput, _: &()) -> f64 {
+        0.0
+    }
+
+    /// The dashpots of all a particle's contacts act on it together: Δt < 2m/(n_c γ_s (1 + m R²/I)).
+    fn viscous_coefficient(&self) -> Option<f64> {
+        (self.damping > 0.0).then_some(self.damping)
+    }
 }
 
 #[cfg(test)]

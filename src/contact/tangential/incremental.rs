@@ -43,6 +43,16 @@ pub fn incremental_force(
     *force
 }
 
+/// Energy of a tangential force F held by a spring of stiffness k: ½|F|²/k (zero
+/// without a spring).
+pub fn spring_energy(force: &Vec3, stiffness: f64) -> f64 {
+    if stiffness > 0.0 {
+        0.5 * force.norm_squared() / stiffness
+    } else {
+        0.0
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

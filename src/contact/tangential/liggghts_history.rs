@@ -33,6 +33,11 @@
 //! Parameters: μ from the material pair; the model and ξ come from the scene's normal
 //! law and damping when the law is built. See docs/liggghts.md.
 
+use super::mindlin_no_slip::mindlin_no_slip_stiffness;
+use super::{TangentialInput, TangentialModel};
+use crate::contact::damping::critical_damping;
+use crate::contact::damping::liggghts::LiggghtsModel;
+
 use crate::particles::Vec3;
 
 /// Why `liggghts_history` is refused with the normal law `law` (path
@@ -87,12 +92,62 @@ pub fn liggghts_history_force(
     force
 }
 
+/// LIGGGHTS 3.8 `tangential history`: k_t of the LIGGGHTS `model` (8G*√(R*δ) for
+/// hertz, k_n for hooke) and γ_t = ξ·2√(m* k_t) with ξ the normal damping's
+/// (`liggghts_restitution`, 0 without damping). State: the shear displacement, m.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LiggghtsHistory {
+    pub model: LiggghtsModel,
+    pub xi: f64,
+}
+
+impl TangentialModel for LiggghtsHistory {
+    type State = Vec3;
+
+    #[inline(always)]
+    fn force(&self, input: &TangentialInput, shear: &mut Vec3) -> Vec3 {
+        let k_t = self.stiffness(input);
+        liggghts_history_force(
+            shear,
+            &input.normal,
+            &input.tangential_velocity,
+            input.dt,
+            k_t,
+            self.xi * critical_damping(input.effective_mass, k_t),
+            input.friction,
+            input.normal_force,
+        )
+    }
+
+    fn stiffness(&self, input: &TangentialInput) -> f64 {
+        match self.model {
+            LiggghtsModel::Hertz => mindlin_no_slip_stiffness(
+                input.overlap,
+                input.effective_radius,
+                input.effective_shear_modulus,
+            ),
+            LiggghtsModel::Hooke => input.normal_stiffness,
+        }
+    }
+
+    /// ½ k_t |s|².
+    fn energy(&self, input: &TangentialInput, shear: &Vec3) -> f64 {
+        0.5 * self.stiffness(input) * shear.norm_squared()
+    }
+
+    /// Hooke's k_t = k_n is known before any contact.
+    fn stiffness_before_contact(&self, impact_stiffness: f64) -> f64 {
+        match self.model {
+            LiggghtsModel::Hooke => impact_stiffness,
+            LiggghtsModel::Hertz => 0.0,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::contact::damping::liggghts::{LiggghtsModel, beta, hooke_stiffness};
-    use crate::contact::history::ContactHistory;
-    use crate::contact::tangential::{TangentialInput, TangentialLaw};
     use approx::assert_relative_eq;
 
     // Steel spheres of the LIGGGHTS cross-checks: R = 1 mm, E = 2e11 Pa, ν = 0.3.
@@ -128,23 +183,23 @@ mod tests {
             let sqrtval = (R_EFF * overlap).sqrt();
             let st = 8.0 * G_EFF * sqrtval;
             let gammat = -2.0 * 0.912_870_929_175_276_9 * beta(e) * (st * M_EFF).sqrt();
-            let law = TangentialLaw::LiggghtsHistory {
+            let law = LiggghtsHistory {
                 model: LiggghtsModel::Hertz,
                 xi: LiggghtsModel::Hertz.critical_fraction(e),
             };
             let k_n = 2.0 * E_EFF * sqrtval;
-            let f = law.force(&input(overlap, v, k_n), &mut ContactHistory::default());
+            let f = law.force(&input(overlap, v, k_n), &mut Vec3::zeros());
             let want = -(v * 1e-9 * st) - v * gammat;
             assert!((f - want).norm() <= 1e-14 * want.norm(), "hertz e {e}");
             // model hooke: k_t = k_n, γ_t = γ_n.
             let kn = hooke_stiffness(M_EFF, R_EFF, E_EFF, 1.0);
             let l = e.ln();
             let gamman = (4.0 * M_EFF * kn * l * l / (l * l + std::f64::consts::PI.powi(2))).sqrt();
-            let law = TangentialLaw::LiggghtsHistory {
+            let law = LiggghtsHistory {
                 model: LiggghtsModel::Hooke,
                 xi: LiggghtsModel::Hooke.critical_fraction(e),
             };
-            let f = law.force(&input(overlap, v, kn), &mut ContactHistory::default());
+            let f = law.force(&input(overlap, v, kn), &mut Vec3::zeros());
             let want = -(v * 1e-9 * kn) - v * gamman;
             assert!((f - want).norm() <= 1e-14 * want.norm(), "hooke e {e}");
         }

@@ -17,14 +17,18 @@
 //! History: force vector, axis, branch k, turning point F^k, previous N.
 //! Stiffness for the time step: k₀ = 8 G* a (θ = 1, the largest).
 
+use super::incremental::spring_energy;
+use super::mindlin_no_slip::MindlinNoSlip;
+use super::{TangentialInput, TangentialModel};
+
+use super::scalar_axis::{ScalarAxisState, TangentialBranch};
 use super::scalar_axis::{finish, split};
-use crate::contact::history::{ContactHistory, TangentialBranch};
 use crate::particles::Vec3;
 use std::ops::ControlFlow;
 
 #[inline]
 pub fn mindlin_deresiewicz_force(
-    history: &mut ContactHistory,
+    history: &mut ScalarAxisState,
     normal: &Vec3,
     tangential_velocity: &Vec3,
     dt: f64,
@@ -79,6 +83,37 @@ pub fn mindlin_deresiewicz_force(
     finish(history, force, step.axis, mu_n)
 }
 
+/// Zhong model VI. State: force, axis, branch, turning point and the previous
+/// normal force (`ScalarAxisState`).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct MindlinDeresiewicz;
+
+impl TangentialModel for MindlinDeresiewicz {
+    type State = ScalarAxisState;
+
+    #[inline(always)]
+    fn force(&self, input: &TangentialInput, state: &mut ScalarAxisState) -> Vec3 {
+        mindlin_deresiewicz_force(
+            state,
+            &input.normal,
+            &input.tangential_velocity,
+            input.dt,
+            self.stiffness(input),
+            input.friction,
+            input.normal_force,
+        )
+    }
+
+    /// The initial (θ = 1) stiffness, 8 G* a (Mindlin no-slip).
+    fn stiffness(&self, input: &TangentialInput) -> f64 {
+        MindlinNoSlip.stiffness(input)
+    }
+
+    fn energy(&self, input: &TangentialInput, state: &ScalarAxisState) -> f64 {
+        spring_energy(&state.tangential, self.stiffness(input))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -89,7 +124,7 @@ mod tests {
     const N: f64 = 10.0;
 
     /// Drive the contact along +x (force along −x) by `s` in `steps` increments.
-    fn drive(h: &mut ContactHistory, s: f64, steps: usize) -> f64 {
+    fn drive(h: &mut ScalarAxisState, s: f64, steps: usize) -> f64 {
         let v = Vec3::new(s / steps as f64, 0.0, 0.0);
         let mut f = Vec3::zeros();
         for _ in 0..steps {
@@ -104,7 +139,7 @@ mod tests {
 
     #[test]
     fn first_loading_follows_mindlin_closed_form() {
-        let mut h = ContactHistory {
+        let mut h = ScalarAxisState {
             previous_normal_force: N,
             ..Default::default()
         };
@@ -121,7 +156,7 @@ mod tests {
 
     #[test]
     fn unloading_follows_masing() {
-        let mut h = ContactHistory {
+        let mut h = ScalarAxisState {
             previous_normal_force: N,
             ..Default::default()
         };

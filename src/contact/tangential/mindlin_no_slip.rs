@@ -10,12 +10,49 @@
 //! law, `mindlin_deresiewicz.rs`). History: the tangential force vector (N).
 //! Stiffness for the time step: k_t at the current overlap.
 
+use super::incremental::{incremental_force, spring_energy};
+use super::{TangentialInput, TangentialModel};
+use crate::particles::Vec3;
+
 pub fn mindlin_no_slip_stiffness(
     overlap: f64,
     effective_radius: f64,
     effective_shear_modulus: f64,
 ) -> f64 {
     8.0 * effective_shear_modulus * (effective_radius * overlap).sqrt()
+}
+
+/// Rojek eqs 11–14 (H-MDNs). State: the incremental tangential force, N.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct MindlinNoSlip;
+
+impl TangentialModel for MindlinNoSlip {
+    type State = Vec3;
+
+    #[inline(always)]
+    fn force(&self, input: &TangentialInput, force: &mut Vec3) -> Vec3 {
+        incremental_force(
+            force,
+            &input.normal,
+            &input.tangential_velocity,
+            input.dt,
+            self.stiffness(input),
+            input.friction,
+            input.normal_force,
+        )
+    }
+
+    fn stiffness(&self, input: &TangentialInput) -> f64 {
+        mindlin_no_slip_stiffness(
+            input.overlap,
+            input.effective_radius,
+            input.effective_shear_modulus,
+        )
+    }
+
+    fn energy(&self, input: &TangentialInput, force: &Vec3) -> f64 {
+        spring_energy(force, self.stiffness(input))
+    }
 }
 
 #[cfg(test)]

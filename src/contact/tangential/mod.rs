@@ -1,7 +1,7 @@
-//! Tangential contact laws. An absent law (friction off) is `None` in
-//! `ContactLaw`: no tangential velocity is computed and no history is stored.
-//! One file per law; the shared pieces are `incremental.rs` (Rojek eq 11 with the
-//! Coulomb cap) and `scalar_axis.rs` (how the 1D history laws act in 3D).
+//! Tangential contact laws, one file and one type (implementing `TangentialModel`)
+//! per law. An absent law (friction off) is `None` in `ContactLaw` and `NoFriction`
+//! in the force loop: no tangential velocity is computed and nothing is stored.
+//! The shared pieces are `incremental.rs` (Rojek eq 11 with the Coulomb cap) and `scalar_axis.rs` (how the 1D history laws act in 3D).
 
 pub mod coulomb;
 pub mod cundall_strack;
@@ -14,35 +14,56 @@ pub mod scalar_axis;
 pub mod storakers;
 pub mod walton_braun;
 
-use crate::contact::damping::critical_damping;
-use crate::contact::damping::liggghts::LiggghtsModel;
-use crate::contact::history::ContactHistory;
+pub use crate::contact::model::TangentialModel;
 use crate::particles::Vec3;
+pub use coulomb::Coulomb;
+pub use cundall_strack::CundallStrack;
+pub use haff_werner::HaffWerner;
+pub use liggghts_history::LiggghtsHistory;
+pub use mindlin_deresiewicz::MindlinDeresiewicz;
+pub use mindlin_no_slip::MindlinNoSlip;
 
+/// The scene's tangential law. Each variant is the law's own type;
+/// `each_tangential!` is the one place that lists them.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum TangentialLaw {
     /// Zhong model VI.
-    MindlinDeresiewicz,
+    MindlinDeresiewicz(MindlinDeresiewicz),
     /// Zhong model VII.
-    Coulomb,
-    /// Zhong model VIII; γ_s in N·s/m.
-    HaffWerner { damping: f64 },
-    /// Zhong model IX; k_s in N/m.
-    CundallStrack { stiffness: f64 },
-    /// Zhong model X; k₀ in N/m.
-    WaltonBraun { stiffness: f64 },
+    Coulomb(Coulomb),
+    /// Zhong model VIII.
+    HaffWerner(HaffWerner),
+    /// Zhong model IX.
+    CundallStrack(CundallStrack),
+    /// Zhong model X.
+    WaltonBraun(walton_braun::WaltonBraun),
     /// Rojek eqs 11–14 (H-MDNs).
-    MindlinNoSlip,
+    MindlinNoSlip(MindlinNoSlip),
     /// Rojek eq 21: k_t = β k_n.
-    Storakers { beta: f64 },
-    /// LIGGGHTS 3.8 `tangential history`: k_t of the LIGGGHTS `model` (8G*√(R*δ) for
-    /// hertz, k_n for hooke) and γ_t = ξ·2√(m* k_t) with ξ the normal damping's
-    /// (`liggghts_restitution`, 0 without damping). Built from the scene's normal law
-    /// and damping.
-    LiggghtsHistory { model: LiggghtsModel, xi: f64 },
+    Storakers(storakers::Storakers),
+    /// LIGGGHTS 3.8 `tangential history`, built from the scene's normal law and damping.
+    LiggghtsHistory(LiggghtsHistory),
 }
 
-/// What a tangential law reads from the contact besides its history.
+/// `each_tangential!(law, t => expr)`: `expr` with `t` bound to the law's own type,
+/// for every variant (an exhaustive match).
+#[macro_export]
+macro_rules! each_tangential {
+    ($law:expr, $t:ident => $body:expr) => {
+        match $law {
+            $crate::contact::tangential::TangentialLaw::MindlinDeresiewicz($t) => $body,
+            $crate::contact::tangential::TangentialLaw::Coulomb($t) => $body,
+            $crate::contact::tangential::TangentialLaw::HaffWerner($t) => $body,
+            $crate::contact::tangential::TangentialLaw::CundallStrack($t) => $body,
+            $crate::contact::tangential::TangentialLaw::WaltonBraun($t) => $body,
+            $crate::contact::tangential::TangentialLaw::MindlinNoSlip($t) => $body,
+            $crate::contact::tangential::TangentialLaw::Storakers($t) => $body,
+            $crate::contact::tangential::TangentialLaw::LiggghtsHistory($t) => $body,
+        }
+    };
+}
+
+/// What a tangential law reads from the contact besides its state.
 #[derive(Clone, Copy, Debug)]
 pub struct TangentialInput {
     pub normal: Vec3,
@@ -63,152 +84,34 @@ pub struct TangentialInput {
 impl TangentialLaw {
     pub fn name(&self) -> &'static str {
         match self {
-            TangentialLaw::MindlinDeresiewicz => "mindlin_deresiewicz",
-            TangentialLaw::Coulomb => "coulomb",
-            TangentialLaw::HaffWerner { .. } => "haff_werner",
-            TangentialLaw::CundallStrack { .. } => "cundall_strack",
-            TangentialLaw::WaltonBraun { .. } => "walton_braun",
-            TangentialLaw::MindlinNoSlip => "mindlin_no_slip",
-            TangentialLaw::Storakers { .. } => "storakers",
-            TangentialLaw::LiggghtsHistory { .. } => "liggghts_history",
+            TangentialLaw::MindlinDeresiewicz(_) => "mindlin_deresiewicz",
+            TangentialLaw::Coulomb(_) => "coulomb",
+            TangentialLaw::HaffWerner(_) => "haff_werner",
+            TangentialLaw::CundallStrack(_) => "cundall_strack",
+            TangentialLaw::WaltonBraun(_) => "walton_braun",
+            TangentialLaw::MindlinNoSlip(_) => "mindlin_no_slip",
+            TangentialLaw::Storakers(_) => "storakers",
+            TangentialLaw::LiggghtsHistory(_) => "liggghts_history",
         }
     }
 
     /// Whether the law keeps a tangential state between steps.
     pub fn has_history(&self) -> bool {
-        !matches!(
-            self,
-            TangentialLaw::Coulomb | TangentialLaw::HaffWerner { .. }
-        )
+        each_tangential!(self, t => std::mem::size_of_val(&state_of(t)) > 0)
     }
 
-    /// Whether the law needs G* (elastic constants on every material).
-    pub fn needs_elastic_constants(&self) -> bool {
-        matches!(
-            self,
-            TangentialLaw::MindlinDeresiewicz
-                | TangentialLaw::MindlinNoSlip
-                | TangentialLaw::LiggghtsHistory {
-                    model: LiggghtsModel::Hertz,
-                    ..
-                }
-        )
+    /// Tangential force on particle i from a virgin contact; for tests of one law.
+    pub fn force_once(&self, input: &TangentialInput) -> Vec3 {
+        each_tangential!(self, t => t.force(input, &mut state_of(t)))
     }
 
-    /// Tangential force on particle i; advances the history.
-    #[inline]
-    pub fn force(&self, input: &TangentialInput, history: &mut ContactHistory) -> Vec3 {
-        let v_t = &input.tangential_velocity;
-        let mu = input.friction;
-        let n = input.normal_force;
-        match *self {
-            TangentialLaw::Coulomb => coulomb::coulomb_force(v_t, mu, n),
-            TangentialLaw::HaffWerner { damping } => {
-                haff_werner::haff_werner_force(v_t, damping, mu, n)
-            }
-            TangentialLaw::CundallStrack { stiffness } => cundall_strack::cundall_strack_force(
-                &mut history.tangential,
-                &input.normal,
-                v_t,
-                input.dt,
-                stiffness,
-                mu,
-                n,
-            ),
-            TangentialLaw::MindlinNoSlip | TangentialLaw::Storakers { .. } => {
-                incremental::incremental_force(
-                    &mut history.tangential,
-                    &input.normal,
-                    v_t,
-                    input.dt,
-                    self.stiffness(input),
-                    mu,
-                    n,
-                )
-            }
-            TangentialLaw::MindlinDeresiewicz => mindlin_deresiewicz::mindlin_deresiewicz_force(
-                history,
-                &input.normal,
-                v_t,
-                input.dt,
-                self.stiffness(input),
-                mu,
-                n,
-            ),
-            TangentialLaw::LiggghtsHistory { xi, .. } => {
-                let k_t = self.stiffness(input);
-                liggghts_history::liggghts_history_force(
-                    &mut history.tangential,
-                    &input.normal,
-                    v_t,
-                    input.dt,
-                    k_t,
-                    xi * critical_damping(input.effective_mass, k_t),
-                    mu,
-                    n,
-                )
-            }
-            TangentialLaw::WaltonBraun { stiffness } => {
-                walton_braun::walton_braun_tangential_force(
-                    history,
-                    &input.normal,
-                    v_t,
-                    input.dt,
-                    stiffness,
-                    mu,
-                    n,
-                )
-            }
-        }
-    }
-
-    /// Largest tangent stiffness at this contact state (θ = 1), N/m; zero for the
-    /// spring-less laws. Used by the critical time step and the stored energy.
+    /// See `TangentialModel::stiffness`.
     pub fn stiffness(&self, input: &TangentialInput) -> f64 {
-        match *self {
-            TangentialLaw::Coulomb | TangentialLaw::HaffWerner { .. } => 0.0,
-            TangentialLaw::CundallStrack { stiffness }
-            | TangentialLaw::WaltonBraun { stiffness } => stiffness,
-            TangentialLaw::MindlinNoSlip
-            | TangentialLaw::MindlinDeresiewicz
-            | TangentialLaw::LiggghtsHistory {
-                model: LiggghtsModel::Hertz,
-                ..
-            } => mindlin_no_slip::mindlin_no_slip_stiffness(
-                input.overlap,
-                input.effective_radius,
-                input.effective_shear_modulus,
-            ),
-            TangentialLaw::LiggghtsHistory {
-                model: LiggghtsModel::Hooke,
-                ..
-            } => input.normal_stiffness,
-            TangentialLaw::Storakers { beta } => {
-                storakers::storakers_tangential_stiffness(beta, input.normal_stiffness)
-            }
-        }
+        each_tangential!(self, t => t.stiffness(input))
     }
+}
 
-    /// Energy held in the tangential state, J: ½k|ξ|² for the laws that store a spring
-    /// displacement (Cundall–Strack, LIGGGHTS's shear), ½|F_t|²/k_t for the laws that
-    /// store the force.
-    pub fn energy(&self, input: &TangentialInput, history: &ContactHistory) -> f64 {
-        match *self {
-            TangentialLaw::Coulomb | TangentialLaw::HaffWerner { .. } => 0.0,
-            TangentialLaw::CundallStrack { stiffness } => {
-                0.5 * stiffness * history.tangential.norm_squared()
-            }
-            TangentialLaw::LiggghtsHistory { .. } => {
-                0.5 * self.stiffness(input) * history.tangential.norm_squared()
-            }
-            _ => {
-                let k = self.stiffness(input);
-                if k > 0.0 {
-                    0.5 * history.tangential.norm_squared() / k
-                } else {
-                    0.0
-                }
-            }
-        }
-    }
+/// A fresh state of the law `t` (its type, for code generic over the laws).
+fn state_of<T: TangentialModel>(_: &T) -> T::State {
+    T::State::default()
 }

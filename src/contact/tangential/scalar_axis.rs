@@ -14,9 +14,53 @@
 
 use super::cundall_strack::rotate_into_plane;
 use super::incremental::cap_to_cone;
-use crate::contact::history::{ContactHistory, TangentialBranch};
+use crate::contact::model::ContactState;
 use crate::particles::Vec3;
+use serde::{Deserialize, Serialize};
 use std::ops::ControlFlow;
+
+/// Loading state of the scalar tangential laws (Zhong eq 20, k = 0, 1, 2).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum TangentialBranch {
+    /// k = 0: first loading from a virgin contact.
+    #[default]
+    Loading,
+    /// k = 1: unloading from the turning point.
+    Unloading,
+    /// k = 2: reloading after an unloading.
+    Reloading,
+}
+
+/// What a scalar-axis law (Mindlin–Deresiewicz, Walton–Braun) keeps per contact.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct ScalarAxisState {
+    /// The tangential force F_t in the contact plane, N.
+    pub tangential: Vec3,
+    /// Force at the last turning point, N (Mindlin–Deresiewicz F^k, Walton–Braun F*).
+    pub turning_force: f64,
+    /// Normal force at the previous step, N (its increment ΔF_n drives Mindlin–Deresiewicz).
+    pub previous_normal_force: f64,
+    pub branch: TangentialBranch,
+    /// Unit loading axis.
+    pub axis: Vec3,
+}
+
+impl ScalarAxisState {
+    /// Forget the tangential state (force, axis, branch, turning point) while the
+    /// bodies stay in contact; the previous normal force is kept.
+    pub fn forget_tangential(&mut self) {
+        *self = ScalarAxisState {
+            previous_normal_force: self.previous_normal_force,
+            ..ScalarAxisState::default()
+        };
+    }
+}
+
+impl ContactState for ScalarAxisState {
+    fn tangential(&self) -> Vec3 {
+        self.tangential
+    }
+}
 
 /// Displacement increment split on the axis: (ê, along, across).
 pub struct AxisIncrement {
@@ -32,7 +76,7 @@ pub struct AxisIncrement {
 /// (`limit` = μN ≤ 0); the stored force on the cone when there is neither a force
 /// nor a displacement to define an axis.
 pub fn split(
-    history: &mut ContactHistory,
+    history: &mut ScalarAxisState,
     normal: &Vec3,
     tangential_velocity: &Vec3,
     dt: f64,
@@ -63,7 +107,7 @@ pub fn split(
 
 /// Store the new force (capped to the cone) and the axis for the next step: the
 /// axis follows the force during first loading and stays frozen afterwards.
-pub fn finish(history: &mut ContactHistory, force: Vec3, axis: Vec3, limit: f64) -> Vec3 {
+pub fn finish(history: &mut ScalarAxisState, force: Vec3, axis: Vec3, limit: f64) -> Vec3 {
     history.tangential = cap_to_cone(force, 1.0, limit);
     history.axis =
         if history.branch == TangentialBranch::Loading && history.tangential.norm_squared() > 0.0 {

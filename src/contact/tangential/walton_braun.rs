@@ -12,14 +12,17 @@
 //! neglected in the stiffness, as the model assumes. |F| ≤ μN.
 //! History: force vector, axis, direction, F*. Stiffness for the time step: k₀.
 
+use super::incremental::spring_energy;
+use super::{TangentialInput, TangentialModel};
+
+use super::scalar_axis::{ScalarAxisState, TangentialBranch};
 use super::scalar_axis::{finish, split};
-use crate::contact::history::{ContactHistory, TangentialBranch};
 use crate::particles::Vec3;
 use std::ops::ControlFlow;
 
 #[inline]
 pub fn walton_braun_tangential_force(
-    history: &mut ContactHistory,
+    history: &mut ScalarAxisState,
     normal: &Vec3,
     tangential_velocity: &Vec3,
     dt: f64,
@@ -59,6 +62,41 @@ pub fn walton_braun_tangential_force(
     finish(history, force, step.axis, mu_n)
 }
 
+/// Zhong model X; k₀ in N/m. State: `ScalarAxisState`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WaltonBraun {
+    pub stiffness: f64,
+}
+
+impl TangentialModel for WaltonBraun {
+    type State = ScalarAxisState;
+
+    #[inline(always)]
+    fn force(&self, input: &TangentialInput, state: &mut ScalarAxisState) -> Vec3 {
+        walton_braun_tangential_force(
+            state,
+            &input.normal,
+            &input.tangential_velocity,
+            input.dt,
+            self.stiffness,
+            input.friction,
+            input.normal_force,
+        )
+    }
+
+    fn stiffness(&self, _: &TangentialInput) -> f64 {
+        self.stiffness
+    }
+
+    fn energy(&self, _: &TangentialInput, state: &ScalarAxisState) -> f64 {
+        spring_energy(&state.tangential, self.stiffness)
+    }
+
+    fn stiffness_before_contact(&self, _: f64) -> f64 {
+        self.stiffness
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -68,7 +106,7 @@ mod tests {
     fn first_loading_integrates_eq27a() {
         // dF/ds = k0 (1 − F/μN)^{1/3} ⇒ F = μN[1 − (1 − 2k0 s/(3μN))^{3/2}].
         let (k0, mu, n) = (1e6, 0.5, 4.0);
-        let mut h = ContactHistory::default();
+        let mut h = ScalarAxisState::default();
         let s_total = 0.8 * 3.0 * mu * n / (2.0 * k0);
         let steps = 50_000;
         let v = Vec3::new(-s_total / steps as f64, 0.0, 0.0);

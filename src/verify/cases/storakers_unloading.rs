@@ -7,7 +7,7 @@
 //! reloading must meet F_max again at δ_max (Rojek §3.3).
 
 use crate::error::{Result, TampError};
-use crate::particles::{Motion, Vec3};
+use crate::particles::Vec3;
 use crate::scene;
 use crate::simulation::Simulation;
 use crate::verify::{CaseContext, Measured};
@@ -18,8 +18,7 @@ const MAX_OVERLAP: f64 = 3e-7;
 fn drive(sim: &mut Simulation, speed: f64) {
     for (i, sign) in [(0, 1.0), (1, -1.0)] {
         let v = Vec3::new(sign * speed, 0.0, 0.0);
-        sim.particles.motion[i] = Motion::Prescribed(v);
-        sim.particles.velocity[i] = v;
+        sim.particles.prescribe(i, v);
     }
 }
 

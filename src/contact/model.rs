@@ -1,0 +1,385 @@
+//! The four roles of a contact law as traits, and their composition.
+//!
+//! Each law is one type implementing its role's trait (`NormalModel`,
+//! `DampingModel`, `TangentialModel`, `CohesionModel`); a role the scene leaves out
+//! is a type too (`NoDamping`, `NoFriction`, `NoCohesion`) whose code compiles to
+//! nothing. `Composed<N, D, T, C>` evaluates the four in their fixed order. The scene's
+//! `ContactLaw` (runtime enums) is turned into its `Composed` type once per run by
+//! `ContactLaw::visit`, so the force loops are monomorphised on the scene's laws and
+//! hold no `match` on a law inside.
+//!
+//! What a contact remembers is typed by its laws too (`ContactState`): the pair
+//! `(N::State, T::State)`, zero bytes for a frictionless Hertz contact, one 3-vector
+//! for a spring.
+
+use crate::contact::{ContactForce, ContactGeometry};
+use crate::material::PairProperties;
+use crate::particles::Vec3;
+use serde::Serialize;
+use serde::de::DeserializeOwned;
+use std::fmt::Debug;
+
+pub use crate::contact::tangential::TangentialInput;
+
+/// What one contact keeps between steps for one law. Reset to `Default` when the
+/// bodies separate.
+pub trait ContactState:
+    Copy + Default + Debug + PartialEq + Serialize + DeserializeOwned + Send + Sync + 'static
+{
+    /// The tangential spring or force vector the state holds (zero when none); for
+    /// diagnostics that follow one contact.
+    fn tangential(&self) -> Vec3 {
+        Vec3::zeros()
+    }
+}
+
+impl ContactState for () {}
+
+/// A spring elongation (Cundall–Strack, LIGGGHTS's shear) or an incremental
+/// tangential force (Mindlin no-slip, Storåkers), m or N.
+impl ContactState for Vec3 {
+    fn tangential(&self) -> Vec3 {
+        *self
+    }
+}
+
+/// The state of a composed contact: the normal law's, then the tangential law's.
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct Composite<N, T> {
+    pub normal: N,
+    pub tangential: T,
+}
+
+impl<N: ContactState, T: ContactState> ContactState for Composite<N, T> {
+    fn tangential(&self) -> Vec3 {
+        self.tangential.tangential()
+    }
+}
+
+/// Normal force (without a separate damping role) and its tangent stiffness.
+#[derive(Clone, Copy, Debug)]
+pub struct NormalResponse {
+    pub force: f64,
+    pub stiffness: f64,
+}
+
+/// The elastic, viscoelastic or plastic part of the normal force.
+pub trait NormalModel: Copy + Debug + PartialEq {
+    type State: ContactState;
+    /// Whether the law dissipates by itself: a separate damping role is then
+    /// refused, and no damped variant of it is compiled.
+    const OWN_DISSIPATION: bool = false;
+
+    /// Force and stiffness at this step; advances the state of laws with memory.
+    fn response(
+        &self,
+        overlap: f64,
+        overlap_rate: f64,
+        effective_radius: f64,
+        pair: &PairProperties,
+        state: &mut Self::State,
+    ) -> NormalResponse;
+
+    /// Tangent stiffness of a stored contact state, N/m.
+    fn stiffness(
+        &self,
+        overlap: f64,
+        effective_radius: f64,
+        pair: &PairProperties,
+        state: &Self::State,
+    ) -> f64;
+
+    /// Stiffness the critical time step must resolve (Rojek §3.4); laws with an
+    /// unloading branch stiffer than the loading one add it (see `walton_braun`).
+    fn time_step_stiffness(
+        &self,
+        overlap: f64,
+        effective_radius: f64,
+        pair: &PairProperties,
+        state: &Self::State,
+    ) -> f64 {
+        self.stiffness(overlap, effective_radius, pair, state)
+    }
+
+    /// Energy the contact would give back on elastic unloading, J.
+    fn energy(
+        &self,
+        overlap: f64,
+        effective_radius: f64,
+        pair: &PairProperties,
+        state: &Self::State,
+    ) -> f64;
+
+    /// Normal stiffness expected in a head-on impact at `speed` (for the critical
+    /// time step before any contact exists), N/m.
+    fn impact_stiffness(
+        &self,
+        effective_mass: f64,
+        speed: f64,
+        effective_radius: f64,
+        pair: &PairProperties,
+    ) -> f64;
+
+    /// Whether `impact_stiffness` depends on the impact speed (the nonlinear laws):
+    /// the time step then needs a characteristic velocity before contacts exist.
+    fn stiffness_depends_on_speed(&self) -> bool;
+}
+
+/// A viscous normal dashpot c_n · dδ/dt.
+pub trait DampingModel: Copy + Debug {
+    /// False for `NoDamping`: its coefficient is never asked for.
+    const ACTIVE: bool;
+    fn coefficient(&self, effective_mass: f64, stiffness: f64) -> f64;
+    /// Damping ratio ξ of a contact with this mass and stiffness (Rojek eq 28).
+    fn ratio(&self, effective_mass: f64, stiffness: f64) -> f64;
+}
+
+/// No normal dashpot.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct NoDamping;
+
+impl DampingModel for NoDamping {
+    const ACTIVE: bool = false;
+    #[inline(always)]
+    fn coefficient(&self, _: f64, _: f64) -> f64 {
+        0.0
+    }
+    fn ratio(&self, _: f64, _: f64) -> f64 {
+        0.0
+    }
+}
+
+/// The tangential force, limited by the contact's normal force.
+pub trait TangentialModel: Copy + Debug + PartialEq {
+    type State: ContactState;
+    /// False for `NoFriction`: no tangential velocity, force or torque is computed.
+    const ACTIVE: bool = true;
+
+    /// Tangential force on particle i; advances the state.
+    fn force(&self, input: &TangentialInput, state: &mut Self::State) -> Vec3;
+
+    /// Largest tangent stiffness at this contact state (θ = 1), N/m; zero for the
+    /// spring-less laws.
+    fn stiffness(&self, input: &TangentialInput) -> f64;
+
+    /// Energy held in the tangential state, J.
+    fn energy(&self, input: &TangentialInput, state: &Self::State) -> f64;
+
+    /// Tangential stiffness known before any contact exists, given the normal
+    /// impact stiffness (a fixed spring k_s, or LIGGGHTS hooke's k_t = k_n), N/m.
+    fn stiffness_before_contact(&self, _impact_stiffness: f64) -> f64 {
+        0.0
+    }
+
+    /// γ_s of a viscous law, N·s/m: it adds an explicit stability limit.
+    fn viscous_coefficient(&self) -> Option<f64> {
+        None
+    }
+}
+
+/// Friction off.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct NoFriction;
+
+impl TangentialModel for NoFriction {
+    type State = ();
+    const ACTIVE: bool = false;
+    #[inline(always)]
+    fn force(&self, _: &TangentialInput, _: &mut ()) -> Vec3 {
+        Vec3::zeros()
+    }
+    fn stiffness(&self, _: &TangentialInput) -> f64 {
+        0.0
+    }
+    fn energy(&self, _: &TangentialInput, _: &()) -> f64 {
+        0.0
+    }
+}
+
+/// An attraction acting across a gap up to `reach`.
+pub trait CohesionModel: Copy + Debug {
+    const ACTIVE: bool;
+    /// How far beyond touching it acts, m.
+    fn reach(&self) -> f64;
+    /// Attractive force magnitude at surface gap `gap` (negative = overlap), N.
+    fn force(&self, gap: f64, effective_radius: f64) -> f64;
+    /// Potential energy, J (≤ 0).
+    fn energy(&self, gap: f64, effective_radius: f64) -> f64;
+}
+
+/// No cohesion.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct NoCohesion;
+
+impl CohesionModel for NoCohesion {
+    const ACTIVE: bool = false;
+    fn reach(&self) -> f64 {
+        0.0
+    }
+    #[inline(always)]
+    fn force(&self, _: f64, _: f64) -> f64 {
+        0.0
+    }
+    fn energy(&self, _: f64, _: f64) -> f64 {
+        0.0
+    }
+}
+
+/// One law per role, evaluated as normal → damping → tangential → cohesion.
+#[derive(Clone, Copy, Debug)]
+pub struct Composed<N, D, T, C> {
+    pub normal: N,
+    pub damping: D,
+    pub tangential: T,
+    pub cohesion: C,
+}
+
+/// The state a composed law keeps per contact.
+pub type StateOf<N, T> = Composite<<N as NormalModel>::State, <T as TangentialModel>::State>;
+
+impl<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel> Composed<N, D, T, C> {
+    /// Whether contacts keep anything between steps.
+    pub const HAS_STATE: bool = std::mem::size_of::<StateOf<N, T>>() > 0;
+
+    #[inline(always)]
+    fn tangential_input(
+        g: &ContactGeometry,
+        pair: &PairProperties,
+        normal_force: f64,
+        normal_stiffness: f64,
+        dt: f64,
+    ) -> TangentialInput {
+        TangentialInput {
+            normal: g.normal,
+            tangential_velocity: g.tangential_velocity(),
+            dt,
+            friction: pair.friction,
+            normal_force,
+            normal_stiffness,
+            overlap: g.overlap,
+            effective_radius: g.effective_radius,
+            effective_shear_modulus: pair.effective_shear_modulus.unwrap_or(0.0),
+            effective_mass: g.effective_mass,
+        }
+    }
+
+    /// The tangential input of a stored contact state at rest (for energies and
+    /// stiffnesses, which depend on the overlap but not on the motion).
+    fn resting_input(
+        overlap: f64,
+        effective_radius: f64,
+        pair: &PairProperties,
+        normal_stiffness: f64,
+    ) -> TangentialInput {
+        let g = ContactGeometry {
+            normal: Vec3::z(),
+            overlap,
+            effective_radius,
+            effective_mass: 0.0,
+            relative_velocity: Vec3::zeros(),
+        };
+        Self::tangential_input(&g, pair, 0.0, normal_stiffness, 0.0)
+    }
+
+    /// Evaluate the roles in their fixed order: normal, damping, tangential (limited
+    /// by the contact's normal force), cohesion. The state is reset while the bodies
+    /// are apart.
+    #[inline(always)]
+    pub fn evaluate(
+        &self,
+        g: &ContactGeometry,
+        pair: &PairProperties,
+        state: &mut StateOf<N, T>,
+        dt: f64,
+    ) -> ContactForce {
+        let mut force = ContactForce::default();
+        if g.overlap > 0.0 {
+            let rate = g.overlap_rate();
+            let elastic =
+                self.normal
+                    .response(g.overlap, rate, g.effective_radius, pair, &mut state.normal);
+            force.normal = elastic.force;
+            if D::ACTIVE {
+                force.normal += self
+                    .damping
+                    .coefficient(g.effective_mass, elastic.stiffness)
+                    * rate;
+            }
+            if T::ACTIVE {
+                let input = Self::tangential_input(g, pair, force.normal, elastic.stiffness, dt);
+                force.tangential = self.tangential.force(&input, &mut state.tangential);
+            }
+        } else if Self::HAS_STATE {
+            *state = StateOf::<N, T>::default();
+        }
+        if C::ACTIVE {
+            force.normal -= self.cohesion.force(-g.overlap, g.effective_radius);
+        }
+        force
+    }
+
+    /// Energy stored in the contact (recoverable normal and tangential energy, and
+    /// the cohesive potential), J.
+    pub fn stored_energy(
+        &self,
+        overlap: f64,
+        effective_radius: f64,
+        pair: &PairProperties,
+        state: &StateOf<N, T>,
+    ) -> f64 {
+        let cohesion = if C::ACTIVE {
+            self.cohesion.energy(-overlap, effective_radius)
+        } else {
+            0.0
+        };
+        if overlap <= 0.0 {
+            return cohesion;
+        }
+        let normal = self
+            .normal
+            .energy(overlap, effective_radius, pair, &state.normal);
+        let tangential = if T::ACTIVE {
+            let k_n = self
+                .normal
+                .stiffness(overlap, effective_radius, pair, &state.normal);
+            self.tangential.energy(
+                &Self::resting_input(overlap, effective_radius, pair, k_n),
+                &state.tangential,
+            )
+        } else {
+            0.0
+        };
+        normal + tangential + cohesion
+    }
+
+    /// Largest tangent stiffness (normal, and tangential with θ = 1) of a stored
+    /// contact state, N/m, for the critical time step (Rojek §3.4).
+    pub fn stiffness(
+        &self,
+        overlap: f64,
+        effective_radius: f64,
+        pair: &PairProperties,
+        state: &StateOf<N, T>,
+    ) -> (f64, f64) {
+        let k_n = self
+            .normal
+            .time_step_stiffness(overlap, effective_radius, pair, &state.normal);
+        let k_t = if T::ACTIVE {
+            self.tangential
+                .stiffness(&Self::resting_input(overlap, effective_radius, pair, k_n))
+        } else {
+            0.0
+        };
+        (k_n, k_t)
+    }
+}
+
+/// Code that runs once per scene with the scene's laws as types
+/// (`ContactLaw::visit`).
+pub trait LawVisitor {
+    type Output;
+    fn visit<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel>(
+        self,
+        law: Composed<N, D, T, C>,
+    ) -> Self::Output;
+}
