@@ -88,11 +88,6 @@ pub struct ContactLaw {
 }
 
 impl ContactLaw {
-    /// Whether contacts carry state (a tangential state or the normal law's δ_max).
-    pub fn has_history(&self) -> bool {
-        self.normal.has_memory() || self.tangential.is_some_and(|t| t.has_history())
-    }
-
     /// How far beyond touching the law acts (the cohesion cut-off), m.
     pub fn reach(&self) -> f64 {
         self.cohesion.map_or(0.0, |c| c.cutoff)

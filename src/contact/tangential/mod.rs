@@ -94,24 +94,4 @@ impl TangentialLaw {
             TangentialLaw::LiggghtsHistory(_) => "liggghts_history",
         }
     }
-
-    /// Whether the law keeps a tangential state between steps.
-    pub fn has_history(&self) -> bool {
-        each_tangential!(self, t => std::mem::size_of_val(&state_of(t)) > 0)
-    }
-
-    /// Tangential force on particle i from a virgin contact; for tests of one law.
-    pub fn force_once(&self, input: &TangentialInput) -> Vec3 {
-        each_tangential!(self, t => t.force(input, &mut state_of(t)))
-    }
-
-    /// See `TangentialModel::stiffness`.
-    pub fn stiffness(&self, input: &TangentialInput) -> f64 {
-        each_tangential!(self, t => t.stiffness(input))
-    }
-}
-
-/// A fresh state of the law `t` (its type, for code generic over the laws).
-fn state_of<T: TangentialModel>(_: &T) -> T::State {
-    T::State::default()
 }
