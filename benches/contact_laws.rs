@@ -6,7 +6,9 @@
 //! - `tangential/*`: Hertz + each tangential law (no damping);
 //! - `cohesion/*`: Hertz + van der Waals, in contact and across a gap.
 //!
-//! Benchmark names are the scene-file law names. One contact geometry is used
+//! The laws and their parameters are the registry's (`tamp::contact::registry`), so a
+//! registered law is timed without being named here. Benchmark names are the
+//! scene-file law names. One contact geometry is used
 //! throughout (R* = 0.5 mm, δ = 1 µm, a relative velocity with both normal and
 //! tangential parts) so the numbers compare the laws, not the inputs. The law is
 //! turned into its monomorphic type once (`ContactLaw::visit`), as the simulation
@@ -18,17 +20,13 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
-use tamp::contact::damping::liggghts::LiggghtsModel;
 use tamp::contact::damping::{Constant, CriticalFraction};
 use tamp::contact::model::{
     CohesionModel, Composed, DampingModel, LawVisitor, NormalModel, StateOf, TangentialModel,
 };
-use tamp::contact::normal::{Hertz, Hysteretic, KuwabaraKono, Linear, Storakers, WaltonBraun};
-use tamp::contact::tangential::{
-    Coulomb, CundallStrack, HaffWerner, LiggghtsHistory, MindlinDeresiewicz, MindlinNoSlip,
-    storakers, walton_braun,
-};
-use tamp::contact::van_der_waals::VanDerWaals;
+use tamp::contact::normal::Hertz;
+use tamp::contact::registry;
+use tamp::contact::van_der_waals::{Cohesion, VanDerWaals};
 use tamp::contact::{
     ContactGeometry, ContactLaw, damping::Damping, normal::NormalLaw, tangential::TangentialLaw,
 };
@@ -75,7 +73,7 @@ fn law(
     normal: NormalLaw,
     damping: Option<Damping>,
     tangential: Option<TangentialLaw>,
-    cohesion: Option<VanDerWaals>,
+    cohesion: Option<Cohesion>,
 ) -> ContactLaw {
     ContactLaw {
         normal,
@@ -99,11 +97,15 @@ fn law(
 /// history laws are timed latency-bound; in the simulation consecutive contacts
 /// have independent records and can overlap, so for them these figures are an
 /// upper bound.
-fn bench_group(c: &mut Criterion, group: &str, cases: Vec<(&str, ContactLaw, ContactGeometry)>) {
+fn bench_group<S: AsRef<str>>(
+    c: &mut Criterion,
+    group: &str,
+    cases: Vec<(S, ContactLaw, ContactGeometry)>,
+) {
     let pair = pair_properties();
     let mut group = c.benchmark_group(group);
     for (name, law, g) in cases {
-        group.bench_function(name, |b| {
+        group.bench_function(name.as_ref(), |b| {
             law.visit(Timed {
                 bencher: b,
                 g: &g,
@@ -139,36 +141,34 @@ impl LawVisitor for Timed<'_, '_> {
     }
 }
 
+/// Each law with its benchmark name: the scene's law name, numbered from the second
+/// registered instance of a name on (`liggghts_history_2` is its `model hooke`).
+fn labelled<L>(laws: Vec<L>, name: impl Fn(&L) -> &'static str) -> Vec<(String, L)> {
+    let mut seen: Vec<&str> = Vec::new();
+    laws.into_iter()
+        .map(|law| {
+            let base = name(&law);
+            seen.push(base);
+            let count = seen.iter().filter(|&&n| n == base).count();
+            let label = if count == 1 {
+                base.to_string()
+            } else {
+                format!("{base}_{count}")
+            };
+            (label, law)
+        })
+        .collect()
+}
+
 fn bench(c: &mut Criterion) {
     let g = contact_geometry();
 
-    let normal = [
-        NormalLaw::Linear(Linear { stiffness: 1e5 }),
-        NormalLaw::Hertz(Hertz {}),
-        NormalLaw::KuwabaraKono(KuwabaraKono {
-            dissipation_time: 1e-6,
-        }),
-        NormalLaw::WaltonBraun(WaltonBraun {
-            loading_stiffness: 1e5,
-            unloading_stiffness: 4e5,
-        }),
-        NormalLaw::Hysteretic(Hysteretic {
-            stiffness: 1e5,
-            hysteresis: 0.5,
-        }),
-        NormalLaw::Storakers(Storakers {
-            min_with_hertz: false,
-        }),
-        NormalLaw::Storakers(Storakers {
-            min_with_hertz: true,
-        }),
-    ];
     bench_group(
         c,
         "normal",
-        normal
+        labelled(registry::normal_laws(), |n| n.name())
             .into_iter()
-            .map(|n| (n.name(), law(n, None, None, None), g))
+            .map(|(name, n)| (name, law(n, None, None, None), g))
             .collect(),
     );
 
@@ -200,38 +200,21 @@ fn bench(c: &mut Criterion) {
         ],
     );
 
-    let tangential = [
-        TangentialLaw::MindlinDeresiewicz(MindlinDeresiewicz),
-        TangentialLaw::Coulomb(Coulomb),
-        // γ_s |v_t| ≈ 2e-3 N < μ F_n ≈ 1.5e-2 N: the viscous branch.
-        TangentialLaw::HaffWerner(HaffWerner { damping: 0.1 }),
-        TangentialLaw::CundallStrack(CundallStrack { stiffness: 1e4 }),
-        TangentialLaw::WaltonBraun(walton_braun::WaltonBraun { stiffness: 1e4 }),
-        TangentialLaw::MindlinNoSlip(MindlinNoSlip),
-        TangentialLaw::Storakers(storakers::Storakers { beta: 0.5 }),
-        // ξ of liggghts_restitution e = 0.5 with Hertz: its tangential dashpot is part of
-        // the law.
-        TangentialLaw::LiggghtsHistory(LiggghtsHistory {
-            model: LiggghtsModel::Hertz,
-            xi: 0.196_7,
-        }),
-    ];
     bench_group(
         c,
         "tangential",
-        tangential
+        labelled(registry::tangential_laws(), |t| t.name())
             .into_iter()
-            .map(|t| {
-                (
-                    t.name(),
-                    law(NormalLaw::Hertz(Hertz {}), None, Some(t), None),
-                    g,
-                )
-            })
+            .map(|(name, t)| (name, law(NormalLaw::Hertz(Hertz {}), None, Some(t), None), g))
             .collect(),
     );
 
-    let cohesive = law(NormalLaw::Hertz(Hertz {}), None, None, Some(VDW));
+    let cohesive = law(
+        NormalLaw::Hertz(Hertz {}),
+        None,
+        None,
+        Some(Cohesion::VanDerWaals(VDW)),
+    );
     bench_group(
         c,
         "cohesion",

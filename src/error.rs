@@ -64,3 +64,39 @@ impl TampError {
 }
 
 pub type Result<T> = std::result::Result<T, TampError>;
+
+/// Input rules broken, collected in one pass: each `json.path: rule, got value`.
+pub struct Errors(pub Vec<TampError>);
+
+impl Errors {
+    pub fn push(&mut self, path: impl Into<String>, rule: impl Into<String>) {
+        self.0.push(TampError::input(path, rule));
+    }
+
+    pub fn positive(&mut self, path: impl Into<String>, value: f64) {
+        if !(value > 0.0 && value.is_finite()) {
+            self.push(path, format!("must be > 0 and finite, got {value:e}"));
+        }
+    }
+
+    pub fn non_negative(&mut self, path: impl Into<String>, value: f64) {
+        if !(value >= 0.0 && value.is_finite()) {
+            self.push(path, format!("must be >= 0 and finite, got {value:e}"));
+        }
+    }
+
+    /// Ok when nothing was found; the one error, or all of them.
+    pub fn finish(mut self) -> Result<()> {
+        match self.0.len() {
+            0 => Ok(()),
+            1 => Err(self.0.pop().unwrap()),
+            _ => Err(TampError::InputMany(self.0)),
+        }
+    }
+
+    pub fn finite3(&mut self, path: impl Into<String>, v: &[f64; 3]) {
+        if !v.iter().all(|c| c.is_finite()) {
+            self.push(path, format!("must be finite, got {v:?}"));
+        }
+    }
+}

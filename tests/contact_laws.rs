@@ -2,92 +2,22 @@
 //! force against its closed form at several overlaps, continuity at first touch,
 //! symmetry under swapping the bodies, Newton's third law in a running simulation,
 //! non-positive work of the contact over closed cycles for the dissipative laws, and
-//! the friction cone.
+//! the friction cone. The laws and their closed forms come from the registry
+//! (`tamp::contact::registry`): a registered law is checked here without being named.
 
-use tamp::contact::damping::liggghts::LiggghtsModel;
-use tamp::contact::normal::{
-    Hertz, Hysteretic, KuwabaraKono, Linear, NormalLaw, Storakers, WaltonBraun,
-};
-use tamp::contact::tangential::{
-    Coulomb, CundallStrack, HaffWerner, LiggghtsHistory, MindlinDeresiewicz, MindlinNoSlip,
-    TangentialLaw, storakers, walton_braun,
-};
+use tamp::contact::normal::{NormalLaw, WaltonBraun};
+use tamp::contact::registry::{self, EFFECTIVE_RADIUS as R_EFF, FRICTION as MU, pair};
+use tamp::contact::tangential::{MindlinDeresiewicz, TangentialLaw, TangentialModel, walton_braun};
 use tamp::contact::{ContactForce, ContactGeometry, ContactLaw};
-use tamp::material::{Hollomon, PairProperties};
+use tamp::material::PairProperties;
 use tamp::particles::Vec3;
 
-const R_EFF: f64 = 5e-4;
-const E_STAR: f64 = 1.1e11;
-const G_STAR: f64 = 2.1e10;
-const MU: f64 = 0.4;
-
-fn pair() -> PairProperties {
-    PairProperties {
-        effective_modulus: Some(E_STAR),
-        effective_shear_modulus: Some(G_STAR),
-        hollomon: Some(Hollomon {
-            strength: 1e9,
-            exponent: 0.15,
-        }),
-        friction: MU,
-    }
-}
-
-fn normal_laws() -> Vec<NormalLaw> {
-    vec![
-        NormalLaw::Linear(Linear { stiffness: 1e7 }),
-        NormalLaw::Hertz(Hertz {}),
-        NormalLaw::KuwabaraKono(KuwabaraKono {
-            dissipation_time: 1e-7,
-        }),
-        NormalLaw::WaltonBraun(WaltonBraun {
-            loading_stiffness: 1e7,
-            unloading_stiffness: 3e7,
-        }),
-        NormalLaw::Hysteretic(Hysteretic {
-            stiffness: 1e7,
-            hysteresis: 0.5,
-        }),
-        NormalLaw::Storakers(Storakers {
-            min_with_hertz: false,
-        }),
-        NormalLaw::Storakers(Storakers {
-            min_with_hertz: true,
-        }),
-    ]
-}
-
-fn tangential_laws() -> Vec<Option<TangentialLaw>> {
-    vec![
-        None,
-        Some(TangentialLaw::MindlinDeresiewicz(MindlinDeresiewicz)),
-        Some(TangentialLaw::Coulomb(Coulomb)),
-        Some(TangentialLaw::HaffWerner(HaffWerner { damping: 50.0 })),
-        Some(TangentialLaw::CundallStrack(CundallStrack {
-            stiffness: 1e6,
-        })),
-        Some(TangentialLaw::WaltonBraun(walton_braun::WaltonBraun {
-            stiffness: 1e6,
-        })),
-        Some(TangentialLaw::MindlinNoSlip(MindlinNoSlip)),
-        Some(TangentialLaw::Storakers(storakers::Storakers { beta: 1.0 })),
-        // Without tangential damping (ξ = 0, a scene without damping): with it, LIGGGHTS's
-        // sticking force may leave the cone by γ_t|v_t| (liggghts_history.rs tests).
-        Some(TangentialLaw::LiggghtsHistory(LiggghtsHistory {
-            model: LiggghtsModel::Hertz,
-            xi: 0.0,
-        })),
-        Some(TangentialLaw::LiggghtsHistory(LiggghtsHistory {
-            model: LiggghtsModel::Hooke,
-            xi: 0.0,
-        })),
-    ]
-}
-
+/// Every registered normal law with every registered tangential law (and none).
 fn every_law() -> Vec<ContactLaw> {
     let mut out = Vec::new();
-    for n in normal_laws() {
-        for t in tangential_laws() {
+    for n in registry::normal_laws() {
+        let frictionless = std::iter::once(None);
+        for t in frictionless.chain(registry::tangential_laws().into_iter().map(Some)) {
             out.push(ContactLaw {
                 normal: n,
                 damping: None,
@@ -120,39 +50,71 @@ fn geometry(normal: Vec3, overlap: f64, relative_velocity: Vec3) -> ContactGeome
     }
 }
 
+/// The variant names serde knows for a role enum (from its unknown-variant message):
+/// the compiler's list of the laws, independent of the registry.
+fn variants<T: serde::de::DeserializeOwned + std::fmt::Debug>() -> Vec<String> {
+    let err = serde_json::from_str::<T>(r#"{"law": "?"}"#).unwrap_err().to_string();
+    let expected = &err[err.find("expected").expect("an unknown-variant message")..];
+    expected
+        .split('`')
+        .skip(1)
+        .step_by(2)
+        .map(str::to_string)
+        .collect()
+}
+
 #[test]
-fn normal_force_matches_closed_forms_at_several_overlaps() {
-    let k_hertz = 4.0 / 3.0 * E_STAR * R_EFF.sqrt();
-    let m: f64 = 0.15;
-    // Rojek eq 16 with c^{2+m} = 1.43 e^{-0.97 m} (eq 17).
-    let c_storakers = 2f64.powf(1.0 - m / 2.0)
-        * 3f64.powf(1.0 - m)
-        * std::f64::consts::PI
-        * 1.43
-        * (-0.97 * m).exp()
-        * 1e9
-        * R_EFF.powf(1.0 - m / 2.0);
-    for overlap in [1e-8f64, 1e-7, 1e-6, 5e-6] {
-        let approach = 0.01; // loading: dδ/dt > 0
-        let expected = vec![
-            1e7 * overlap,
-            k_hertz * overlap.powf(1.5),
-            k_hertz * (overlap.powf(1.5) + 1.5 * 1e-7 * overlap.sqrt() * approach),
-            1e7 * overlap,
-            1e7 * overlap * 1.5,
-            c_storakers * overlap.powf(1.0 + m / 2.0),
-            (c_storakers * overlap.powf(1.0 + m / 2.0)).min(k_hertz * overlap.powf(1.5)),
-        ];
-        let laws = normal_laws();
-        assert_eq!(laws.len(), expected.len(), "a closed form for every law");
-        for (law, want) in laws.iter().zip(expected) {
-            let got = law.response(overlap, approach, R_EFF, &pair()).force;
-            assert!(
-                (got - want).abs() <= 1e-12 * want,
-                "{} at {overlap:e}: {got:e} vs {want:e}",
-                law.name()
-            );
-        }
+fn every_law_has_a_closed_form_example() {
+    let normal: Vec<&str> = registry::normal_examples().iter().map(|e| e.law.name()).collect();
+    for law in variants::<NormalLaw>() {
+        assert!(
+            normal.iter().any(|n| n.starts_with(law.as_str())),
+            "normal law '{law}' registers no closed-form example (contact/registry.rs)"
+        );
+    }
+    let tangential: Vec<&str> = registry::tangential_examples()
+        .iter()
+        .map(|e| e.law.name())
+        .collect();
+    let names = variants::<TangentialLaw>();
+    assert!(names.len() >= 8, "{names:?}");
+    for law in names {
+        assert!(
+            tangential.contains(&law.as_str()),
+            "tangential law '{law}' registers no closed-form example (contact/registry.rs)"
+        );
+    }
+}
+
+/// Rounding only: the closed forms are evaluated with other operations in another
+/// order than the laws, a few ulps apart.
+const CLOSED_FORM_TOLERANCE: f64 = 1e-12;
+
+#[test]
+fn normal_force_matches_the_closed_forms() {
+    for e in registry::normal_examples() {
+        let got = e.law.response(e.overlap, e.rate, R_EFF, &pair()).force;
+        assert!(
+            (got - e.force).abs() <= CLOSED_FORM_TOLERANCE * e.force.abs(),
+            "{} at {:e}: {got:e} vs {:e}",
+            e.law.name(),
+            e.overlap,
+            e.force
+        );
+    }
+}
+
+#[test]
+fn tangential_force_matches_the_closed_forms() {
+    for e in registry::tangential_examples() {
+        let got = tamp::each_tangential!(e.law, t => t.force(&e.input, &mut Default::default()));
+        assert!(
+            (got - e.force).norm() <= CLOSED_FORM_TOLERANCE * e.force.norm(),
+            "{} at v_t {:?}: {got:?} vs {:?}",
+            e.law.name(),
+            e.input.tangential_velocity,
+            e.force
+        );
     }
 }
 
@@ -304,14 +266,18 @@ fn newtons_third_law_holds_in_a_simulation() {
     // liggghts_history exists only with LIGGGHTS's normal models (scenes refuse the rest).
     let buildable = |law: &ContactLaw| {
         !matches!(law.tangential, Some(TangentialLaw::LiggghtsHistory(_)))
-            || LiggghtsModel::of(&law.normal).is_some()
+            || law.normal.liggghts().is_some()
     };
     for law in every_law().into_iter().filter(buildable) {
         let mut s = base.clone();
         s.contact = tamp::scene::schema::ContactSpec {
-            normal: spec_of(&law.normal),
+            normal: law.normal,
             damping: None,
-            tangential: law.tangential.map(tangential_spec_of),
+            tangential: law.tangential.map(|law| tamp::scene::schema::FrictionSpec {
+                law,
+                friction: MU,
+                friction_pairs: Vec::new(),
+            }),
             cohesion: None,
         };
         let mut sim = scene::build(&s).unwrap().sim;
@@ -324,62 +290,6 @@ fn newtons_third_law_holds_in_a_simulation() {
     }
 }
 
-fn spec_of(n: &NormalLaw) -> tamp::scene::schema::NormalSpec {
-    use tamp::scene::schema::NormalSpec as S;
-    match *n {
-        NormalLaw::Linear(Linear { stiffness }) => S::Linear { stiffness },
-        NormalLaw::Hertz(_) => S::Hertz {},
-        NormalLaw::KuwabaraKono(KuwabaraKono { dissipation_time }) => {
-            S::KuwabaraKono { dissipation_time }
-        }
-        NormalLaw::WaltonBraun(WaltonBraun {
-            loading_stiffness,
-            unloading_stiffness,
-        }) => S::WaltonBraun {
-            loading_stiffness,
-            unloading_stiffness,
-        },
-        NormalLaw::Hysteretic(Hysteretic {
-            stiffness,
-            hysteresis,
-        }) => S::Hysteretic {
-            stiffness,
-            hysteresis,
-        },
-        NormalLaw::Storakers(Storakers { min_with_hertz }) => S::Storakers { min_with_hertz },
-    }
-}
-
-fn tangential_spec_of(t: TangentialLaw) -> tamp::scene::schema::TangentialSpec {
-    use tamp::scene::schema::{TangentialLawName as N, TangentialSpec};
-    let (law, stiffness, damping, beta) = match t {
-        TangentialLaw::MindlinDeresiewicz(_) => (N::MindlinDeresiewicz, None, None, None),
-        TangentialLaw::Coulomb(_) => (N::Coulomb, None, None, None),
-        TangentialLaw::HaffWerner(HaffWerner { damping }) => {
-            (N::HaffWerner, None, Some(damping), None)
-        }
-        TangentialLaw::CundallStrack(CundallStrack { stiffness }) => {
-            (N::CundallStrack, Some(stiffness), None, None)
-        }
-        TangentialLaw::WaltonBraun(walton_braun::WaltonBraun { stiffness }) => {
-            (N::WaltonBraun, Some(stiffness), None, None)
-        }
-        TangentialLaw::MindlinNoSlip(_) => (N::MindlinNoSlip, None, None, None),
-        TangentialLaw::Storakers(storakers::Storakers { beta }) => {
-            (N::Storakers, None, None, Some(beta))
-        }
-        TangentialLaw::LiggghtsHistory(_) => (N::LiggghtsHistory, None, None, None),
-    };
-    TangentialSpec {
-        law,
-        friction: MU,
-        friction_pairs: Vec::new(),
-        stiffness,
-        damping,
-        beta,
-    }
-}
-
 #[test]
 fn frictionless_tangential_laws_keep_the_normal_memory() {
     // With μ = 0 the tangential laws reset their own state every step; the normal
@@ -389,7 +299,7 @@ fn frictionless_tangential_laws_keep_the_normal_memory() {
         ..pair()
     };
     for t in [
-        TangentialLaw::MindlinDeresiewicz(MindlinDeresiewicz),
+        TangentialLaw::MindlinDeresiewicz(MindlinDeresiewicz {}),
         TangentialLaw::WaltonBraun(walton_braun::WaltonBraun { stiffness: 1e6 }),
     ] {
         let law = ContactLaw {

@@ -6,43 +6,49 @@
 //! the wall) to particle i; overlap δ = R_i + R_j − |x_i − x_j| > 0 in contact
 //! (Rojek's h = −δ); a positive normal force pushes i away from the partner.
 //!
-//! How to add a law (a normal law; the other roles are alike):
+//! How to add a law (a normal law; a tangential law is alike, in `tangential/`):
 //! 1. Its file, `normal/<law>.rs`: a header with the equations and the source, then a
-//!    type holding the law's parameters that implements `model::NormalModel` (force and
-//!    tangent stiffness, time-step stiffness, recoverable energy, impact stiffness) with
-//!    `type State` what one contact must remember (`()` for nothing; a state type of its
-//!    own derives serde and implements `model::ContactState`). Its closed forms and
-//!    unit tests live there too.
-//! 2. Its variant in `normal::NormalLaw` and the matching arm in `each_normal!` and
-//!    `NormalLaw::name`: exhaustive matches, so the compiler lists what is missing.
-//!    The force loop, the stored energy, the critical time step, checkpoints and the
-//!    contact-law bench take the law from there (`ContactLaw::visit`).
-//! 3. Until the scene schema reads the law types directly, its `NormalSpec` variant
-//!    (`scene/schema.rs`), the mapping in `scene::build::normal_law`, its rules in
-//!    `scene/validate.rs` and its LIGGGHTS counterpart (`damping::liggghts::LiggghtsModel::of`,
-//!    `liggghts/export.rs`) are further places; `tests/contact_laws.rs` needs its closed
-//!    form beside it in `normal_laws`.
-//! 4. A verification case (`verification/`, docs/verification-notes.md) against a
-//!    closed form or a peer code.
+//!    type holding the law's parameters, deserialised from the scene as they are
+//!    (`#[serde(deny_unknown_fields)]`), that implements `model::NormalModel`:
+//!    - `name`, its `law` in the scene file;
+//!    - `needs` (elastic constants, Hollomon constants, rotation), `check` (the rules
+//!      of its parameters, reported as `contact.normal.<field>: rule, got value`) and
+//!      `liggghts` (its LIGGGHTS model, if LIGGGHTS has it);
+//!    - `examples`: closed forms written from the source's formulas, at the
+//!      reference contact of `registry.rs` (at least one, or a test fails);
+//!    - the force and tangent stiffness, time-step stiffness, recoverable energy and
+//!      impact stiffness, with `type State` what one contact must remember (`()` for
+//!      nothing; a state type of its own derives serde and implements
+//!      `model::ContactState`);
+//!    - its unit tests.
+//! 2. Its registry entries in `normal/mod.rs` (the `NormalLaw` variant and the
+//!    `each_normal!` arm, exhaustive matches: the compiler lists what is missing) and
+//!    one line in `registry::normal_examples`. The scene schema, validation, the force
+//!    loop, the stored energy, the critical time step, checkpoints, tests/contact_laws.rs,
+//!    tests/properties.rs, the contact-law bench and `tamp study stable-alpha` take
+//!    the law from there.
+//! 3. A page in docs/models/ and a verification case (`verification/`,
+//!    docs/verification-notes.md) against a closed form or a peer code.
 
 pub mod damping;
 pub mod model;
 pub mod normal;
+pub mod registry;
 pub mod states;
 pub mod tangential;
 pub mod van_der_waals;
 
 use crate::material::PairProperties;
 use crate::particles::Vec3;
-use crate::{each_damping, each_normal, each_tangential};
+use crate::{each_normal, each_tangential};
 use damping::Damping;
 use model::{
     CohesionModel, Composed, DampingModel, LawVisitor, NoCohesion, NoDamping, NoFriction,
-    NormalModel, TangentialModel,
+    NormalModel, Roles, TangentialModel,
 };
 use normal::NormalLaw;
 use tangential::TangentialLaw;
-use van_der_waals::VanDerWaals;
+use van_der_waals::Cohesion;
 
 /// Geometry of one contact, computed once and shared by all roles.
 #[derive(Clone, Copy, Debug)]
@@ -77,20 +83,44 @@ pub struct ContactForce {
     pub tangential: Vec3,
 }
 
-/// The scene's law: one runtime value per role, turned into the monomorphic
-/// `Composed` type once per run by `visit`.
+/// The scene's law: one value per role, as the scene file gives them, turned into
+/// the monomorphic `Composed` type once per run by `visit`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ContactLaw {
     pub normal: NormalLaw,
     pub damping: Option<Damping>,
     pub tangential: Option<TangentialLaw>,
-    pub cohesion: Option<VanDerWaals>,
+    pub cohesion: Option<Cohesion>,
 }
 
 impl ContactLaw {
+    /// The roles assembled, each law given what it takes from the others
+    /// (`TangentialModel::bind`).
+    pub fn new(
+        normal: NormalLaw,
+        damping: Option<Damping>,
+        tangential: Option<TangentialLaw>,
+        cohesion: Option<Cohesion>,
+    ) -> Self {
+        let roles = Roles {
+            normal: &normal,
+            damping: damping.as_ref(),
+        };
+        let tangential = tangential.map(|mut t| {
+            t.bind(roles);
+            t
+        });
+        ContactLaw {
+            normal,
+            damping,
+            tangential,
+            cohesion,
+        }
+    }
+
     /// How far beyond touching the law acts (the cohesion cut-off), m.
     pub fn reach(&self) -> f64 {
-        self.cohesion.map_or(0.0, |c| c.cutoff)
+        self.cohesion.map_or(0.0, |c| c.reach())
     }
 
     /// The forces of one contact driven along `path` (its geometry and the step at
@@ -132,7 +162,14 @@ impl ContactLaw {
         }
         match self.damping {
             None => self.with_tangential(n, NoDamping, v),
-            Some(damping) => each_damping!(damping, d => self.with_tangential(n, d, v)),
+            Some(Damping::CriticalFraction(d)) => self.with_tangential(n, d, v),
+            Some(Damping::Constant(d)) => self.with_tangential(n, d, v),
+            Some(Damping::LiggghtsRestitution(d)) => {
+                let d = d
+                    .with(&self.normal)
+                    .expect("validation refuses liggghts_restitution beside this normal law");
+                self.with_tangential(n, d, v)
+            }
         }
     }
 
@@ -162,7 +199,7 @@ impl ContactLaw {
                 tangential,
                 cohesion: NoCohesion,
             }),
-            Some(cohesion) => v.visit(Composed {
+            Some(Cohesion::VanDerWaals(cohesion)) => v.visit(Composed {
                 normal,
                 damping,
                 tangential,

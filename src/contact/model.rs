@@ -12,7 +12,12 @@
 //! `(N::State, T::State)`, zero bytes for a frictionless Hertz contact, one 3-vector
 //! for a spring.
 
+use crate::contact::damping::Damping;
+use crate::contact::damping::liggghts::LiggghtsModel;
+use crate::contact::normal::NormalLaw;
+use crate::contact::registry::{NormalExample, TangentialExample};
 use crate::contact::{ContactForce, ContactGeometry};
+use crate::error::Errors;
 use crate::material::PairProperties;
 use crate::particles::Vec3;
 use serde::Serialize;
@@ -56,6 +61,25 @@ impl<N: ContactState, T: ContactState> ContactState for Composite<N, T> {
     }
 }
 
+/// What a law reads from the materials and the scene besides its own parameters;
+/// validation asks the scene for it.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Needs {
+    /// E and ν of every material; the text (possibly empty) says what for.
+    pub elastic: Option<&'static str>,
+    /// Hollomon constants of every particle material, with one exponent for all.
+    pub hollomon: bool,
+    /// Particle spins; the text is the rule a scene without `rotation` breaks.
+    pub rotation: Option<&'static str>,
+}
+
+/// The other roles of the scene's law, for the rules that join two roles.
+#[derive(Clone, Copy, Debug)]
+pub struct Roles<'a> {
+    pub normal: &'a NormalLaw,
+    pub damping: Option<&'a Damping>,
+}
+
 /// Normal force (without a separate damping role) and its tangent stiffness.
 #[derive(Clone, Copy, Debug)]
 pub struct NormalResponse {
@@ -69,6 +93,27 @@ pub trait NormalModel: Copy + Debug + PartialEq {
     /// Whether the law dissipates by itself: a separate damping role is then
     /// refused, and no damped variant of it is compiled.
     const OWN_DISSIPATION: bool = false;
+
+    /// The `law` of the scene file, also the law's name in outputs.
+    fn name(&self) -> &'static str;
+
+    /// What the law reads from the materials.
+    fn needs(&self) -> Needs {
+        Needs::default()
+    }
+
+    /// The rules of its own parameters; `path` is where the scene holds them.
+    fn check(&self, _path: &str, _errors: &mut Errors) {}
+
+    /// The LIGGGHTS `model` that is this law, if LIGGGHTS has it.
+    fn liggghts(&self) -> Option<LiggghtsModel> {
+        None
+    }
+
+    /// Its closed forms (at least one; see `registry.rs`).
+    fn examples() -> Vec<NormalExample>
+    where
+        Self: Sized;
 
     /// Force and stiffness at this step; advances the state of laws with memory.
     fn response(
@@ -129,6 +174,10 @@ pub trait NormalModel: Copy + Debug + PartialEq {
 pub trait DampingModel: Copy + Debug {
     /// False for `NoDamping`: its coefficient is never asked for.
     const ACTIVE: bool;
+    /// The `kind` of the scene file.
+    fn name(&self) -> &'static str;
+    /// The rules of its own parameters; `path` is where the scene holds them.
+    fn check(&self, _path: &str, _roles: Roles, _errors: &mut Errors) {}
     fn coefficient(&self, effective_mass: f64, stiffness: f64) -> f64;
     /// Damping ratio ξ of a contact with this mass and stiffness (Rojek eq 28).
     fn ratio(&self, effective_mass: f64, stiffness: f64) -> f64;
@@ -140,6 +189,9 @@ pub struct NoDamping;
 
 impl DampingModel for NoDamping {
     const ACTIVE: bool = false;
+    fn name(&self) -> &'static str {
+        "none"
+    }
     #[inline(always)]
     fn coefficient(&self, _: f64, _: f64) -> f64 {
         0.0
@@ -154,6 +206,27 @@ pub trait TangentialModel: Copy + Debug + PartialEq {
     type State: ContactState;
     /// False for `NoFriction`: no tangential velocity, force or torque is computed.
     const ACTIVE: bool = true;
+
+    /// The `law` of the scene file, also the law's name in outputs.
+    fn name(&self) -> &'static str;
+
+    /// What the law reads from the materials and the scene.
+    fn needs(&self) -> Needs {
+        Needs::default()
+    }
+
+    /// The rules of its own parameters, and of the other roles it works with;
+    /// `path` is where the scene holds the law (`contact.tangential`).
+    fn check(&self, _path: &str, _roles: Roles, _errors: &mut Errors) {}
+
+    /// Take the parameters the law derives from the other roles (LIGGGHTS's
+    /// `tangential history`); called once when the scene's law is assembled.
+    fn bind(&mut self, _roles: Roles) {}
+
+    /// Its closed forms (at least one; see `registry.rs`).
+    fn examples() -> Vec<TangentialExample>
+    where
+        Self: Sized;
 
     /// Tangential force on particle i; advances the state.
     fn force(&self, input: &TangentialInput, state: &mut Self::State) -> Vec3;
@@ -184,6 +257,12 @@ pub struct NoFriction;
 impl TangentialModel for NoFriction {
     type State = ();
     const ACTIVE: bool = false;
+    fn name(&self) -> &'static str {
+        "none"
+    }
+    fn examples() -> Vec<TangentialExample> {
+        Vec::new()
+    }
     #[inline(always)]
     fn force(&self, _: &TangentialInput, _: &mut ()) -> Vec3 {
         Vec3::zeros()
@@ -199,6 +278,8 @@ impl TangentialModel for NoFriction {
 /// An attraction acting across a gap up to `reach`.
 pub trait CohesionModel: Copy + Debug {
     const ACTIVE: bool;
+    /// The rules of its own parameters; `path` is where the scene holds them.
+    fn check(&self, _path: &str, _errors: &mut Errors) {}
     /// How far beyond touching it acts, m.
     fn reach(&self) -> f64;
     /// Attractive force magnitude at surface gap `gap` (negative = overlap), N.

@@ -16,13 +16,39 @@
 //! No history. A (J), h_min and h_c (m) are scene parameters.
 
 use crate::contact::model::CohesionModel;
+use crate::error::Errors;
 
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
+#[serde(deny_unknown_fields)]
 pub struct VanDerWaals {
     /// Hamaker constant A, J.
     pub hamaker: f64,
+    /// h_min, m.
     pub min_separation: f64,
+    /// h_c, m.
     pub cutoff: f64,
+}
+
+/// The scene's cohesion role, read as `{"law": "van_der_waals", ...}`.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
+#[serde(tag = "law", rename_all = "snake_case")]
+pub enum Cohesion {
+    VanDerWaals(VanDerWaals),
+}
+
+impl Cohesion {
+    /// How far beyond touching it acts, m.
+    pub fn reach(&self) -> f64 {
+        match self {
+            Cohesion::VanDerWaals(c) => c.reach(),
+        }
+    }
+
+    pub fn check(&self, path: &str, errors: &mut Errors) {
+        match self {
+            Cohesion::VanDerWaals(c) => c.check(path, errors),
+        }
+    }
 }
 
 impl VanDerWaals {
@@ -50,6 +76,17 @@ impl VanDerWaals {
 
 impl CohesionModel for VanDerWaals {
     const ACTIVE: bool = true;
+    fn check(&self, path: &str, e: &mut Errors) {
+        let (min, cutoff) = (self.min_separation, self.cutoff);
+        e.positive(format!("{path}.hamaker"), self.hamaker);
+        e.positive(format!("{path}.min_separation"), min);
+        if !(cutoff > min && cutoff.is_finite()) {
+            e.push(
+                format!("{path}.cutoff"),
+                format!("must be > min_separation ({min:e}) and finite, got {cutoff:e}"),
+            );
+        }
+    }
     fn reach(&self) -> f64 {
         self.cutoff
     }

@@ -29,7 +29,10 @@ use crate::contact::damping::liggghts::{SQRT_FIVE_SIXTHS, hooke_stiffness};
 use crate::error::{Result, TampError};
 use crate::material::{effective_mass, effective_modulus, effective_radius};
 use crate::particles::Vec3;
-use crate::scene::schema::{DampingSpec, NormalSpec, TangentialLawName};
+use crate::contact::damping::liggghts::LiggghtsModel;
+use crate::contact::damping::{Constant, CriticalFraction, Damping, LiggghtsRestitution};
+use crate::contact::normal::{Linear, NormalLaw};
+use crate::contact::tangential::TangentialLaw;
 use crate::scene::walls::MotionSpec;
 use crate::scene::{self, Scene};
 use std::fmt::Write as _;
@@ -65,11 +68,11 @@ fn restitution_from_beta(beta: f64) -> f64 {
 
 /// LIGGGHTS's restitution for the scene's damping, or why there is none.
 fn restitution(scene: &Scene) -> std::result::Result<f64, (String, String)> {
-    let hertz = matches!(scene.contact.normal, NormalSpec::Hertz {});
+    let hertz = scene.contact.normal.liggghts() == Some(LiggghtsModel::Hertz);
     let e = match &scene.contact.damping {
         None => 1.0,
-        Some(DampingSpec::LiggghtsRestitution { restitution }) => *restitution,
-        Some(DampingSpec::CriticalFraction { xi }) => {
+        Some(Damping::LiggghtsRestitution(LiggghtsRestitution { restitution })) => *restitution,
+        Some(Damping::CriticalFraction(CriticalFraction { xi })) => {
             // ξ = −√(5/6) β for hertz, −β for linear (contact/damping/liggghts.rs).
             let beta = if hertz { -xi / SQRT_FIVE_SIXTHS } else { -xi };
             if beta <= -1.0 {
@@ -83,7 +86,7 @@ fn restitution(scene: &Scene) -> std::result::Result<f64, (String, String)> {
             }
             restitution_from_beta(beta)
         }
-        Some(DampingSpec::Constant { .. }) => unreachable!("handled by the caller"),
+        Some(Damping::Constant(_)) => unreachable!("handled by the caller"),
     };
     if !(e > 0.05 && e <= 1.0) {
         return Err((
@@ -98,22 +101,22 @@ fn restitution(scene: &Scene) -> std::result::Result<f64, (String, String)> {
 pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
     let mut out: Vec<(String, String)> = Vec::new();
     let mut refuse = |path: &str, why: &str| out.push((path.to_string(), why.to_string()));
-    match &scene.contact.normal {
-        NormalSpec::Hertz {} | NormalSpec::Linear { .. } => {}
-        other => refuse(
+    let model = scene.contact.normal.liggghts();
+    if model.is_none() {
+        refuse(
             "contact.normal.law",
             &format!(
                 "LIGGGHTS 3.8 has no counterpart of '{}' (exportable: hertz → model hertz, linear → model hooke)",
-                other.law()
+                scene.contact.normal.name()
             ),
-        ),
+        );
     }
-    match (&scene.contact.normal, &scene.contact.damping) {
-        (NormalSpec::Hertz {}, Some(DampingSpec::Constant { .. })) => refuse(
+    match (model, &scene.contact.damping) {
+        (Some(LiggghtsModel::Hertz), Some(Damping::Constant(_))) => refuse(
             "contact.damping.kind",
             "a constant gamma_n has no LIGGGHTS form with model hertz (use liggghts_restitution or critical_fraction)",
         ),
-        (NormalSpec::Linear { .. }, Some(DampingSpec::Constant { .. }))
+        (Some(LiggghtsModel::Hooke), Some(Damping::Constant(_)))
             if scene.contact.tangential.is_some() =>
         {
             refuse(
@@ -121,7 +124,7 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
                 "a constant gamma_n exports as model hooke/stiffness, which tamp exports only without friction",
             )
         }
-        (_, Some(DampingSpec::Constant { .. })) | (_, None) => {}
+        (_, Some(Damping::Constant(_))) | (_, None) => {}
         _ => {
             if let Err((path, why)) = restitution(scene) {
                 refuse(&path, &why);
@@ -129,7 +132,7 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
         }
     }
     if let Some(t) = &scene.contact.tangential {
-        if t.law != TangentialLawName::LiggghtsHistory {
+        if !matches!(t.law, TangentialLaw::LiggghtsHistory(_)) {
             refuse(
                 "contact.tangential.law",
                 &format!(
@@ -292,7 +295,7 @@ fn contact_model(scene: &Scene, sim: &crate::simulation::Simulation) -> Result<C
     };
     let tangential = "tangential history";
     let pair_style = match (&scene.contact.normal, &scene.contact.damping) {
-        (NormalSpec::Linear { stiffness }, Some(DampingSpec::Constant { gamma_n })) => {
+        (NormalLaw::Linear(Linear { stiffness }), Some(Damping::Constant(Constant { gamma_n }))) => {
             properties.push(format!(
                 "fix m3 all property/global kn peratomtypepair {}",
                 pair_matrix(&|_, _| *stiffness)
@@ -324,7 +327,7 @@ fn contact_model(scene: &Scene, sim: &crate::simulation::Simulation) -> Result<C
                 "fix m4 all property/global coefficientFriction peratomtypepair {mu}"
             ));
             match normal {
-                NormalSpec::Linear { stiffness } => {
+                NormalLaw::Linear(Linear { stiffness }) => {
                     let v = characteristic_velocity(sim, *stiffness)?;
                     properties.push(format!(
                         "fix m5 all property/global characteristicVelocity scalar {}",

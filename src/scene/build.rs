@@ -3,14 +3,7 @@
 
 use super::schema::*;
 use crate::boundary::Boundary;
-use crate::contact::{
-    ContactLaw,
-    damping::liggghts::{self, LiggghtsModel},
-    damping::{Constant, CriticalFraction, Damping},
-    normal::NormalLaw,
-    tangential::{TangentialLaw, liggghts_history},
-    van_der_waals::VanDerWaals,
-};
+use crate::contact::ContactLaw;
 use crate::detect::{Detector, NeighborList};
 use crate::error::{Result, TampError};
 use crate::generate::pour::Source;
@@ -41,139 +34,6 @@ fn insertion_box(region: &BoxRegion) -> InsertionBox {
         lower: v3(&region.lower),
         upper: v3(&region.upper),
     }
-}
-
-/// The normal law a scene names (also used by validation, which needs the law's
-/// LIGGGHTS counterpart before anything is built).
-pub fn normal_law(spec: &NormalSpec) -> NormalLaw {
-    use crate::contact::normal::{Hertz, Hysteretic, KuwabaraKono, Linear, Storakers, WaltonBraun};
-    match *spec {
-        NormalSpec::Linear { stiffness } => NormalLaw::Linear(Linear { stiffness }),
-        NormalSpec::Hertz {} => NormalLaw::Hertz(Hertz {}),
-        NormalSpec::KuwabaraKono { dissipation_time } => {
-            NormalLaw::KuwabaraKono(KuwabaraKono { dissipation_time })
-        }
-        NormalSpec::WaltonBraun {
-            loading_stiffness,
-            unloading_stiffness,
-        } => NormalLaw::WaltonBraun(WaltonBraun {
-            loading_stiffness,
-            unloading_stiffness,
-        }),
-        NormalSpec::Hysteretic {
-            stiffness,
-            hysteresis,
-        } => NormalLaw::Hysteretic(Hysteretic {
-            stiffness,
-            hysteresis,
-        }),
-        NormalSpec::Storakers { min_with_hertz } => {
-            NormalLaw::Storakers(Storakers { min_with_hertz })
-        }
-    }
-}
-
-/// The composed contact law. Fails only on a rule validation also checks (a
-/// `liggghts_restitution` damping with a law LIGGGHTS does not have).
-pub fn contact_law(spec: &ContactSpec) -> Result<ContactLaw> {
-    let normal = normal_law(&spec.normal);
-    let damping = match spec.damping {
-        None => None,
-        Some(DampingSpec::CriticalFraction { xi }) => {
-            Some(Damping::CriticalFraction(CriticalFraction { xi }))
-        }
-        Some(DampingSpec::Constant { gamma_n }) => Some(Damping::Constant(Constant { gamma_n })),
-        Some(DampingSpec::LiggghtsRestitution { restitution }) => {
-            let model = LiggghtsModel::of(&normal).ok_or_else(|| {
-                TampError::input(
-                    "contact.damping.restitution",
-                    liggghts::unsupported_law(spec.normal.law()),
-                )
-            })?;
-            Some(Damping::CriticalFraction(CriticalFraction {
-                xi: model.critical_fraction(restitution),
-            }))
-        }
-    };
-    let tangential = match &spec.tangential {
-        None => None,
-        Some(t) => {
-            let parameter = t.stiffness.or(t.damping).or(t.beta).unwrap_or(0.0);
-            use crate::contact::tangential::{
-                Coulomb, CundallStrack, HaffWerner, MindlinDeresiewicz, MindlinNoSlip, storakers,
-                walton_braun,
-            };
-            Some(match t.law {
-                TangentialLawName::MindlinDeresiewicz => {
-                    TangentialLaw::MindlinDeresiewicz(MindlinDeresiewicz)
-                }
-                TangentialLawName::Coulomb => TangentialLaw::Coulomb(Coulomb),
-                TangentialLawName::HaffWerner => {
-                    TangentialLaw::HaffWerner(HaffWerner { damping: parameter })
-                }
-                TangentialLawName::CundallStrack => TangentialLaw::CundallStrack(CundallStrack {
-                    stiffness: parameter,
-                }),
-                TangentialLawName::WaltonBraun => {
-                    TangentialLaw::WaltonBraun(walton_braun::WaltonBraun {
-                        stiffness: parameter,
-                    })
-                }
-                TangentialLawName::MindlinNoSlip => TangentialLaw::MindlinNoSlip(MindlinNoSlip),
-                TangentialLawName::Storakers => {
-                    TangentialLaw::Storakers(storakers::Storakers { beta: parameter })
-                }
-                TangentialLawName::LiggghtsHistory => liggghts_history(spec, &normal, &damping)?,
-            })
-        }
-    };
-    Ok(ContactLaw {
-        normal,
-        damping,
-        tangential,
-        cohesion: spec.cohesion.as_ref().map(|c| match *c {
-            CohesionSpec::VanDerWaals {
-                hamaker,
-                min_separation,
-                cutoff,
-            } => VanDerWaals {
-                hamaker,
-                min_separation,
-                cutoff,
-            },
-        }),
-    })
-}
-
-/// `liggghts_history` for the scene's normal law and damping: the LIGGGHTS model gives
-/// k_t, the normal damping's ξ gives γ_t. Fails on the combinations validation refuses.
-fn liggghts_history(
-    spec: &ContactSpec,
-    normal: &NormalLaw,
-    damping: &Option<Damping>,
-) -> Result<TangentialLaw> {
-    let model = LiggghtsModel::of(normal).ok_or_else(|| {
-        TampError::input(
-            "contact.tangential.law",
-            liggghts_history::unsupported_normal_law(spec.normal.law()),
-        )
-    })?;
-    let xi = match (&spec.damping, damping) {
-        (None, _) => 0.0,
-        (
-            Some(DampingSpec::LiggghtsRestitution { .. }),
-            Some(Damping::CriticalFraction(CriticalFraction { xi })),
-        ) => *xi,
-        (Some(other), _) => {
-            return Err(TampError::input(
-                "contact.damping",
-                liggghts_history::unsupported_damping(other.kind()),
-            ));
-        }
-    };
-    Ok(TangentialLaw::LiggghtsHistory(
-        crate::contact::tangential::LiggghtsHistory { model, xi },
-    ))
 }
 
 pub fn build(scene: &Scene) -> Result<BuiltScene> {
@@ -207,7 +67,7 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
 
     let (default_friction, overrides): (f64, Vec<(usize, usize, f64)>) =
         match &scene.contact.tangential {
-            Some(TangentialSpec {
+            Some(FrictionSpec {
                 friction,
                 friction_pairs,
                 ..
@@ -333,7 +193,7 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
         )?;
     }
 
-    let law = contact_law(&scene.contact)?;
+    let law = scene.contact.law();
     // Particles still to be poured count: the skin must suit the smallest of them.
     let r_min = particles
         .radius

@@ -3,6 +3,11 @@
 
 pub use super::die_compaction::DieCompactionSpec;
 pub use super::walls::WallSpec;
+use crate::contact::ContactLaw;
+use crate::contact::damping::Damping;
+use crate::contact::normal::NormalLaw;
+use crate::contact::tangential::TangentialLaw;
+use crate::contact::van_der_waals::Cohesion;
 use crate::generate::distribution::SizeDistribution;
 use serde::{Deserialize, Serialize};
 
@@ -83,159 +88,42 @@ pub struct HollomonSpec {
     pub yield_stress: Option<f64>,
 }
 
+/// The contact law, one block per role. Each law's parameters and rules are in its
+/// own file under `contact/`; the scene holds the law types themselves.
 #[derive(Clone, Debug, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct ContactSpec {
-    pub normal: NormalSpec,
+    pub normal: NormalLaw,
     #[serde(default)]
-    pub damping: Option<DampingSpec>,
+    pub damping: Option<Damping>,
     #[serde(default)]
-    pub tangential: Option<TangentialSpec>,
+    pub tangential: Option<FrictionSpec>,
     #[serde(default)]
-    pub cohesion: Option<CohesionSpec>,
+    pub cohesion: Option<Cohesion>,
 }
 
+impl ContactSpec {
+    /// The law the force loop runs (friction coefficients go to the pair table).
+    pub fn law(&self) -> ContactLaw {
+        ContactLaw::new(
+            self.normal,
+            self.damping,
+            self.tangential.as_ref().map(|t| t.law),
+            self.cohesion,
+        )
+    }
+}
+
+/// Friction: the tangential law (its `law` tag and parameters, inline) plus μ and
+/// per-pair overrides. Unknown fields are refused by the law's own type.
 #[derive(Clone, Debug, Deserialize, Serialize)]
-#[serde(tag = "law", rename_all = "snake_case", deny_unknown_fields)]
-pub enum NormalSpec {
-    /// Zhong model I: F = k_n δ.
-    Linear { stiffness: f64 },
-    /// Rojek eq 2 / Zhong model II.
-    Hertz {},
-    /// Zhong model III, eq 15; A in s.
-    KuwabaraKono { dissipation_time: f64 },
-    /// Zhong model IV, eq 16; N/m.
-    WaltonBraun {
-        loading_stiffness: f64,
-        unloading_stiffness: f64,
-    },
-    /// Zhong model V, eqs 17–18; γ dimensionless in [0, 1).
-    Hysteretic { stiffness: f64, hysteresis: f64 },
-    /// Rojek eqs 15–20; `min_with_hertz` caps the plastic force by Hertz (Martin et al. 2003).
-    Storakers {
-        #[serde(default)]
-        min_with_hertz: bool,
-    },
-}
-
-impl NormalSpec {
-    /// The `law` tag as the scene writes it, for messages.
-    pub fn law(&self) -> &'static str {
-        match self {
-            NormalSpec::Linear { .. } => "linear",
-            NormalSpec::Hertz {} => "hertz",
-            NormalSpec::KuwabaraKono { .. } => "kuwabara_kono",
-            NormalSpec::WaltonBraun { .. } => "walton_braun",
-            NormalSpec::Hysteretic { .. } => "hysteretic",
-            NormalSpec::Storakers { .. } => "storakers",
-        }
-    }
-}
-
-#[derive(Clone, Debug, Deserialize, Serialize)]
-#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
-pub enum DampingSpec {
-    /// c_n = ξ · 2√(m* k_n), Rojek eqs 6–10.
-    CriticalFraction { xi: f64 },
-    /// c_n = γ_n, Zhong eq 6 (N·s/m).
-    Constant { gamma_n: f64 },
-    /// LIGGGHTS 3.8's damping from a restitution coefficient, built as the
-    /// `CriticalFraction` whose ξ depends on the normal law (contact/damping/liggghts.rs).
-    LiggghtsRestitution { restitution: f64 },
-}
-
-impl DampingSpec {
-    /// The `kind` tag as the scene writes it, for messages.
-    pub fn kind(&self) -> &'static str {
-        match self {
-            DampingSpec::CriticalFraction { .. } => "critical_fraction",
-            DampingSpec::Constant { .. } => "constant",
-            DampingSpec::LiggghtsRestitution { .. } => "liggghts_restitution",
-        }
-    }
-}
-
-#[derive(Clone, Copy, Debug, Deserialize, Serialize, PartialEq, Eq)]
-#[serde(rename_all = "snake_case")]
-pub enum TangentialLawName {
-    /// Zhong model VI, eqs 19–21.
-    MindlinDeresiewicz,
-    /// Zhong model VII, eq 22.
-    Coulomb,
-    /// Zhong model VIII, eq 23; needs `damping`.
-    HaffWerner,
-    /// Zhong model IX, eqs 24–25; needs `stiffness`.
-    CundallStrack,
-    /// Zhong model X, eqs 26–27; needs `stiffness` (k₀).
-    WaltonBraun,
-    /// Rojek eqs 11–14 (H-MDNs).
-    MindlinNoSlip,
-    /// Rojek eq 21, k_t = β k_n; needs `beta`.
-    Storakers,
-    /// LIGGGHTS 3.8 `tangential history` (contact/tangential/liggghts_history.rs); only
-    /// with normal law `hertz` or `linear`, damping `liggghts_restitution` or none, and
-    /// rotation.
-    LiggghtsHistory,
-}
-
-impl TangentialLawName {
-    pub fn name(&self) -> &'static str {
-        match self {
-            TangentialLawName::MindlinDeresiewicz => "mindlin_deresiewicz",
-            TangentialLawName::Coulomb => "coulomb",
-            TangentialLawName::HaffWerner => "haff_werner",
-            TangentialLawName::CundallStrack => "cundall_strack",
-            TangentialLawName::WaltonBraun => "walton_braun",
-            TangentialLawName::MindlinNoSlip => "mindlin_no_slip",
-            TangentialLawName::Storakers => "storakers",
-            TangentialLawName::LiggghtsHistory => "liggghts_history",
-        }
-    }
-
-    /// The field of the law's own parameter (required exactly for this law), if any.
-    pub fn parameter(&self) -> Option<&'static str> {
-        match self {
-            TangentialLawName::CundallStrack | TangentialLawName::WaltonBraun => Some("stiffness"),
-            TangentialLawName::HaffWerner => Some("damping"),
-            TangentialLawName::Storakers => Some("beta"),
-            _ => None,
-        }
-    }
-}
-
-/// Friction: the law plus μ (and per-pair overrides). Only the parameter the law
-/// names may be given (validation says which).
-#[derive(Clone, Debug, Deserialize, Serialize)]
-#[serde(deny_unknown_fields)]
-pub struct TangentialSpec {
-    pub law: TangentialLawName,
+pub struct FrictionSpec {
+    #[serde(flatten)]
+    pub law: TangentialLaw,
     pub friction: f64,
     /// Per-material-pair friction overrides.
     #[serde(default)]
     pub friction_pairs: Vec<FrictionPair>,
-    /// k_s or k₀, N/m (cundall_strack, walton_braun).
-    #[serde(default)]
-    pub stiffness: Option<f64>,
-    /// γ_s, N·s/m (haff_werner).
-    #[serde(default)]
-    pub damping: Option<f64>,
-    /// β (storakers).
-    #[serde(default)]
-    pub beta: Option<f64>,
-}
-
-#[derive(Clone, Debug, Deserialize, Serialize)]
-#[serde(tag = "law", rename_all = "snake_case", deny_unknown_fields)]
-pub enum CohesionSpec {
-    /// Zhong eq 28: F = A R*/(6 h²) for h_min ≤ h ≤ h_c, constant below h_min.
-    VanDerWaals {
-        /// Hamaker constant A, J.
-        hamaker: f64,
-        /// h_min, m.
-        min_separation: f64,
-        /// h_c, m.
-        cutoff: f64,
-    },
 }
 
 #[derive(Clone, Debug, Deserialize, Serialize)]

@@ -3,8 +3,8 @@
 
 use super::die_compaction::DieCompactionSpec;
 use super::schema::*;
-use crate::contact::damping::liggghts::{self, LiggghtsModel};
-use crate::contact::tangential::liggghts_history;
+use crate::contact::model::{Needs, Roles};
+pub(super) use crate::error::Errors;
 use crate::error::{Result, TampError};
 use std::collections::HashSet;
 
@@ -20,38 +20,61 @@ pub const SERIES_COLUMNS: &[&str] = &[
     "wall_forces",
 ];
 
-pub(super) struct Errors(pub(super) Vec<TampError>);
-
-impl Errors {
-    pub(super) fn push(&mut self, path: impl Into<String>, rule: impl Into<String>) {
-        self.0.push(TampError::input(path, rule));
-    }
-
-    pub(super) fn positive(&mut self, path: impl Into<String>, value: f64) {
-        if !(value > 0.0 && value.is_finite()) {
-            self.push(path, format!("must be > 0 and finite, got {value:e}"));
+/// What a law needs of the materials and the scene (`Needs`), asked of every
+/// material; `by` names the law in the message.
+fn require(e: &mut Errors, scene: &Scene, needs: Needs, by: &str) {
+    if let Some(what_for) = needs.elastic {
+        for (k, m) in scene.materials.iter().enumerate() {
+            for (field, given) in [
+                ("youngs_modulus", m.youngs_modulus.is_some()),
+                ("poisson_ratio", m.poisson_ratio.is_some()),
+            ] {
+                if !given {
+                    e.push(
+                        format!("materials[{k}].{field}"),
+                        format!("is required by {by}{what_for}"),
+                    );
+                }
+            }
         }
     }
-
-    pub(super) fn non_negative(&mut self, path: impl Into<String>, value: f64) {
-        if !(value >= 0.0 && value.is_finite()) {
-            self.push(path, format!("must be >= 0 and finite, got {value:e}"));
+    if needs.hollomon {
+        let particle_materials: HashSet<&str> = scene
+            .particles
+            .iter()
+            .map(|p| p.material.as_str())
+            .chain(scene.insert.iter().map(|i| i.material.as_str()))
+            .chain(scene.deposit.iter().map(|d| d.material.as_str()))
+            .collect();
+        for (k, m) in scene.materials.iter().enumerate() {
+            if m.hollomon.is_none() && particle_materials.contains(m.name.as_str()) {
+                e.push(
+                    format!("materials[{k}].hollomon"),
+                    format!("is required by {by} for every particle material"),
+                );
+            }
+        }
+        let exponents: Vec<(usize, f64)> = scene
+            .materials
+            .iter()
+            .enumerate()
+            .filter_map(|(k, m)| m.hollomon.as_ref().map(|h| (k, h.exponent)))
+            .collect();
+        if let Some(&(first, m0)) = exponents.first() {
+            for &(k, m) in &exponents[1..] {
+                if m != m0 {
+                    e.push(
+                        format!("materials[{k}].hollomon.exponent"),
+                        format!("must equal materials[{first}].hollomon.exponent ({m0}): Rojek eq 18 mixes one exponent, got {m}"),
+                    );
+                }
+            }
         }
     }
-
-    /// Ok when nothing was found; the one error, or all of them.
-    pub(super) fn finish(mut self) -> Result<()> {
-        match self.0.len() {
-            0 => Ok(()),
-            1 => Err(self.0.pop().unwrap()),
-            _ => Err(TampError::InputMany(self.0)),
-        }
-    }
-
-    pub(super) fn finite3(&mut self, path: impl Into<String>, v: &[f64; 3]) {
-        if !v.iter().all(|c| c.is_finite()) {
-            self.push(path, format!("must be finite, got {v:?}"));
-        }
+    if let Some(rule) = needs.rotation
+        && scene.rotation.is_none()
+    {
+        e.push("rotation", rule);
     }
 }
 
@@ -152,203 +175,38 @@ fn validate_plain(scene: &Scene) -> Result<()> {
     let known = |name: &str| names.contains(name);
 
     let contact = &scene.contact;
-    let normal_name = contact.normal.law();
-    let require_elastic = |e: &mut Errors, why: &str| {
-        for (k, m) in scene.materials.iter().enumerate() {
-            if m.youngs_modulus.is_none() {
-                e.push(
-                    format!("materials[{k}].youngs_modulus"),
-                    format!("is required by {why}"),
-                );
-            }
-            if m.poisson_ratio.is_none() {
-                e.push(
-                    format!("materials[{k}].poisson_ratio"),
-                    format!("is required by {why}"),
-                );
-            }
-        }
+    let roles = Roles {
+        normal: &contact.normal,
+        damping: contact.damping.as_ref(),
     };
-    match &contact.normal {
-        NormalSpec::Linear { stiffness } => e.positive("contact.normal.stiffness", *stiffness),
-        NormalSpec::Hertz {} => require_elastic(&mut e, "contact.normal.law 'hertz'"),
-        NormalSpec::KuwabaraKono { dissipation_time } => {
-            require_elastic(&mut e, "contact.normal.law 'kuwabara_kono'");
-            e.non_negative("contact.normal.dissipation_time", *dissipation_time);
-        }
-        NormalSpec::WaltonBraun {
-            loading_stiffness,
-            unloading_stiffness,
-        } => {
-            e.positive("contact.normal.loading_stiffness", *loading_stiffness);
-            if !(unloading_stiffness >= loading_stiffness && unloading_stiffness.is_finite()) {
-                e.push(
-                    "contact.normal.unloading_stiffness",
-                    format!(
-                        "must be >= loading_stiffness ({loading_stiffness:e}) and finite: unloading is the stiffer branch, got {unloading_stiffness:e}"
-                    ),
-                );
-            }
-        }
-        NormalSpec::Hysteretic {
-            stiffness,
-            hysteresis,
-        } => {
-            e.positive("contact.normal.stiffness", *stiffness);
-            if !(*hysteresis >= 0.0 && *hysteresis < 1.0) {
-                e.push(
-                    "contact.normal.hysteresis",
-                    format!("must be in [0, 1), got {hysteresis}"),
-                );
-            }
-        }
-        NormalSpec::Storakers { .. } => {
-            require_elastic(
-                &mut e,
-                "contact.normal.law 'storakers' (elastic unloading, Rojek eq 20)",
-            );
-            let particle_materials: HashSet<&str> = scene
-                .particles
-                .iter()
-                .map(|p| p.material.as_str())
-                .chain(scene.insert.iter().map(|i| i.material.as_str()))
-                .chain(scene.deposit.iter().map(|d| d.material.as_str()))
-                .collect();
-            for (k, m) in scene.materials.iter().enumerate() {
-                if m.hollomon.is_none() && particle_materials.contains(m.name.as_str()) {
-                    e.push(
-                        format!("materials[{k}].hollomon"),
-                        "is required by contact.normal.law 'storakers' for every particle material",
-                    );
-                }
-            }
-            let exponents: Vec<(usize, f64)> = scene
-                .materials
-                .iter()
-                .enumerate()
-                .filter_map(|(k, m)| m.hollomon.as_ref().map(|h| (k, h.exponent)))
-                .collect();
-            if let Some(&(first, m0)) = exponents.first() {
-                for &(k, m) in &exponents[1..] {
-                    if m != m0 {
-                        e.push(
-                            format!("materials[{k}].hollomon.exponent"),
-                            format!("must equal materials[{first}].hollomon.exponent ({m0}): Rojek eq 18 mixes one exponent, got {m}"),
-                        );
-                    }
-                }
-            }
-        }
-    }
-    for (k, m) in scene.materials.iter().enumerate() {
-        let Some(h) = &m.hollomon else { continue };
-        let path = format!("materials[{k}].hollomon");
-        if !(h.exponent >= 0.0 && h.exponent < 1.0) {
+    let normal = &contact.normal;
+    contact.normal.check("contact.normal", &mut e);
+    require(
+        &mut e,
+        scene,
+        normal.needs(),
+        &format!("contact.normal.law '{}'", normal.name()),
+    );
+    if let Some(damping) = &contact.damping {
+        damping.check("contact.damping", roles, &mut e);
+        if normal.has_own_dissipation() {
             e.push(
-                format!("{path}.exponent"),
-                format!("must be in [0, 1), got {}", h.exponent),
+                "contact.damping",
+                format!(
+                    "must be absent with contact.normal.law '{}', which dissipates by itself",
+                    normal.name()
+                ),
             );
         }
-        match (h.strength, h.yield_stress) {
-            (Some(s), None) => e.positive(format!("{path}.strength"), s),
-            (None, Some(y)) => {
-                e.positive(format!("{path}.yield_stress"), y);
-                if m.youngs_modulus.is_none() {
-                    e.push(
-                        format!("materials[{k}].youngs_modulus"),
-                        "is required by hollomon.yield_stress (the curve passes through (σ_Y/E, σ_Y))",
-                    );
-                }
-            }
-            _ => e.push(
-                path,
-                "give exactly one of 'strength' (σ0, Pa) or 'yield_stress' (σ_Y, Pa)",
-            ),
-        }
-    }
-    match &contact.damping {
-        Some(DampingSpec::CriticalFraction { xi }) => e.non_negative("contact.damping.xi", *xi),
-        Some(DampingSpec::Constant { gamma_n }) => {
-            e.non_negative("contact.damping.gamma_n", *gamma_n)
-        }
-        Some(DampingSpec::LiggghtsRestitution { restitution }) => {
-            if !liggghts::restitution_is_valid(*restitution) {
-                e.push(
-                    "contact.damping.restitution",
-                    format!("must be > 0.05 and <= 1 (LIGGGHTS's own rule), got {restitution}"),
-                );
-            }
-            if LiggghtsModel::of(&super::build::normal_law(&contact.normal)).is_none() {
-                e.push(
-                    "contact.damping.restitution",
-                    liggghts::unsupported_law(normal_name),
-                );
-            }
-        }
-        None => {}
-    }
-    if contact.damping.is_some()
-        && matches!(
-            contact.normal,
-            NormalSpec::KuwabaraKono { .. } | NormalSpec::Hysteretic { .. }
-        )
-    {
-        e.push(
-            "contact.damping",
-            format!(
-                "must be absent with contact.normal.law '{normal_name}', which dissipates by itself"
-            ),
-        );
     }
     if let Some(t) = &contact.tangential {
-        let law = t.law.name();
-        for (field, value) in [
-            ("stiffness", t.stiffness),
-            ("damping", t.damping),
-            ("beta", t.beta),
-        ] {
-            let path = format!("contact.tangential.{field}");
-            match (t.law.parameter() == Some(field), value) {
-                (true, Some(v)) => e.positive(path, v),
-                (true, None) => e.push(
-                    path,
-                    format!("is required by contact.tangential.law '{law}'"),
-                ),
-                (false, Some(_)) => e.push(
-                    path,
-                    format!("is not a parameter of contact.tangential.law '{law}'"),
-                ),
-                (false, None) => {}
-            }
-        }
-        if matches!(
-            t.law,
-            TangentialLawName::MindlinDeresiewicz | TangentialLawName::MindlinNoSlip
-        ) {
-            require_elastic(
-                &mut e,
-                &format!("contact.tangential.law '{law}' (G*, Rojek eq 13)"),
-            );
-        }
-        if t.law == TangentialLawName::LiggghtsHistory {
-            if LiggghtsModel::of(&super::build::normal_law(&contact.normal)).is_none() {
-                e.push(
-                    "contact.tangential.law",
-                    liggghts_history::unsupported_normal_law(normal_name),
-                );
-            }
-            if let Some(d) = &contact.damping
-                && !matches!(d, DampingSpec::LiggghtsRestitution { .. })
-            {
-                e.push(
-                    "contact.damping",
-                    liggghts_history::unsupported_damping(d.kind()),
-                );
-            }
-            if scene.rotation.is_none() {
-                e.push("rotation", liggghts_history::NEEDS_ROTATION);
-            }
-        }
+        t.law.check("contact.tangential", roles, &mut e);
+        require(
+            &mut e,
+            scene,
+            t.law.needs(),
+            &format!("contact.tangential.law '{}'", t.law.name()),
+        );
         e.non_negative("contact.tangential.friction", t.friction);
         // A pair is unordered: its key is its two names sorted.
         let mut listed = HashSet::new();
@@ -375,22 +233,36 @@ fn validate_plain(scene: &Scene) -> Result<()> {
             }
         }
     }
-    if let Some(CohesionSpec::VanDerWaals {
-        hamaker,
-        min_separation,
-        cutoff,
-    }) = &contact.cohesion
-    {
-        e.positive("contact.cohesion.hamaker", *hamaker);
-        e.positive("contact.cohesion.min_separation", *min_separation);
-        if !(cutoff > min_separation && cutoff.is_finite()) {
-            e.push(
-                "contact.cohesion.cutoff",
-                format!("must be > min_separation ({min_separation:e}) and finite, got {cutoff:e}"),
-            );
-        }
+    if let Some(cohesion) = &contact.cohesion {
+        cohesion.check("contact.cohesion", &mut e);
     }
 
+    for (k, m) in scene.materials.iter().enumerate() {
+        let Some(h) = &m.hollomon else { continue };
+        let path = format!("materials[{k}].hollomon");
+        if !(h.exponent >= 0.0 && h.exponent < 1.0) {
+            e.push(
+                format!("{path}.exponent"),
+                format!("must be in [0, 1), got {}", h.exponent),
+            );
+        }
+        match (h.strength, h.yield_stress) {
+            (Some(s), None) => e.positive(format!("{path}.strength"), s),
+            (None, Some(y)) => {
+                e.positive(format!("{path}.yield_stress"), y);
+                if m.youngs_modulus.is_none() {
+                    e.push(
+                        format!("materials[{k}].youngs_modulus"),
+                        "is required by hollomon.yield_stress (the curve passes through (σ_Y/E, σ_Y))",
+                    );
+                }
+            }
+            _ => e.push(
+                path,
+                "give exactly one of 'strength' (σ0, Pa) or 'yield_stress' (σ_Y, Pa)",
+            ),
+        }
+    }
     for (k, p) in scene.particles.iter().enumerate() {
         e.finite3(format!("particles[{k}].position"), &p.position);
         e.positive(format!("particles[{k}].radius"), p.radius);

@@ -23,33 +23,25 @@
 //! other inputs, and tamp's other laws have no LIGGGHTS counterpart.
 //! See docs/liggghts.md for the full parameter mapping.
 
+use super::CriticalFraction;
+use crate::contact::model::Roles;
 use crate::contact::normal::NormalLaw;
+use crate::error::Errors;
 
 /// √(5/6), the constant LIGGGHTS hard-codes in `model hertz`.
 pub const SQRT_FIVE_SIXTHS: f64 = 0.912_870_929_175_276_9;
 
 /// The LIGGGHTS model a tamp normal law reproduces.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum LiggghtsModel {
     /// `model hertz` = tamp `hertz`.
+    #[default]
     Hertz,
     /// `model hooke` = tamp `linear` with k_n from `hooke_stiffness`.
     Hooke,
 }
 
 impl LiggghtsModel {
-    /// The LIGGGHTS model of a normal law; `None` for laws LIGGGHTS does not have.
-    pub fn of(law: &NormalLaw) -> Option<Self> {
-        match law {
-            NormalLaw::Hertz(_) => Some(LiggghtsModel::Hertz),
-            NormalLaw::Linear(_) => Some(LiggghtsModel::Hooke),
-            NormalLaw::KuwabaraKono(_)
-            | NormalLaw::WaltonBraun(_)
-            | NormalLaw::Hysteretic(_)
-            | NormalLaw::Storakers(_) => None,
-        }
-    }
-
     /// The keyword in `pair_style gran model …`.
     pub fn keyword(&self) -> &'static str {
         match self {
@@ -63,6 +55,42 @@ impl LiggghtsModel {
         match self {
             LiggghtsModel::Hertz => -SQRT_FIVE_SIXTHS * beta(e),
             LiggghtsModel::Hooke => -beta(e),
+        }
+    }
+}
+
+/// The damping kind `liggghts_restitution`: LIGGGHTS's restitution coefficient e. It
+/// is not a dashpot of its own: the force loop runs it as the `CriticalFraction` ξ
+/// that the scene's normal law gives (`critical_fraction`).
+#[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct LiggghtsRestitution {
+    pub restitution: f64,
+}
+
+impl LiggghtsRestitution {
+    pub const NAME: &str = "liggghts_restitution";
+
+    /// The dashpot it is beside `normal`, or why LIGGGHTS has none.
+    pub fn with(&self, normal: &NormalLaw) -> Result<CriticalFraction, String> {
+        match normal.liggghts() {
+            Some(model) => Ok(CriticalFraction {
+                xi: model.critical_fraction(self.restitution),
+            }),
+            None => Err(unsupported_law(normal.name())),
+        }
+    }
+
+    pub fn check(&self, path: &str, roles: Roles, e: &mut Errors) {
+        let restitution = self.restitution;
+        if !restitution_is_valid(restitution) {
+            e.push(
+                format!("{path}.restitution"),
+                format!("must be > 0.05 and <= 1 (LIGGGHTS's own rule), got {restitution}"),
+            );
+        }
+        if let Err(rule) = self.with(roles.normal) {
+            e.push(format!("{path}.restitution"), rule);
         }
     }
 }
@@ -107,7 +135,7 @@ mod tests {
     use super::*;
     use crate::contact::damping::{CriticalFraction, DampingModel};
     use crate::contact::normal::hertz::hertz_stiffness;
-    use crate::contact::normal::{Hertz, Linear, Storakers};
+    use crate::contact::normal::{Hertz, Linear, NormalLaw, Storakers};
     use approx::assert_relative_eq;
 
     // The recorded LIGGGHTS scene: steel spheres, R = 1 mm, E = 2e11 Pa, ν = 0.3.
@@ -194,17 +222,18 @@ mod tests {
     #[test]
     fn only_hertz_and_linear_have_a_liggghts_model() {
         assert_eq!(
-            LiggghtsModel::of(&NormalLaw::Hertz(Hertz {})),
+            NormalLaw::Hertz(Hertz {}).liggghts(),
             Some(LiggghtsModel::Hertz)
         );
         assert_eq!(
-            LiggghtsModel::of(&NormalLaw::Linear(Linear { stiffness: 1.0 })),
+            NormalLaw::Linear(Linear { stiffness: 1.0 }).liggghts(),
             Some(LiggghtsModel::Hooke)
         );
         assert_eq!(
-            LiggghtsModel::of(&NormalLaw::Storakers(Storakers {
+            NormalLaw::Storakers(Storakers {
                 min_with_hertz: false
-            })),
+            })
+            .liggghts(),
             None
         );
     }

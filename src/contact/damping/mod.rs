@@ -15,15 +15,25 @@
 pub mod liggghts;
 
 pub use crate::contact::model::DampingModel;
+use crate::contact::model::Roles;
+use crate::error::Errors;
+pub use liggghts::LiggghtsRestitution;
 
 /// c_n = ξ · 2√(m* k_n), Rojek eqs 6–10.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
+#[serde(deny_unknown_fields)]
 pub struct CriticalFraction {
     pub xi: f64,
 }
 
 impl DampingModel for CriticalFraction {
     const ACTIVE: bool = true;
+    fn name(&self) -> &'static str {
+        "critical_fraction"
+    }
+    fn check(&self, path: &str, _: Roles, e: &mut Errors) {
+        e.non_negative(format!("{path}.xi"), self.xi);
+    }
     #[inline(always)]
     fn coefficient(&self, effective_mass: f64, stiffness: f64) -> f64 {
         self.xi * critical_damping(effective_mass, stiffness)
@@ -34,13 +44,20 @@ impl DampingModel for CriticalFraction {
 }
 
 /// c_n = γ_n, Zhong eq 6 (N·s/m).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
+#[serde(deny_unknown_fields)]
 pub struct Constant {
     pub gamma_n: f64,
 }
 
 impl DampingModel for Constant {
     const ACTIVE: bool = true;
+    fn name(&self) -> &'static str {
+        "constant"
+    }
+    fn check(&self, path: &str, _: Roles, e: &mut Errors) {
+        e.non_negative(format!("{path}.gamma_n"), self.gamma_n);
+    }
     #[inline(always)]
     fn coefficient(&self, _: f64, _: f64) -> f64 {
         self.gamma_n
@@ -50,33 +67,34 @@ impl DampingModel for Constant {
     }
 }
 
-/// The scene's damping role.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// The scene's damping role, read as `{"kind": "<name>", <its parameters>}`.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
 pub enum Damping {
     CriticalFraction(CriticalFraction),
     Constant(Constant),
-}
-
-/// `each_damping!(damping, d => expr)`: `expr` with `d` bound to the form's own type.
-#[macro_export]
-macro_rules! each_damping {
-    ($damping:expr, $d:ident => $body:expr) => {
-        match $damping {
-            $crate::contact::damping::Damping::CriticalFraction($d) => $body,
-            $crate::contact::damping::Damping::Constant($d) => $body,
-        }
-    };
+    /// LIGGGHTS 3.8's damping from a restitution coefficient: run as the
+    /// `CriticalFraction` whose ξ the normal law gives (liggghts.rs).
+    LiggghtsRestitution(LiggghtsRestitution),
 }
 
 impl Damping {
-    #[inline]
-    pub fn coefficient(&self, effective_mass: f64, stiffness: f64) -> f64 {
-        each_damping!(self, d => d.coefficient(effective_mass, stiffness))
+    /// The `kind` of the scene file.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Damping::CriticalFraction(d) => d.name(),
+            Damping::Constant(d) => d.name(),
+            Damping::LiggghtsRestitution(_) => LiggghtsRestitution::NAME,
+        }
     }
 
-    /// Damping ratio ξ of a contact with this mass and stiffness (for eq 28).
-    pub fn ratio(&self, effective_mass: f64, stiffness: f64) -> f64 {
-        each_damping!(self, d => d.ratio(effective_mass, stiffness))
+    /// The rules of its parameters and of the normal law it damps.
+    pub fn check(&self, path: &str, roles: Roles, errors: &mut Errors) {
+        match self {
+            Damping::CriticalFraction(d) => d.check(path, roles, errors),
+            Damping::Constant(d) => d.check(path, roles, errors),
+            Damping::LiggghtsRestitution(d) => d.check(path, roles, errors),
+        }
     }
 }
 

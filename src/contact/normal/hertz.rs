@@ -11,7 +11,11 @@
 //! Zhong eq 13 prints the constant as 3.21 (0.25 % low; docs/paper-discrepancies.md).
 //! LIGGGHTS keyword: `model hertz`.
 
+use super::NormalLaw;
+use crate::contact::registry::{self, NormalExample};
 use super::{NormalModel, NormalResponse};
+use crate::contact::damping::liggghts::LiggghtsModel;
+use crate::contact::model::Needs;
 use crate::material::PairProperties;
 
 pub fn hertz_force(overlap: f64, effective_radius: f64, effective_modulus: f64) -> f64 {
@@ -63,6 +67,34 @@ pub struct Hertz {}
 
 impl NormalModel for Hertz {
     type State = ();
+
+    fn name(&self) -> &'static str {
+        "hertz"
+    }
+
+    /// F = (4/3) E* √R* δ^{3/2} (Rojek eq 2).
+    fn examples() -> Vec<NormalExample> {
+        let k = 4.0 / 3.0 * registry::EFFECTIVE_MODULUS * registry::EFFECTIVE_RADIUS.sqrt();
+        [1e-8, 1e-7, 1e-6, 5e-6]
+            .map(|overlap: f64| NormalExample {
+                law: NormalLaw::Hertz(Hertz {}),
+                overlap,
+                rate: 0.01,
+                force: k * overlap.powf(1.5),
+            })
+            .to_vec()
+    }
+
+    fn needs(&self) -> Needs {
+        Needs {
+            elastic: Some(""),
+            ..Needs::default()
+        }
+    }
+
+    fn liggghts(&self) -> Option<LiggghtsModel> {
+        Some(LiggghtsModel::Hertz)
+    }
 
     #[inline(always)]
     fn response(

@@ -10,7 +10,10 @@
 //! No history. Stiffness for the time step: k(1 + γ).
 //! Recoverable (stored) energy: ½ k (1 − γ) δ², released along the unloading branch.
 
+use super::NormalLaw;
+use crate::contact::registry::NormalExample;
 use super::{NormalModel, NormalResponse};
+use crate::error::Errors;
 use crate::material::PairProperties;
 
 pub fn hysteretic_force(overlap: f64, overlap_rate: f64, stiffness: f64, hysteresis: f64) -> f64 {
@@ -40,6 +43,36 @@ pub struct Hysteretic {
 impl NormalModel for Hysteretic {
     type State = ();
     const OWN_DISSIPATION: bool = true;
+
+    fn name(&self) -> &'static str {
+        "hysteretic"
+    }
+
+    /// Loading (dδ/dt > 0): F = k_n (1 + γ) δ (Zhong eq 17).
+    fn examples() -> Vec<NormalExample> {
+        let law = Hysteretic {
+            stiffness: 1e7,
+            hysteresis: 0.5,
+        };
+        [1e-8, 1e-7, 1e-6, 5e-6]
+            .map(|overlap| NormalExample {
+                law: NormalLaw::Hysteretic(law),
+                overlap,
+                rate: 0.01,
+                force: 1e7 * 1.5 * overlap,
+            })
+            .to_vec()
+    }
+
+    fn check(&self, path: &str, e: &mut Errors) {
+        e.positive(format!("{path}.stiffness"), self.stiffness);
+        if !(self.hysteresis >= 0.0 && self.hysteresis < 1.0) {
+            e.push(
+                format!("{path}.hysteresis"),
+                format!("must be in [0, 1), got {}", self.hysteresis),
+            );
+        }
+    }
 
     #[inline(always)]
     fn response(

@@ -12,8 +12,12 @@
 //! has units of 1/Pa; Brilliantov's original squares it (docs/paper-discrepancies.md).
 //! No history. Stiffness for the time step: the Hertz tangent 2E*√(R*δ).
 
+use super::NormalLaw;
+use crate::contact::registry::{self, NormalExample};
 use super::hertz::{Hertz, hertz_force, hertz_stiffness};
 use super::{NormalModel, NormalResponse};
+use crate::contact::model::Needs;
+use crate::error::Errors;
 use crate::material::PairProperties;
 
 pub fn kuwabara_kono_force(
@@ -41,6 +45,38 @@ pub struct KuwabaraKono {
 impl NormalModel for KuwabaraKono {
     type State = ();
     const OWN_DISSIPATION: bool = true;
+
+    fn name(&self) -> &'static str {
+        "kuwabara_kono"
+    }
+
+    /// F = (4/3) E* √R* (δ^{3/2} + (3/2) A δ^{1/2} dδ/dt) (Zhong eq 15).
+    fn examples() -> Vec<NormalExample> {
+        let law = KuwabaraKono {
+            dissipation_time: 1e-7,
+        };
+        let k = 4.0 / 3.0 * registry::EFFECTIVE_MODULUS * registry::EFFECTIVE_RADIUS.sqrt();
+        let rate = 0.01;
+        [1e-8, 1e-7, 1e-6, 5e-6]
+            .map(|overlap: f64| NormalExample {
+                law: NormalLaw::KuwabaraKono(law),
+                overlap,
+                rate,
+                force: k * (overlap.powf(1.5) + 1.5 * 1e-7 * overlap.sqrt() * rate),
+            })
+            .to_vec()
+    }
+
+    fn needs(&self) -> Needs {
+        Needs {
+            elastic: Some(""),
+            ..Needs::default()
+        }
+    }
+
+    fn check(&self, path: &str, e: &mut Errors) {
+        e.non_negative(format!("{path}.dissipation_time"), self.dissipation_time);
+    }
 
     #[inline(always)]
     fn response(

@@ -7,7 +7,11 @@
 //! Zhong eqs 7–9, implemented below for the verification cases.
 //! Parameters: k_n in N/m. No history. LIGGGHTS keyword: `model hooke/stiffness`.
 
+use super::NormalLaw;
+use crate::contact::registry::NormalExample;
 use super::{NormalModel, NormalResponse};
+use crate::contact::damping::liggghts::LiggghtsModel;
+use crate::error::Errors;
 use crate::material::PairProperties;
 
 pub fn linear_force(stiffness: f64, overlap: f64) -> f64 {
@@ -78,6 +82,32 @@ pub struct Linear {
 
 impl NormalModel for Linear {
     type State = ();
+
+    fn name(&self) -> &'static str {
+        "linear"
+    }
+
+    /// F = k_n δ.
+    fn examples() -> Vec<NormalExample> {
+        let law = Linear { stiffness: 1e7 };
+        [1e-8, 1e-7, 1e-6, 5e-6]
+            .map(|overlap| NormalExample {
+                law: NormalLaw::Linear(law),
+                overlap,
+                rate: 0.01,
+                force: 1e7 * overlap,
+            })
+            .to_vec()
+    }
+
+    fn check(&self, path: &str, e: &mut Errors) {
+        e.positive(format!("{path}.stiffness"), self.stiffness);
+    }
+
+    /// LIGGGHTS's `model hooke` when k_n is its `hooke_stiffness` (damping/liggghts.rs).
+    fn liggghts(&self) -> Option<LiggghtsModel> {
+        Some(LiggghtsModel::Hooke)
+    }
 
     #[inline(always)]
     fn response(

@@ -10,7 +10,9 @@ pub mod plastic_cylinder;
 pub mod storakers;
 pub mod walton_braun;
 
-pub use crate::contact::model::{NormalModel, NormalResponse};
+use crate::contact::damping::liggghts::LiggghtsModel;
+pub use crate::contact::model::{Needs, NormalModel, NormalResponse};
+use crate::error::Errors;
 use crate::material::PairProperties;
 pub use hertz::Hertz;
 pub use hysteretic::Hysteretic;
@@ -28,9 +30,11 @@ pub struct PeakOverlap {
 
 impl crate::contact::model::ContactState for PeakOverlap {}
 
-/// The scene's normal law. Each variant is the law's own type (its file holds its
-/// equations and source); `each_normal!` is the one place that lists them.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// The scene's normal law, read from the scene as `{"law": "<name>", <its parameters>}`.
+/// Each variant is the law's own type (its file holds its equations, source, rules and
+/// examples); this enum, `each_normal!` and `NormalLaw::examples` list them.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
+#[serde(tag = "law", rename_all = "snake_case")]
 pub enum NormalLaw {
     /// Zhong model I.
     Linear(Linear),
@@ -64,19 +68,22 @@ macro_rules! each_normal {
 
 impl NormalLaw {
     pub fn name(&self) -> &'static str {
-        match self {
-            NormalLaw::Linear(_) => "linear",
-            NormalLaw::Hertz(_) => "hertz",
-            NormalLaw::KuwabaraKono(_) => "kuwabara_kono",
-            NormalLaw::WaltonBraun(_) => "walton_braun",
-            NormalLaw::Hysteretic(_) => "hysteretic",
-            NormalLaw::Storakers(Storakers {
-                min_with_hertz: false,
-            }) => "storakers",
-            NormalLaw::Storakers(Storakers {
-                min_with_hertz: true,
-            }) => "storakers_min_hertz",
-        }
+        each_normal!(self, n => n.name())
+    }
+
+    /// See `NormalModel::needs`.
+    pub fn needs(&self) -> Needs {
+        each_normal!(self, n => n.needs())
+    }
+
+    /// See `NormalModel::check`.
+    pub fn check(&self, path: &str, errors: &mut Errors) {
+        each_normal!(self, n => n.check(path, errors))
+    }
+
+    /// See `NormalModel::liggghts`.
+    pub fn liggghts(&self) -> Option<LiggghtsModel> {
+        each_normal!(self, n => n.liggghts())
     }
 
     /// Whether the law keeps δ_max in the contact state.

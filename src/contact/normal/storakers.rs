@@ -23,8 +23,11 @@
 //! History: δ_max (m). Stiffness for the time step (Rojek §3.4): k_p while loading,
 //! k_unl otherwise. Recoverable (stored) energy: 2/5 K [(δ − δ_res)^{5/2} − (−δ_res)₊^{5/2}].
 
+use super::NormalLaw;
+use crate::contact::registry::{self, NormalExample};
 use super::hertz::{Hertz, hertz_force, hertz_stiffness};
 use super::{NormalModel, NormalResponse, PeakOverlap};
+use crate::contact::model::Needs;
 use crate::material::{Hollomon, PairProperties};
 
 /// c^{2+m} of Storåkers' similarity solution, fitted by eq 17.
@@ -149,6 +152,54 @@ impl Storakers {
 
 impl NormalModel for Storakers {
     type State = PeakOverlap;
+
+    fn name(&self) -> &'static str {
+        if self.min_with_hertz {
+            "storakers_min_hertz"
+        } else {
+            "storakers"
+        }
+    }
+
+    /// Loading: F = c δ^{1+m/2}, c = 2^{1−m/2} 3^{1−m} π c^{2+m} σ0 R*^{1−m/2} with
+    /// c^{2+m} = 1.43 e^{−0.97m} (Rojek eqs 16–17); with `min_with_hertz`, the smaller of
+    /// that and (4/3) E* √R* δ^{3/2}.
+    fn examples() -> Vec<NormalExample> {
+        let (r, m) = (registry::EFFECTIVE_RADIUS, registry::HOLLOMON.exponent);
+        let c = 2f64.powf(1.0 - m / 2.0)
+            * 3f64.powf(1.0 - m)
+            * std::f64::consts::PI
+            * 1.43
+            * (-0.97 * m).exp()
+            * registry::HOLLOMON.strength
+            * r.powf(1.0 - m / 2.0);
+        let k_hertz = 4.0 / 3.0 * registry::EFFECTIVE_MODULUS * r.sqrt();
+        let mut out = Vec::new();
+        for min_with_hertz in [false, true] {
+            for overlap in [1e-8f64, 1e-7, 1e-6, 5e-6] {
+                let plastic = c * overlap.powf(1.0 + m / 2.0);
+                out.push(NormalExample {
+                    law: NormalLaw::Storakers(Storakers { min_with_hertz }),
+                    overlap,
+                    rate: 0.01,
+                    force: if min_with_hertz {
+                        plastic.min(k_hertz * overlap.powf(1.5))
+                    } else {
+                        plastic
+                    },
+                });
+            }
+        }
+        out
+    }
+
+    fn needs(&self) -> Needs {
+        Needs {
+            elastic: Some(" (elastic unloading, Rojek eq 20)"),
+            hollomon: true,
+            rotation: None,
+        }
+    }
 
     #[inline(always)]
     fn response(

@@ -12,7 +12,10 @@
 //! History: δ_max (m). Stiffness for the time step: k₁ loading, k₂ otherwise.
 //! Recoverable (stored) energy: ½ k₂ (δ − δ₀)² while δ > δ₀.
 
+use super::NormalLaw;
+use crate::contact::registry::NormalExample;
 use super::{NormalModel, NormalResponse, PeakOverlap};
+use crate::error::Errors;
 use crate::material::PairProperties;
 
 /// Force and tangent stiffness at `overlap` given the largest overlap so far.
@@ -54,6 +57,39 @@ pub struct WaltonBraun {
 
 impl NormalModel for WaltonBraun {
     type State = PeakOverlap;
+
+    fn name(&self) -> &'static str {
+        "walton_braun"
+    }
+
+    /// Loading branch: F = k₁ δ (Zhong eq 16).
+    fn examples() -> Vec<NormalExample> {
+        let law = WaltonBraun {
+            loading_stiffness: 1e7,
+            unloading_stiffness: 3e7,
+        };
+        [1e-8, 1e-7, 1e-6, 5e-6]
+            .map(|overlap| NormalExample {
+                law: NormalLaw::WaltonBraun(law),
+                overlap,
+                rate: 0.01,
+                force: 1e7 * overlap,
+            })
+            .to_vec()
+    }
+
+    fn check(&self, path: &str, e: &mut Errors) {
+        let (loading, unloading) = (self.loading_stiffness, self.unloading_stiffness);
+        e.positive(format!("{path}.loading_stiffness"), loading);
+        if !(unloading >= loading && unloading.is_finite()) {
+            e.push(
+                format!("{path}.unloading_stiffness"),
+                format!(
+                    "must be >= loading_stiffness ({loading:e}) and finite: unloading is the stiffer branch, got {unloading:e}"
+                ),
+            );
+        }
+    }
 
     #[inline(always)]
     fn response(

@@ -7,7 +7,9 @@
 //! tangential load (it chatters about v_t = 0 instead). Use it for flows that slide,
 //! not for static packings. No history. No stiffness enters the time step.
 
-use super::{TangentialInput, TangentialModel};
+use super::{TangentialInput, TangentialLaw, TangentialModel};
+use crate::contact::registry::{self, TangentialExample};
+
 
 use crate::particles::Vec3;
 
@@ -21,11 +23,27 @@ pub fn coulomb_force(tangential_velocity: &Vec3, friction: f64, normal_force: f6
 }
 
 /// Zhong model VII: sliding friction only, no spring.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Coulomb;
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Deserialize, serde::Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct Coulomb {}
 
 impl TangentialModel for Coulomb {
     type State = ();
+
+    fn name(&self) -> &'static str {
+        "coulomb"
+    }
+
+    /// F = −μF_n v̂_t whatever the speed (Zhong eq 22).
+    fn examples() -> Vec<TangentialExample> {
+        [registry::sticking_input(), registry::sliding_input()]
+            .map(|input| TangentialExample {
+                law: TangentialLaw::Coulomb(Coulomb {}),
+                input,
+                force: registry::sliding_force(&input),
+            })
+            .to_vec()
+    }
 
     #[inline(always)]
     fn force(&self, input: &TangentialInput, _: &mut ()) -> Vec3 {

@@ -13,7 +13,10 @@
 //! docs/models/cundall_strack.md).
 //! History: the spring vector ξ_s (m). Parameters: k_s (N/m), μ from the material pair.
 
-use super::{TangentialInput, TangentialModel};
+use super::{TangentialInput, TangentialLaw, TangentialModel};
+use crate::contact::registry::{self, TangentialExample};
+use crate::contact::model::Roles;
+use crate::error::Errors;
 
 use super::incremental::cap_to_cone;
 use crate::particles::Vec3;
@@ -56,13 +59,40 @@ pub fn cundall_strack_force(
 }
 
 /// Zhong model IX; k_s in N/m. State: the spring elongation ξ_s, m.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
+#[serde(deny_unknown_fields)]
 pub struct CundallStrack {
     pub stiffness: f64,
 }
 
 impl TangentialModel for CundallStrack {
     type State = Vec3;
+
+    fn name(&self) -> &'static str {
+        "cundall_strack"
+    }
+
+    /// F = −k_s v_t Δt from rest (Zhong eq 24); sliding: −μF_n v̂_t (eq 25).
+    fn examples() -> Vec<TangentialExample> {
+        let (stick, slide) = (registry::sticking_input(), registry::sliding_input());
+        let k = 1e6;
+        vec![
+            TangentialExample {
+                law: TangentialLaw::CundallStrack(CundallStrack { stiffness: 1e6 }),
+                input: stick,
+                force: -stick.tangential_velocity * (k * stick.dt),
+            },
+            TangentialExample {
+                law: TangentialLaw::CundallStrack(CundallStrack { stiffness: 1e6 }),
+                input: slide,
+                force: registry::sliding_force(&slide),
+            },
+        ]
+    }
+
+    fn check(&self, path: &str, _: Roles, e: &mut Errors) {
+        e.positive(format!("{path}.stiffness"), self.stiffness);
+    }
 
     #[inline(always)]
     fn force(&self, input: &TangentialInput, spring: &mut Vec3) -> Vec3 {

@@ -34,9 +34,12 @@
 //! law and damping when the law is built. See docs/liggghts.md.
 
 use super::mindlin_no_slip::mindlin_no_slip_stiffness;
-use super::{TangentialInput, TangentialModel};
-use crate::contact::damping::critical_damping;
+use super::{TangentialInput, TangentialLaw, TangentialModel};
+use crate::contact::registry::{self, TangentialExample};
 use crate::contact::damping::liggghts::LiggghtsModel;
+use crate::contact::damping::{Damping, critical_damping};
+use crate::contact::model::{Needs, Roles};
+use crate::error::Errors;
 
 use crate::particles::Vec3;
 
@@ -95,14 +98,107 @@ pub fn liggghts_history_force(
 /// LIGGGHTS 3.8 `tangential history`: k_t of the LIGGGHTS `model` (8G*√(R*δ) for
 /// hertz, k_n for hooke) and γ_t = ξ·2√(m* k_t) with ξ the normal damping's
 /// (`liggghts_restitution`, 0 without damping). State: the shear displacement, m.
-#[derive(Clone, Copy, Debug, PartialEq)]
+///
+/// The scene gives no parameters (`{"law": "liggghts_history", "friction": μ}`): the
+/// model and ξ are bound from the other roles by `ContactLaw::new` (`bound`); until
+/// then ξ is NaN, so an unbound law cannot run unnoticed.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
+#[serde(deny_unknown_fields)]
 pub struct LiggghtsHistory {
+    #[serde(skip)]
     pub model: LiggghtsModel,
+    #[serde(skip, default = "unbound")]
     pub xi: f64,
+}
+
+fn unbound() -> f64 {
+    f64::NAN
+}
+
+impl LiggghtsHistory {
+    /// The law beside the scene's normal law and damping: the LIGGGHTS model of the
+    /// normal law gives k_t, the ξ of `liggghts_restitution` (0 without damping) γ_t.
+    pub fn bound(&self, roles: Roles) -> Result<Self, Refused> {
+        let model = roles
+            .normal
+            .liggghts()
+            .ok_or_else(|| Refused::NormalLaw(unsupported_normal_law(roles.normal.name())))?;
+        let xi = match roles.damping {
+            None => 0.0,
+            Some(Damping::LiggghtsRestitution(d)) => {
+                d.with(roles.normal).map_err(Refused::NormalLaw)?.xi
+            }
+            Some(other) => return Err(Refused::Damping(unsupported_damping(other.name()))),
+        };
+        Ok(LiggghtsHistory { model, xi })
+    }
+}
+
+/// A combination of roles LIGGGHTS's `tangential history` is not defined with, and why.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Refused {
+    NormalLaw(String),
+    Damping(String),
 }
 
 impl TangentialModel for LiggghtsHistory {
     type State = Vec3;
+
+    fn name(&self) -> &'static str {
+        "liggghts_history"
+    }
+
+    /// From rest, sticking: F = −k_t v_t Δt with k_t = 8G*√(R*δ) (`model hertz`) or k_n
+    /// (`model hooke`), no damping (ξ = 0: with it LIGGGHTS's sticking force may leave
+    /// the cone, see the tests below); sliding: −μ|F_n| v̂_t.
+    fn examples() -> Vec<TangentialExample> {
+        let (stick, slide) = (registry::sticking_input(), registry::sliding_input());
+        let mut out = Vec::new();
+        for model in [LiggghtsModel::Hertz, LiggghtsModel::Hooke] {
+            let law = TangentialLaw::LiggghtsHistory(LiggghtsHistory { model, xi: 0.0 });
+            let k = match model {
+                LiggghtsModel::Hertz => {
+                    8.0 * stick.effective_shear_modulus
+                        * (stick.effective_radius * stick.overlap).sqrt()
+                }
+                LiggghtsModel::Hooke => stick.normal_stiffness,
+            };
+            out.push(TangentialExample {
+                law,
+                input: stick,
+                force: -stick.tangential_velocity * (k * stick.dt),
+            });
+            out.push(TangentialExample {
+                law,
+                input: slide,
+                force: registry::sliding_force(&slide),
+            });
+        }
+        out
+    }
+
+    fn needs(&self) -> Needs {
+        Needs {
+            rotation: Some(NEEDS_ROTATION),
+            ..Needs::default()
+        }
+    }
+
+    /// Left unbound (ξ NaN) beside roles validation refuses.
+    fn bind(&mut self, roles: Roles) {
+        if let Ok(bound) = self.bound(roles) {
+            *self = bound;
+        }
+    }
+
+    /// The normal law must be LIGGGHTS's, the damping absent or LIGGGHTS's.
+    fn check(&self, path: &str, roles: Roles, e: &mut Errors) {
+        match self.bound(roles) {
+            Ok(_) => {}
+            Err(Refused::NormalLaw(rule)) => e.push(format!("{path}.law"), rule),
+            Err(Refused::Damping(rule)) => e.push("contact.damping", rule),
+        }
+    }
 
     #[inline(always)]
     fn force(&self, input: &TangentialInput, shear: &mut Vec3) -> Vec3 {

@@ -19,7 +19,9 @@
 
 use super::incremental::spring_energy;
 use super::mindlin_no_slip::MindlinNoSlip;
-use super::{TangentialInput, TangentialModel};
+use super::{TangentialInput, TangentialLaw, TangentialModel};
+use crate::contact::registry::{self, TangentialExample};
+use crate::contact::model::Needs;
 
 use super::scalar_axis::{ScalarAxisState, TangentialBranch};
 use super::scalar_axis::{finish, split};
@@ -85,11 +87,41 @@ pub fn mindlin_deresiewicz_force(
 
 /// Zhong model VI. State: force, axis, branch, turning point and the previous
 /// normal force (`ScalarAxisState`).
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct MindlinDeresiewicz;
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Deserialize, serde::Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct MindlinDeresiewicz {}
 
 impl TangentialModel for MindlinDeresiewicz {
     type State = ScalarAxisState;
+
+    fn name(&self) -> &'static str {
+        "mindlin_deresiewicz"
+    }
+
+    /// First loading from rest with k Δs < μΔN: θ = 1, F = −8G*√(R*δ) v_t Δt (eq 19); sliding: −μF_n v̂_t.
+    fn examples() -> Vec<TangentialExample> {
+        let (stick, slide) = (registry::sticking_input(), registry::sliding_input());
+        let k = 8.0 * stick.effective_shear_modulus * (stick.effective_radius * stick.overlap).sqrt();
+        vec![
+            TangentialExample {
+                law: TangentialLaw::MindlinDeresiewicz(MindlinDeresiewicz {}),
+                input: stick,
+                force: -stick.tangential_velocity * (k * stick.dt),
+            },
+            TangentialExample {
+                law: TangentialLaw::MindlinDeresiewicz(MindlinDeresiewicz {}),
+                input: slide,
+                force: registry::sliding_force(&slide),
+            },
+        ]
+    }
+
+    fn needs(&self) -> Needs {
+        Needs {
+            elastic: Some(" (G*, Rojek eq 13)"),
+            ..Needs::default()
+        }
+    }
 
     #[inline(always)]
     fn force(&self, input: &TangentialInput, state: &mut ScalarAxisState) -> Vec3 {
@@ -106,7 +138,7 @@ impl TangentialModel for MindlinDeresiewicz {
 
     /// The initial (θ = 1) stiffness, 8 G* a (Mindlin no-slip).
     fn stiffness(&self, input: &TangentialInput) -> f64 {
-        MindlinNoSlip.stiffness(input)
+        MindlinNoSlip {}.stiffness(input)
     }
 
     fn energy(&self, input: &TangentialInput, state: &ScalarAxisState) -> f64 {

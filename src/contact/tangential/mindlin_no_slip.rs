@@ -11,7 +11,9 @@
 //! Stiffness for the time step: k_t at the current overlap.
 
 use super::incremental::{incremental_force, spring_energy};
-use super::{TangentialInput, TangentialModel};
+use super::{TangentialInput, TangentialLaw, TangentialModel};
+use crate::contact::registry::{self, TangentialExample};
+use crate::contact::model::Needs;
 use crate::particles::Vec3;
 
 pub fn mindlin_no_slip_stiffness(
@@ -23,11 +25,41 @@ pub fn mindlin_no_slip_stiffness(
 }
 
 /// Rojek eqs 11–14 (H-MDNs). State: the incremental tangential force, N.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct MindlinNoSlip;
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Deserialize, serde::Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct MindlinNoSlip {}
 
 impl TangentialModel for MindlinNoSlip {
     type State = Vec3;
+
+    fn name(&self) -> &'static str {
+        "mindlin_no_slip"
+    }
+
+    /// F = −8G*√(R*δ) v_t Δt from rest (Rojek eqs 11–13); sliding: −μF_n v̂_t.
+    fn examples() -> Vec<TangentialExample> {
+        let (stick, slide) = (registry::sticking_input(), registry::sliding_input());
+        let k = 8.0 * stick.effective_shear_modulus * (stick.effective_radius * stick.overlap).sqrt();
+        vec![
+            TangentialExample {
+                law: TangentialLaw::MindlinNoSlip(MindlinNoSlip {}),
+                input: stick,
+                force: -stick.tangential_velocity * (k * stick.dt),
+            },
+            TangentialExample {
+                law: TangentialLaw::MindlinNoSlip(MindlinNoSlip {}),
+                input: slide,
+                force: registry::sliding_force(&slide),
+            },
+        ]
+    }
+
+    fn needs(&self) -> Needs {
+        Needs {
+            elastic: Some(" (G*, Rojek eq 13)"),
+            ..Needs::default()
+        }
+    }
 
     #[inline(always)]
     fn force(&self, input: &TangentialInput, force: &mut Vec3) -> Vec3 {

@@ -15,6 +15,8 @@ pub mod storakers;
 pub mod walton_braun;
 
 pub use crate::contact::model::TangentialModel;
+use crate::contact::model::{Needs, Roles};
+use crate::error::Errors;
 use crate::particles::Vec3;
 pub use coulomb::Coulomb;
 pub use cundall_strack::CundallStrack;
@@ -23,9 +25,11 @@ pub use liggghts_history::LiggghtsHistory;
 pub use mindlin_deresiewicz::MindlinDeresiewicz;
 pub use mindlin_no_slip::MindlinNoSlip;
 
-/// The scene's tangential law. Each variant is the law's own type;
-/// `each_tangential!` is the one place that lists them.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// The scene's tangential law, read as `{"law": "<name>", <its parameters>}` (beside
+/// the friction coefficients, `scene::schema::FrictionSpec`). Each variant is the law's
+/// own type; this enum, `each_tangential!` and `TangentialLaw::examples` list them.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
+#[serde(tag = "law", rename_all = "snake_case")]
 pub enum TangentialLaw {
     /// Zhong model VI.
     MindlinDeresiewicz(MindlinDeresiewicz),
@@ -83,15 +87,21 @@ pub struct TangentialInput {
 
 impl TangentialLaw {
     pub fn name(&self) -> &'static str {
-        match self {
-            TangentialLaw::MindlinDeresiewicz(_) => "mindlin_deresiewicz",
-            TangentialLaw::Coulomb(_) => "coulomb",
-            TangentialLaw::HaffWerner(_) => "haff_werner",
-            TangentialLaw::CundallStrack(_) => "cundall_strack",
-            TangentialLaw::WaltonBraun(_) => "walton_braun",
-            TangentialLaw::MindlinNoSlip(_) => "mindlin_no_slip",
-            TangentialLaw::Storakers(_) => "storakers",
-            TangentialLaw::LiggghtsHistory(_) => "liggghts_history",
-        }
+        each_tangential!(self, t => t.name())
+    }
+
+    /// See `TangentialModel::needs`.
+    pub fn needs(&self) -> Needs {
+        each_tangential!(self, t => t.needs())
+    }
+
+    /// See `TangentialModel::check`.
+    pub fn check(&self, path: &str, roles: Roles, errors: &mut Errors) {
+        each_tangential!(self, t => t.check(path, roles, errors))
+    }
+
+    /// See `TangentialModel::bind`.
+    pub fn bind(&mut self, roles: Roles) {
+        each_tangential!(self, t => t.bind(roles))
     }
 }

@@ -9,7 +9,10 @@
 //! History: the tangential force vector (N). Stiffness for the time step: β k_n.
 
 use super::incremental::{incremental_force, spring_energy};
-use super::{TangentialInput, TangentialModel};
+use super::{TangentialInput, TangentialLaw, TangentialModel};
+use crate::contact::registry::{self, TangentialExample};
+use crate::contact::model::Roles;
+use crate::error::Errors;
 use crate::particles::Vec3;
 
 pub fn storakers_tangential_stiffness(beta: f64, normal_stiffness: f64) -> f64 {
@@ -17,13 +20,40 @@ pub fn storakers_tangential_stiffness(beta: f64, normal_stiffness: f64) -> f64 {
 }
 
 /// Rojek eq 21: k_t = β k_n. State: the incremental tangential force, N.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
+#[serde(deny_unknown_fields)]
 pub struct Storakers {
     pub beta: f64,
 }
 
 impl TangentialModel for Storakers {
     type State = Vec3;
+
+    fn name(&self) -> &'static str {
+        "storakers"
+    }
+
+    /// F = −β k_n v_t Δt from rest (Rojek eq 21, β = 1); sliding: −μF_n v̂_t.
+    fn examples() -> Vec<TangentialExample> {
+        let (stick, slide) = (registry::sticking_input(), registry::sliding_input());
+        let k = stick.normal_stiffness;
+        vec![
+            TangentialExample {
+                law: TangentialLaw::Storakers(Storakers { beta: 1.0 }),
+                input: stick,
+                force: -stick.tangential_velocity * (k * stick.dt),
+            },
+            TangentialExample {
+                law: TangentialLaw::Storakers(Storakers { beta: 1.0 }),
+                input: slide,
+                force: registry::sliding_force(&slide),
+            },
+        ]
+    }
+
+    fn check(&self, path: &str, _: Roles, e: &mut Errors) {
+        e.positive(format!("{path}.beta"), self.beta);
+    }
 
     #[inline(always)]
     fn force(&self, input: &TangentialInput, force: &mut Vec3) -> Vec3 {

@@ -13,7 +13,10 @@
 //! History: force vector, axis, direction, F*. Stiffness for the time step: k₀.
 
 use super::incremental::spring_energy;
-use super::{TangentialInput, TangentialModel};
+use super::{TangentialInput, TangentialLaw, TangentialModel};
+use crate::contact::registry::{self, TangentialExample};
+use crate::contact::model::Roles;
+use crate::error::Errors;
 
 use super::scalar_axis::{ScalarAxisState, TangentialBranch};
 use super::scalar_axis::{finish, split};
@@ -63,13 +66,40 @@ pub fn walton_braun_tangential_force(
 }
 
 /// Zhong model X; k₀ in N/m. State: `ScalarAxisState`.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
+#[serde(deny_unknown_fields)]
 pub struct WaltonBraun {
     pub stiffness: f64,
 }
 
 impl TangentialModel for WaltonBraun {
     type State = ScalarAxisState;
+
+    fn name(&self) -> &'static str {
+        "walton_braun"
+    }
+
+    /// From rest F* = F = 0, so k̃ = k₀ and F = −k₀ v_t Δt (eqs 26–27); sliding: −μF_n v̂_t.
+    fn examples() -> Vec<TangentialExample> {
+        let (stick, slide) = (registry::sticking_input(), registry::sliding_input());
+        let k = 1e6;
+        vec![
+            TangentialExample {
+                law: TangentialLaw::WaltonBraun(WaltonBraun { stiffness: 1e6 }),
+                input: stick,
+                force: -stick.tangential_velocity * (k * stick.dt),
+            },
+            TangentialExample {
+                law: TangentialLaw::WaltonBraun(WaltonBraun { stiffness: 1e6 }),
+                input: slide,
+                force: registry::sliding_force(&slide),
+            },
+        ]
+    }
+
+    fn check(&self, path: &str, _: Roles, e: &mut Errors) {
+        e.positive(format!("{path}.stiffness"), self.stiffness);
+    }
 
     #[inline(always)]
     fn force(&self, input: &TangentialInput, state: &mut ScalarAxisState) -> Vec3 {

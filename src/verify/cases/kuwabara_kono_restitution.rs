@@ -9,14 +9,15 @@
 use super::probe::binary_collision;
 use crate::error::{Result, TampError};
 use crate::material::effective_mass;
-use crate::scene::{self, schema::NormalSpec};
+use crate::contact::normal::{KuwabaraKono, NormalLaw};
+use crate::scene;
 use crate::verify::{CaseContext, Measured};
 
 const SPEEDS: [f64; 5] = [1e-3, 3e-3, 1e-2, 3e-2, 1e-1];
 
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let base = ctx.scene()?;
-    let NormalSpec::KuwabaraKono { dissipation_time } = base.contact.normal else {
+    let NormalLaw::KuwabaraKono(KuwabaraKono { dissipation_time }) = base.contact.normal else {
         return Err(TampError::Other("the scene must use kuwabara_kono".into()));
     };
     let mut points = Vec::new();

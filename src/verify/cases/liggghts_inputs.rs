@@ -4,7 +4,7 @@
 
 use crate::error::{Result, TampError};
 use crate::scene::Scene;
-use crate::scene::schema::TangentialLawName;
+use crate::contact::tangential::TangentialLaw;
 
 /// Collects "what: scene …, LIGGGHTS …" for inputs that differ by more than 1e-12.
 #[derive(Default)]
@@ -63,7 +63,7 @@ impl Mismatches {
     /// friction coefficient, solid-sphere spins, no gravity.
     pub fn check_history_runs(&mut self, scene: &Scene) {
         if !scene.contact.tangential.as_ref().is_some_and(|t| {
-            t.law == TangentialLawName::LiggghtsHistory && t.friction_pairs.is_empty()
+            matches!(t.law, TangentialLaw::LiggghtsHistory(_)) && t.friction_pairs.is_empty()
         }) {
             self.0.push(
                 "contact.tangential: LIGGGHTS ran tangential history, the scene needs law 'liggghts_history' with one friction".into(),

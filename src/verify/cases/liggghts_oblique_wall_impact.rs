@@ -20,9 +20,9 @@ use crate::error::{Result, TampError};
 use crate::output::plot::{Panel, Series, write_svg};
 use crate::scene::{
     self, Scene,
-    schema::DampingSpec,
     walls::{MotionSpec, ShapeSpec},
 };
+use crate::contact::damping::{Damping, LiggghtsRestitution};
 use crate::verify::{CaseContext, Measured};
 use serde::Deserialize;
 use std::fmt::Write as _;
@@ -60,7 +60,7 @@ fn mismatches(scene: &Scene, row: &Row) -> Mismatches {
     );
     out.check_history_runs(scene);
     match &scene.contact.damping {
-        Some(DampingSpec::LiggghtsRestitution { restitution }) => out.check(
+        Some(Damping::LiggghtsRestitution(LiggghtsRestitution { restitution })) => out.check(
             "contact.damping.restitution",
             *restitution,
             row.restitution_in,

@@ -15,8 +15,9 @@ use crate::material::{Material, effective_mass, effective_modulus, effective_rad
 use crate::measure::region::ball_volume;
 use crate::scene::{
     self, Scene,
-    schema::{DampingSpec, NormalSpec},
 };
+use crate::contact::damping::{Damping, LiggghtsRestitution};
+use crate::contact::normal::{Linear, NormalLaw};
 use crate::verify::{CaseContext, Measured};
 use serde::Deserialize;
 
@@ -77,7 +78,7 @@ fn mismatches(scene: &Scene, row: &Row, model: &str) -> Mismatches {
         .map(|k| (va[k] - vb[k]) * (b.position[k] - a.position[k]) / d)
         .sum();
     out.check("relative speed", approach, row.relative_speed);
-    if let NormalSpec::Linear { stiffness } = scene.contact.normal {
+    if let NormalLaw::Linear(Linear { stiffness }) = scene.contact.normal {
         // model hooke: the scene's k_n must be LIGGGHTS's stiffness at characteristicVelocity.
         let steel = Material {
             name: "LIGGGHTS type 1".into(),
@@ -108,9 +109,9 @@ fn run(ctx: &CaseContext, model: &str) -> Result<Vec<Measured>> {
     for row in ctx.liggghts_results()? {
         mismatches(&base, &row, model).refuse_any(&format!("e = {}", row.restitution_in))?;
         let mut s = base.clone();
-        s.contact.damping = Some(DampingSpec::LiggghtsRestitution {
+        s.contact.damping = Some(Damping::LiggghtsRestitution(LiggghtsRestitution {
             restitution: row.restitution_in,
-        });
+        }));
         let mut sim = scene::build(&s)?.sim;
         let c = binary_collision(&mut sim, 0, 1, 1_000_000)?;
         let e = row.restitution_in;

@@ -14,8 +14,9 @@ use crate::material::{Material, effective_mass, effective_modulus, effective_rad
 use crate::measure::region::ball_volume;
 use crate::scene::{
     self, Scene,
-    schema::{DampingSpec, NormalSpec},
 };
+use crate::contact::damping::{Damping, LiggghtsRestitution};
+use crate::contact::normal::{Hertz, Linear, NormalLaw};
 use crate::verify::{CaseContext, Measured};
 use serde::Deserialize;
 
@@ -83,14 +84,14 @@ fn mismatches(scene: &Scene, row: &Row) -> Mismatches {
 /// The scene of one LIGGGHTS row: its restitution, friction and normal model.
 fn scene_of(base: &Scene, row: &Row) -> Result<Scene> {
     let mut s = base.clone();
-    s.contact.damping = Some(DampingSpec::LiggghtsRestitution {
+    s.contact.damping = Some(Damping::LiggghtsRestitution(LiggghtsRestitution {
         restitution: row.restitution_in,
-    });
+    }));
     if let Some(t) = s.contact.tangential.as_mut() {
         t.friction = row.friction;
     }
     s.contact.normal = match row.model.as_str() {
-        "hertz" => NormalSpec::Hertz {},
+        "hertz" => NormalLaw::Hertz(Hertz {}),
         "hooke" => {
             // model hooke: k_n from the materials and characteristicVelocity.
             let steel = Material {
@@ -101,14 +102,14 @@ fn scene_of(base: &Scene, row: &Row) -> Result<Scene> {
                 hollomon: None,
             };
             let mass = row.density * ball_volume(row.radius);
-            NormalSpec::Linear {
+            NormalLaw::Linear(Linear {
                 stiffness: hooke_stiffness(
                     effective_mass(mass, mass),
                     effective_radius(row.radius, row.radius),
                     effective_modulus(&steel, &steel).expect("both elastic constants are given"),
                     row.characteristic_velocity,
                 ),
-            }
+            })
         }
         other => {
             return Err(TampError::Other(format!(

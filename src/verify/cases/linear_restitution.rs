@@ -7,18 +7,20 @@ use super::probe::binary_collision;
 use crate::contact::normal::linear::LinearCollision;
 use crate::error::Result;
 use crate::material::effective_mass;
-use crate::scene::{self, schema::DampingSpec, schema::NormalSpec};
+use crate::contact::damping::{Constant, Damping};
+use crate::contact::normal::{Linear, NormalLaw};
+use crate::scene;
 use crate::verify::{CaseContext, Measured};
 
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let base = ctx.scene()?;
-    let NormalSpec::Linear { stiffness } = base.contact.normal else {
+    let NormalLaw::Linear(Linear { stiffness }) = base.contact.normal else {
         return Err(crate::TampError::Other(
             "linear_restitution needs the linear law".into(),
         ));
     };
     let gamma = match base.contact.damping {
-        Some(DampingSpec::Constant { gamma_n }) => gamma_n,
+        Some(Damping::Constant(Constant { gamma_n })) => gamma_n,
         _ => {
             return Err(crate::TampError::Other(
                 "linear_restitution needs constant damping".into(),
@@ -28,7 +30,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let mut out = Vec::new();
     for (suffix, gamma_n) in [("", gamma), ("_undamped", 0.0)] {
         let mut s = base.clone();
-        s.contact.damping = (gamma_n > 0.0).then_some(DampingSpec::Constant { gamma_n });
+        s.contact.damping = (gamma_n > 0.0).then_some(Damping::Constant(Constant { gamma_n }));
         let mut sim = scene::build(&s)?.sim;
         let p = &sim.particles;
         let m_eff = effective_mass(p.mass[0], p.mass[1]);

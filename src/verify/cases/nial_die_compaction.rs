@@ -35,7 +35,9 @@ use crate::checkpoint::{self, Checkpoint};
 use crate::error::{Result, TampError};
 use crate::output::plot::{Panel, Series, write_svg};
 use crate::process::die_compaction::{self, PressRecord, PressState, Pressing, Specimen};
-use crate::scene::schema::{HollomonSpec, NormalSpec, Scene, TangentialLawName};
+use crate::contact::normal::{NormalLaw, Storakers};
+use crate::contact::tangential::{TangentialLaw, storakers};
+use crate::scene::schema::{HollomonSpec, Scene};
 use crate::verify::{CaseContext, Measured};
 use serde::{Deserialize, Serialize, de::DeserializeOwned};
 use std::f64::consts::PI;
@@ -121,11 +123,10 @@ fn with_model(scene: &Scene, model: &Model) -> Result<Scene> {
     })?;
     tangential.friction = model.friction;
     if let Some((m, sigma0)) = model.storakers {
-        s.contact.normal = NormalSpec::Storakers {
+        s.contact.normal = NormalLaw::Storakers(Storakers {
             min_with_hertz: false,
-        };
-        tangential.law = TangentialLawName::Storakers;
-        tangential.beta = Some(1.0);
+        });
+        tangential.law = TangentialLaw::Storakers(storakers::Storakers { beta: 1.0 });
         for material in &mut s.materials {
             material.hollomon = Some(HollomonSpec {
                 exponent: m,

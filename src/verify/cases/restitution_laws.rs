@@ -5,22 +5,23 @@
 
 use super::probe::binary_collision;
 use crate::error::{Result, TampError};
-use crate::scene::{self, schema::NormalSpec};
+use crate::contact::normal::{Hysteretic, NormalLaw, WaltonBraun};
+use crate::scene;
 use crate::verify::{CaseContext, Measured};
 
 pub fn walton_braun(ctx: &CaseContext) -> Result<Vec<Measured>> {
     restitution_against(ctx, "walton_braun", |law| match *law {
-        NormalSpec::WaltonBraun {
+        NormalLaw::WaltonBraun(WaltonBraun {
             loading_stiffness,
             unloading_stiffness,
-        } => Some((loading_stiffness / unloading_stiffness).sqrt()),
+        }) => Some((loading_stiffness / unloading_stiffness).sqrt()),
         _ => None,
     })
 }
 
 pub fn hysteretic(ctx: &CaseContext) -> Result<Vec<Measured>> {
     restitution_against(ctx, "hysteretic", |law| match *law {
-        NormalSpec::Hysteretic { hysteresis, .. } => {
+        NormalLaw::Hysteretic(Hysteretic { hysteresis, .. }) => {
             Some(((1.0 - hysteresis) / (1.0 + hysteresis)).sqrt())
         }
         _ => None,
@@ -32,7 +33,7 @@ pub fn hysteretic(ctx: &CaseContext) -> Result<Vec<Measured>> {
 fn restitution_against(
     ctx: &CaseContext,
     law: &str,
-    closed_form: fn(&NormalSpec) -> Option<f64>,
+    closed_form: fn(&NormalLaw) -> Option<f64>,
 ) -> Result<Vec<Measured>> {
     let scene = ctx.scene()?;
     let expected = closed_form(&scene.contact.normal)

@@ -5,7 +5,8 @@
 //! papers' equations independently of `crate::contact`.
 
 use crate::error::{Result, TampError};
-use crate::scene::schema::{HollomonSpec, NormalSpec, Scene};
+use crate::contact::normal::{NormalLaw, Storakers};
+use crate::scene::schema::{HollomonSpec, Scene};
 
 /// (quantity suffix, Hollomon exponent; `None` = Hertz).
 pub const MODELS: [(&str, Option<f64>); 4] = [
@@ -20,9 +21,9 @@ pub const MODELS: [(&str, Option<f64>); 4] = [
 pub fn with_model(base: &Scene, exponent: Option<f64>) -> Scene {
     let mut s = base.clone();
     if let Some(m) = exponent {
-        s.contact.normal = NormalSpec::Storakers {
+        s.contact.normal = NormalLaw::Storakers(Storakers {
             min_with_hertz: false,
-        };
+        });
         for mat in &mut s.materials {
             if let Some(h) = &mat.hollomon {
                 mat.hollomon = Some(HollomonSpec {

@@ -22,7 +22,8 @@
 
 use crate::error::Result;
 use crate::measure::{Region, packing::packing_fraction};
-use crate::scene::schema::{RotationSpec, TangentialLawName, TangentialSpec};
+use crate::contact::tangential::{CundallStrack, TangentialLaw};
+use crate::scene::schema::{FrictionSpec, RotationSpec};
 use crate::scene::{self, Scene};
 use crate::verify::{CaseContext, Measured};
 
@@ -48,13 +49,10 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let scene = ctx.scene()?;
     let frictionless = interior_packing_fraction(&scene)?;
     let mut frictional = scene.clone();
-    frictional.contact.tangential = Some(TangentialSpec {
-        law: TangentialLawName::CundallStrack,
+    frictional.contact.tangential = Some(FrictionSpec {
+        law: TangentialLaw::CundallStrack(CundallStrack { stiffness: 1e7 }),
         friction: 0.5,
         friction_pairs: Vec::new(),
-        stiffness: Some(1e7),
-        damping: None,
-        beta: None,
     });
     frictional.rotation = Some(RotationSpec { inertia_scale: 1.0 });
     let with_friction = interior_packing_fraction(&frictional)?;

@@ -10,20 +10,24 @@
 use crate::error::{Result, TampError};
 use crate::scene::{
     self,
-    schema::{TangentialLawName, TangentialSpec},
+    schema::FrictionSpec,
+};
+use crate::contact::tangential::{
+    Coulomb, CundallStrack, HaffWerner, MindlinDeresiewicz, MindlinNoSlip, TangentialLaw,
+    storakers, walton_braun,
 };
 use crate::verify::{CaseContext, Measured};
 
 /// Each law with its own parameter where it has one (stiffness about half the
 /// normal Hertz stiffness at peak; γ_s large enough to stay on the Coulomb cap).
-const LAWS: [(TangentialLawName, Option<f64>); 7] = [
-    (TangentialLawName::MindlinDeresiewicz, None),
-    (TangentialLawName::Coulomb, None),
-    (TangentialLawName::HaffWerner, Some(100.0)),
-    (TangentialLawName::CundallStrack, Some(2e6)),
-    (TangentialLawName::WaltonBraun, Some(2e6)),
-    (TangentialLawName::MindlinNoSlip, None),
-    (TangentialLawName::Storakers, Some(1.0)),
+const LAWS: [TangentialLaw; 7] = [
+    TangentialLaw::MindlinDeresiewicz(MindlinDeresiewicz {}),
+    TangentialLaw::Coulomb(Coulomb {}),
+    TangentialLaw::HaffWerner(HaffWerner { damping: 100.0 }),
+    TangentialLaw::CundallStrack(CundallStrack { stiffness: 2e6 }),
+    TangentialLaw::WaltonBraun(walton_braun::WaltonBraun { stiffness: 2e6 }),
+    TangentialLaw::MindlinNoSlip(MindlinNoSlip {}),
+    TangentialLaw::Storakers(storakers::Storakers { beta: 1.0 }),
 ];
 
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
@@ -35,15 +39,12 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         .map(|t| t.friction)
         .ok_or_else(|| TampError::Other("the scene must name a tangential law".into()))?;
     let mut out = Vec::new();
-    for (law, parameter) in LAWS {
+    for law in LAWS {
         let mut s = base.clone();
-        s.contact.tangential = Some(TangentialSpec {
+        s.contact.tangential = Some(FrictionSpec {
             law,
             friction,
             friction_pairs: Vec::new(),
-            stiffness: parameter.filter(|_| law.parameter() == Some("stiffness")),
-            damping: parameter.filter(|_| law.parameter() == Some("damping")),
-            beta: parameter.filter(|_| law.parameter() == Some("beta")),
         });
         let mut sim = scene::build(&s)?.sim;
         let v0 = sim.particles.velocity[0];

@@ -8,18 +8,19 @@
 
 use crate::contact::normal::hertz::hertz_overlap_at_force;
 use crate::error::{Result, TampError};
-use crate::scene::{self, schema::CohesionSpec};
+use crate::contact::van_der_waals::{Cohesion, VanDerWaals};
+use crate::scene;
 use crate::verify::{CaseContext, Measured};
 
 const GAPS: [(&str, f64); 3] = [("1nm", 1e-9), ("10nm", 1e-8), ("50nm", 5e-8)];
 
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let base = ctx.scene()?;
-    let Some(CohesionSpec::VanDerWaals {
+    let Some(Cohesion::VanDerWaals(VanDerWaals {
         hamaker,
         min_separation,
         ..
-    }) = base.contact.cohesion
+    })) = base.contact.cohesion
     else {
         return Err(TampError::Other("the scene must enable cohesion".into()));
     };

@@ -1,0 +1,140 @@
+//! The registry of laws: each law's closed-form examples, evaluated at one reference
+//! contact. Every harness takes its laws from here (tests/contact_laws.rs,
+//! tests/properties.rs, `benches/contact_laws.rs`, `tamp study stable-alpha`), so a
+//! law enrols in all of them by registering its examples; a role enum's variant with
+//! no example fails `every_law_has_a_closed_form_example` (tests/contact_laws.rs).
+//!
+//! An example is data: a law with parameters, the state it is evaluated at, and the
+//! value the law's source gives there, written from the source's formula in the
+//! law's file (not by calling the law's own code).
+
+use super::model::TangentialInput;
+use super::normal::NormalLaw;
+use super::tangential::TangentialLaw;
+use crate::material::{Hollomon, PairProperties};
+use crate::particles::Vec3;
+
+/// The reference contact of every example: two steel-like spheres of R = 1 mm
+/// (R* = 0.5 mm), E* = 110 GPa, G* = 21 GPa, Hollomon σ0 = 1 GPa, m = 0.15, μ = 0.4.
+pub const EFFECTIVE_RADIUS: f64 = 5e-4;
+pub const EFFECTIVE_MASS: f64 = 1e-4;
+pub const EFFECTIVE_MODULUS: f64 = 1.1e11;
+pub const EFFECTIVE_SHEAR_MODULUS: f64 = 2.1e10;
+pub const FRICTION: f64 = 0.4;
+pub const HOLLOMON: Hollomon = Hollomon {
+    strength: 1e9,
+    exponent: 0.15,
+};
+
+/// The material pair of the reference contact.
+pub fn pair() -> PairProperties {
+    PairProperties {
+        effective_modulus: Some(EFFECTIVE_MODULUS),
+        effective_shear_modulus: Some(EFFECTIVE_SHEAR_MODULUS),
+        hollomon: Some(HOLLOMON),
+        friction: FRICTION,
+    }
+}
+
+/// A normal law's closed form: the force of a fresh contact at the reference pair,
+/// loaded to `overlap` at the rate `rate` (> 0: approaching).
+#[derive(Clone, Copy, Debug)]
+pub struct NormalExample {
+    pub law: NormalLaw,
+    pub overlap: f64,
+    pub rate: f64,
+    /// What the law's source gives, N.
+    pub force: f64,
+}
+
+/// A tangential law's closed form: the force after one step from a fresh state.
+#[derive(Clone, Copy, Debug)]
+pub struct TangentialExample {
+    pub law: TangentialLaw,
+    pub input: TangentialInput,
+    /// What the law's source gives, N.
+    pub force: Vec3,
+}
+
+/// The reference contact at overlap 1 µm, carrying a normal force of 3 N (the Hertz
+/// force there is 3.3 N) with tangent stiffness 2 MN/m, sliding at `velocity` over
+/// one step `dt`.
+pub fn tangential_input(velocity: Vec3, dt: f64) -> TangentialInput {
+    TangentialInput {
+        normal: Vec3::z(),
+        tangential_velocity: velocity,
+        dt,
+        friction: FRICTION,
+        normal_force: 3.0,
+        normal_stiffness: 2e6,
+        overlap: 1e-6,
+        effective_radius: EFFECTIVE_RADIUS,
+        effective_shear_modulus: EFFECTIVE_SHEAR_MODULUS,
+        effective_mass: EFFECTIVE_MASS,
+    }
+}
+
+/// A step that sticks for every spring law (k Δs ≪ μF_n): 10 mm/s over 1 µs.
+pub fn sticking_input() -> TangentialInput {
+    tangential_input(Vec3::new(6e-3, -8e-3, 0.0), 1e-6)
+}
+
+/// A step that slides for every law (k Δs ≫ μF_n): 1 m/s over 10 µs.
+pub fn sliding_input() -> TangentialInput {
+    tangential_input(Vec3::new(0.6, 0.8, 0.0), 1e-5)
+}
+
+/// Coulomb's limit at the reference contact, opposing the slip: −μF_n v̂_t.
+pub fn sliding_force(input: &TangentialInput) -> Vec3 {
+    -input.tangential_velocity.normalize() * (input.friction * input.normal_force)
+}
+
+/// Every normal law's examples, in the order of `NormalLaw`.
+pub fn normal_examples() -> Vec<NormalExample> {
+    use super::normal::*;
+    [
+        Linear::examples(),
+        Hertz::examples(),
+        KuwabaraKono::examples(),
+        WaltonBraun::examples(),
+        Hysteretic::examples(),
+        Storakers::examples(),
+    ]
+    .concat()
+}
+
+/// Every tangential law's examples, in the order of `TangentialLaw`.
+pub fn tangential_examples() -> Vec<TangentialExample> {
+    use super::tangential::*;
+    [
+        MindlinDeresiewicz::examples(),
+        Coulomb::examples(),
+        HaffWerner::examples(),
+        CundallStrack::examples(),
+        walton_braun::WaltonBraun::examples(),
+        MindlinNoSlip::examples(),
+        storakers::Storakers::examples(),
+        LiggghtsHistory::examples(),
+    ]
+    .concat()
+}
+
+/// The registered normal laws, each once (the parameters of its first example).
+pub fn normal_laws() -> Vec<NormalLaw> {
+    distinct(normal_examples().into_iter().map(|e| e.law))
+}
+
+/// The registered tangential laws, each once (the parameters of its first example).
+pub fn tangential_laws() -> Vec<TangentialLaw> {
+    distinct(tangential_examples().into_iter().map(|e| e.law))
+}
+
+fn distinct<L: PartialEq>(laws: impl Iterator<Item = L>) -> Vec<L> {
+    let mut out: Vec<L> = Vec::new();
+    for law in laws {
+        if !out.contains(&law) {
+            out.push(law);
+        }
+    }
+    out
+}
