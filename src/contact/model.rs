@@ -16,6 +16,7 @@ use crate::contact::damping::Damping;
 use crate::contact::damping::liggghts::LiggghtsModel;
 use crate::contact::normal::NormalLaw;
 use crate::contact::registry::{NormalExample, TangentialExample};
+use crate::contact::states::ContactStates;
 use crate::contact::{ContactForce, ContactGeometry};
 use crate::error::Errors;
 use crate::material::PairProperties;
@@ -320,7 +321,7 @@ pub type StateOf<N, T> = Composite<<N as NormalModel>::State, <T as TangentialMo
 
 impl<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel> Composed<N, D, T, C> {
     /// Whether contacts keep anything between steps.
-    pub const HAS_STATE: bool = std::mem::size_of::<StateOf<N, T>>() > 0;
+    pub const HAS_STATE: bool = ContactStates::<StateOf<N, T>>::KEPT;
 
     #[inline(always)]
     fn tangential_input(
