@@ -262,11 +262,15 @@ fn main() -> ExitCode {
     }
 }
 
-/// Whether a scene file holds a `die_compaction` block (its errors, if any, are
-/// reported by the run that follows).
+/// Whether a scene file's (first) JSON object holds a `die_compaction` block; its
+/// errors, trailing data included, are reported by the run that follows.
 fn is_die_compaction(scene: &std::path::Path) -> bool {
     std::fs::read_to_string(scene)
         .ok()
-        .and_then(|text| serde_json::from_str::<serde_json::Value>(&text).ok())
+        .and_then(|text| {
+            let mut documents =
+                serde_json::Deserializer::from_str(&text).into_iter::<serde_json::Value>();
+            documents.next().and_then(|first| first.ok())
+        })
         .is_some_and(|v| v.get("die_compaction").is_some())
 }

@@ -450,3 +450,38 @@ fn liggghts_history_takes_its_model_and_damping_from_the_scene() {
         );
     }
 }
+
+/// Issue 27, class 3: data after the scene's JSON is an error naming where it starts,
+/// not silently dropped (two documents, a word after the brace, and a die-compaction
+/// file, which must not be taken for a plain scene either).
+#[test]
+fn trailing_data_after_the_scene_is_named() {
+    let text = base().to_string();
+    for tail in [" {\"name\": \"second\"}", "\nrun", " ]"] {
+        let (code, stderr) = run_text(&format!("{text}{tail}"));
+        assert_eq!(code, 2, "{tail:?}: {stderr}");
+        assert!(
+            stderr.contains("scene: trailing data after the scene's JSON at line"),
+            "{tail:?}: {stderr}"
+        );
+    }
+    let die: Value =
+        serde_json::from_str(include_str!("../verification/nial_die_compaction_small.scene.json"))
+            .unwrap();
+    let (code, stderr) = run_text(&format!("{die} junk"));
+    assert_eq!(code, 2, "{stderr}");
+    assert!(stderr.contains("trailing data"), "{stderr}");
+}
+
+/// Issue 27, class 8: a byte-order mark is named, and a syntax error names the
+/// scene rather than the path `?`.
+#[test]
+fn byte_order_mark_and_syntax_errors_are_named() {
+    let (code, stderr) = run_text(&format!("\u{feff}{}", base()));
+    assert_eq!(code, 2, "{stderr}");
+    assert!(stderr.contains("byte-order mark"), "{stderr}");
+    let (code, stderr) = run_text("{\"name\": \"x\",,}");
+    assert_eq!(code, 2, "{stderr}");
+    assert!(!stderr.contains("?:"), "{stderr}");
+    assert!(stderr.contains("scene: malformed JSON"), "{stderr}");
+}

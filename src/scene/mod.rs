@@ -12,13 +12,21 @@ pub use schema::Scene;
 use crate::error::{Result, TampError};
 use sha2::{Digest, Sha256};
 
-/// Parse scene JSON text. Errors name the JSON path (`particles[3].radius`) and the rule.
+/// Parse scene JSON text. Errors name the JSON path (`particles[3].radius`) and the rule;
+/// anything after the scene's JSON is an error too, not ignored.
 pub fn parse(text: &str) -> Result<Scene> {
+    if text.starts_with('\u{feff}') {
+        return Err(TampError::input(
+            "scene",
+            "starts with a UTF-8 byte-order mark (U+FEFF), which JSON does not allow; save the file without it",
+        ));
+    }
     let de = &mut serde_json::Deserializer::from_str(text);
-    let scene: Scene = serde_path_to_error::deserialize(de).map_err(|e| {
+    let scene: Scene = serde_path_to_error::deserialize(&mut *de).map_err(|e| {
         let path = e.path().to_string();
         let inner = e.into_inner();
-        let path = if path == "." {
+        // `.` is the top level; `?` is where a syntax error left the path unknown.
+        let path = if path == "." || path == "?" {
             "scene".to_string()
         } else {
             path
@@ -29,6 +37,16 @@ pub fn parse(text: &str) -> Result<Scene> {
             inner.to_string()
         };
         TampError::input(path, rule)
+    })?;
+    de.end().map_err(|e| {
+        TampError::input(
+            "scene",
+            format!(
+                "trailing data after the scene's JSON at line {} column {}: a scene file holds one JSON object",
+                e.line(),
+                e.column()
+            ),
+        )
     })?;
     validate::validate(&scene)?;
     Ok(scene)
