@@ -7,6 +7,7 @@
 //! Prescribed particles keep their velocity and are only drifted.
 
 use crate::particles::{Particles, Vec3};
+use crate::space::Space;
 
 /// Half kick of the free particles' velocities, and of their spins when rotation is
 /// on (one pass over the particles); prescribed particles keep their velocity.
@@ -40,4 +41,98 @@ pub fn first_non_finite(p: &Particles) -> Option<usize> {
             && p.velocity[i].iter().all(|c| c.is_finite())
             && p.omega[i].iter().all(|c| c.is_finite()))
     })
+}
+
+/// What `kick_and_check` saw at the end of a step.
+#[derive(Clone, Copy, Debug)]
+pub struct Kicked {
+    /// Whether every position, velocity and spin is finite.
+    pub finite: bool,
+    /// Power the contact forces take from the prescribed particles, −Σ F·v over
+    /// them in index order (the particles' part of `Simulation::prescribed_power`).
+    pub driven_power: f64,
+}
+
+/// The first half kick, the drift and the periodic wrap of a step in one pass over
+/// the particles: for each, `kick`, then `drift`, then `Space::wrap`, the same
+/// operations as the three passes one after the other. Returns the work of gravity
+/// over the drift, summed in index order as `drift` sums it.
+pub fn kick_drift_wrap(
+    p: &mut Particles,
+    half_dt: f64,
+    dt: f64,
+    rotation: bool,
+    gravity: Option<&Vec3>,
+    space: &Space,
+) -> f64 {
+    let n = p.len();
+    let periodic = space.is_periodic();
+    let (position, velocity, omega) = (
+        &mut p.position[..n],
+        &mut p.velocity[..n],
+        &mut p.omega[..n],
+    );
+    let (force, torque, mass, inertia, prescribed) = (
+        &p.force[..n],
+        &p.torque[..n],
+        &p.mass[..n],
+        &p.inertia[..n],
+        &p.prescribed[..n],
+    );
+    let mut work = 0.0;
+    for i in 0..n {
+        if !prescribed[i] {
+            velocity[i] += force[i] * (half_dt / mass[i]);
+            if rotation {
+                omega[i] += torque[i] * (half_dt / inertia[i]);
+            }
+        }
+        let dx = velocity[i] * dt;
+        if let (Some(g), false) = (gravity, prescribed[i]) {
+            work += mass[i] * g.dot(&dx);
+        }
+        position[i] += dx;
+        if periodic {
+            space.wrap(&mut position[i]);
+        }
+    }
+    work
+}
+
+/// The second half kick of a step (`kick`) in one pass with the checks that follow
+/// it: whether every position, velocity and spin is finite (`first_non_finite`
+/// finds which one is not), and the power of the contact forces on the prescribed
+/// particles.
+pub fn kick_and_check(p: &mut Particles, half_dt: f64, rotation: bool) -> Kicked {
+    let n = p.len();
+    let (velocity, omega) = (&mut p.velocity[..n], &mut p.omega[..n]);
+    let (position, force, torque, mass, inertia, prescribed) = (
+        &p.position[..n],
+        &p.force[..n],
+        &p.torque[..n],
+        &p.mass[..n],
+        &p.inertia[..n],
+        &p.prescribed[..n],
+    );
+    let mut finite = true;
+    // `Sum` of f64 starts from −0.0; so does this sum, term by term the same.
+    let mut driven_power = -0.0;
+    for i in 0..n {
+        if prescribed[i] {
+            driven_power += -force[i].dot(&velocity[i]);
+        } else {
+            velocity[i] += force[i] * (half_dt / mass[i]);
+            if rotation {
+                omega[i] += torque[i] * (half_dt / inertia[i]);
+            }
+        }
+        // `&`, not `&&`: no branch per component.
+        for v in [&position[i], &velocity[i], &omega[i]] {
+            finite &= v.x.is_finite() & v.y.is_finite() & v.z.is_finite();
+        }
+    }
+    Kicked {
+        finite,
+        driven_power,
+    }
 }

@@ -30,11 +30,26 @@ use crate::timestep::critical_time_step;
 /// Effective mass of a pair; a prescribed particle moves whatever the force, so it
 /// counts as infinitely heavy, like a wall.
 #[inline(always)]
-fn contact_mass(p: &Particles, i: usize, j: usize) -> f64 {
-    match (p.prescribed[i], p.prescribed[j]) {
-        (false, true) => p.mass[i],
-        (true, false) => p.mass[j],
-        _ => effective_mass(p.mass[i], p.mass[j]),
+fn contact_mass(mass: &[f64], prescribed: &[bool], i: usize, j: usize) -> f64 {
+    match (prescribed[i], prescribed[j]) {
+        (false, true) => mass[i],
+        (true, false) => mass[j],
+        _ => effective_mass(mass[i], mass[j]),
+    }
+}
+
+/// Set every particle's force to its weight, zero plus m g for a free particle (the
+/// same sum as zeroing the force and calling `add_weights`) and zero for a
+/// prescribed one, in one pass.
+fn set_weights(p: &mut Particles, g: Vec3) {
+    let n = p.len();
+    let (force, mass, prescribed) = (&mut p.force[..n], &p.mass[..n], &p.prescribed[..n]);
+    for ((f, &m), &fixed) in force.iter_mut().zip(mass).zip(prescribed) {
+        *f = if fixed {
+            Vec3::zeros()
+        } else {
+            Vec3::zeros() + g * m
+        };
     }
 }
 
@@ -194,6 +209,9 @@ pub struct Simulation {
     pub(crate) states: Box<dyn StateStore>,
     /// Scratch list of the contacts of one particle with one boundary.
     scratch: Vec<ShapeContact>,
+    /// Scratch list of the neighbour-list pairs within reach of the law at this
+    /// step, with their separation: (index in the list, x_i − x_j).
+    near: Vec<(u32, Vec3)>,
     /// Force the particles exert on each wall at the current step, N.
     pub wall_force: Vec<Vec3>,
     pub limits: StabilityLimits,
@@ -247,6 +265,7 @@ impl Simulation {
             neighbors,
             states,
             scratch: Vec::new(),
+            near: Vec::new(),
             limits,
             external_work: 0.0,
             external_work_scale: 0.0,
@@ -270,22 +289,23 @@ impl Simulation {
 
     pub fn step(&mut self) -> Result<()> {
         let dt = self.dt;
-        integrate::kick(&mut self.particles, 0.5 * dt, self.rotation);
         let growing = self.is_growing();
         let gravity = self.active_gravity();
-        let gravity_work = integrate::drift(&mut self.particles, dt, gravity.as_ref());
+        let space = self.neighbors.space;
+        // Half kick, drift and periodic wrap, in one pass over the particles.
+        let gravity_work = integrate::kick_drift_wrap(
+            &mut self.particles,
+            0.5 * dt,
+            dt,
+            self.rotation,
+            gravity.as_ref(),
+            &space,
+        );
         if let Some(growth) = self.growth.filter(|_| growing) {
             let f = growth.fraction(self.time + dt);
             for (r, target) in self.particles.radius.iter_mut().zip(&self.target_radius) {
                 *r = target * f;
             }
-        }
-        let space = self.neighbors.space;
-        if space.is_periodic() {
-            self.particles
-                .position
-                .iter_mut()
-                .for_each(|x| space.wrap(x));
         }
         for (wall, force) in self.walls.iter_mut().zip(&self.wall_force) {
             if let Err(what) = wall.advance(self.time, dt, force) {
@@ -298,22 +318,32 @@ impl Simulation {
             &mut *self.states,
         );
         self.compute_forces()?;
-        integrate::kick(&mut self.particles, 0.5 * dt, self.rotation);
+        // Half kick, the finiteness check and the prescribed particles' power, in
+        // one pass.
+        let kicked = integrate::kick_and_check(&mut self.particles, 0.5 * dt, self.rotation);
         self.step += 1;
         self.time += dt;
         if growing && !self.is_growing() {
             self.restart_energy_book();
         }
-        if self.sources.iter().any(|s| s.is_due(self.time)) {
+        let poured = self.sources.iter().any(|s| s.is_due(self.time));
+        if poured {
             self.pour()?;
         }
-        if let Some(i) = integrate::first_non_finite(&self.particles) {
+        // A pour added particles the pass above did not see: check them all again.
+        if (!kicked.finite || poured)
+            && let Some(i) = integrate::first_non_finite(&self.particles)
+        {
             return Err(self.unstable(format!(
                 "particle {i} has a non-finite position, velocity or spin"
             )));
         }
         // Trapezoidal work of prescribed bodies, exact for gravity.
-        let power = self.prescribed_power();
+        let power = if poured {
+            self.prescribed_power()
+        } else {
+            kicked.driven_power + self.walls_power()
+        };
         let step_work = 0.5 * dt * (self.external_power + power) + gravity_work;
         self.external_power = power;
         self.external_work += step_work;
@@ -467,19 +497,20 @@ impl Simulation {
         let gravity = self.active_gravity();
         let p = &mut self.particles;
         let n = p.len();
-        p.force.iter_mut().for_each(|f| *f = Vec3::zeros());
+        // Forces start from the weights (or zero), torques from zero, in one pass.
+        match gravity {
+            Some(g) => set_weights(p, g),
+            None => p.force.iter_mut().for_each(|f| *f = Vec3::zeros()),
+        }
         if ROT {
             p.torque.iter_mut().for_each(|t| *t = Vec3::zeros());
-        }
-        if let Some(g) = gravity {
-            add_weights(p, g);
         }
         let dt = self.dt;
         let max_fraction = self.limits.max_overlap_fraction;
         let mut worst = self.max_overlap_ratio;
         let torques = ROT && T::ACTIVE;
         let law_reach = law.cohesion.reach();
-        let space = self.neighbors.space;
+        let image = self.neighbors.space.minimum_image();
         let states = self
             .states
             .as_any_mut()
@@ -487,24 +518,70 @@ impl Simulation {
             .expect("the contact states were made for the scene's laws");
         let mut fresh = StateOf::<N, T>::default();
 
-        for (k, &(i, j)) in self.neighbors.pairs.iter().enumerate() {
+        // The particle arrays as slices of one length n, so that one bounds check
+        // per index covers them all, and none of them is re-read through `self`.
+        let Particles {
+            position,
+            velocity,
+            omega,
+            force,
+            torque,
+            radius,
+            mass,
+            material,
+            prescribed,
+            ..
+        } = p;
+        let (position, velocity, omega, radius, mass, material, prescribed) = (
+            &position[..n],
+            &velocity[..n],
+            &omega[..n],
+            &radius[..n],
+            &mass[..n],
+            &material[..n],
+            &prescribed[..n],
+        );
+        let (force, torque) = (&mut force[..n], &mut torque[..]);
+        let pairs = &self.neighbors.pairs[..];
+        let pair_states: &mut [StateOf<N, T>] = if kept {
+            &mut states.pairs[..pairs.len()]
+        } else {
+            &mut []
+        };
+
+        // Pass 1, over every pair of the list: the pairs within reach of their law,
+        // with their separation; the state of every other pair is reset (it is apart).
+        // Most pairs of a Verlet list are apart, and this loop is all they cost.
+        let mut near = std::mem::take(&mut self.near);
+        near.clear();
+        for (k, &(i, j)) in pairs.iter().enumerate() {
             let (i, j) = (i as usize, j as usize);
-            let d = space.displacement(&p.position[i], &p.position[j]);
-            let reach = p.radius[i] + p.radius[j];
-            let dist2 = d.norm_squared();
-            if dist2 >= (reach + law_reach).powi(2) {
+            let d = image.displacement(&position[i], &position[j]);
+            let reach = radius[i] + radius[j];
+            if d.norm_squared() >= (reach + law_reach).powi(2) {
                 if kept {
-                    states.pairs[k] = Default::default();
+                    pair_states[k] = Default::default();
                 }
-                continue;
+            } else {
+                near.push((k as u32, d));
             }
+        }
+
+        // Pass 2, over the pairs within reach, in the list's order (so forces are
+        // summed in the same order as by one loop over the list).
+        for &(k, d) in &near {
+            let k = k as usize;
+            let (i, j) = (pairs[k].0 as usize, pairs[k].1 as usize);
+            let reach = radius[i] + radius[j];
+            let dist2 = d.norm_squared();
             let dist = dist2.sqrt();
             let overlap = reach - dist;
-            let ratio = overlap / p.radius[i].min(p.radius[j]);
+            let ratio = overlap / radius[i].min(radius[j]);
             worst = worst.max(ratio);
             if dist == 0.0 {
                 // The build refuses coincident centres, and a pair driven together
                 // meets the overlap limit first unless it is at least (R_i + R_j)/R_min ≥ 2.
+                self.near = near;
                 return Err(self.unstable(format!(
                     "contact {i}-{j}: the centres coincide (overlap {overlap:.4e} m), so the contact normal is undefined"
                 )));
@@ -512,38 +589,43 @@ impl Simulation {
             let normal = d / dist;
             // Contact point in the middle of the overlap: the two lever arms add up to
             // the centre distance, so contact torques conserve angular momentum.
-            let lever_i = p.radius[i] - 0.5 * overlap;
-            let lever_j = p.radius[j] - 0.5 * overlap;
-            let mut relative_velocity = p.velocity[i] - p.velocity[j];
+            let lever_i = radius[i] - 0.5 * overlap;
+            let lever_j = radius[j] - 0.5 * overlap;
+            let mut relative_velocity = velocity[i] - velocity[j];
             if ROT {
                 relative_velocity -=
-                    p.omega[i].cross(&normal) * lever_i + p.omega[j].cross(&normal) * lever_j;
+                    omega[i].cross(&normal) * lever_i + omega[j].cross(&normal) * lever_j;
             }
             let g = ContactGeometry {
                 normal,
                 overlap,
-                effective_radius: effective_radius(p.radius[i], p.radius[j]),
-                effective_mass: contact_mass(p, i, j),
+                effective_radius: effective_radius(radius[i], radius[j]),
+                effective_mass: contact_mass(mass, prescribed, i, j),
                 relative_velocity,
             };
-            let pair = self.pair_table.get(p.material[i], p.material[j]);
+            let pair = self.pair_table.get(material[i], material[j]);
             let state = if kept {
-                &mut states.pairs[k]
+                &mut pair_states[k]
             } else {
                 &mut fresh
             };
             let (total, f) = match resolve(law, &g, ratio, max_fraction, pair, state, dt) {
                 Ok(forces) => forces,
-                Err(what) => return Err(self.unstable(format!("contact {i}-{j}: {what}"))),
+                Err(what) => {
+                    self.near = near;
+                    return Err(self.unstable(format!("contact {i}-{j}: {what}")));
+                }
             };
-            p.force[i] += total;
-            p.force[j] -= total;
+            force[i] += total;
+            force[j] -= total;
             if torques {
                 let t = -normal.cross(&f.tangential);
-                p.torque[i] += t * lever_i;
-                p.torque[j] += t * lever_j;
+                torque[i] += t * lever_i;
+                torque[j] += t * lever_j;
             }
         }
+        self.near = near;
+        let p = &mut self.particles;
 
         let mut found = std::mem::take(&mut self.scratch);
         for (w, wall) in self.walls.iter().enumerate() {
@@ -615,13 +697,16 @@ impl Simulation {
             .filter(|&i| p.prescribed[i])
             .map(|i| -p.force[i].dot(&p.velocity[i]))
             .sum();
-        let walls: f64 = self
-            .walls
+        driven + self.walls_power()
+    }
+
+    /// The walls' part of `prescribed_power`, W.
+    fn walls_power(&self) -> f64 {
+        self.walls
             .iter()
             .zip(&self.wall_force)
             .map(|(w, f)| -f.dot(&w.velocity))
-            .sum();
-        driven + walls
+            .sum()
     }
 
     /// Particle pairs closer than `beyond` to touching (overlap > −beyond):

@@ -289,6 +289,63 @@ fn search<const WRAP: bool>(levels: &[Level], margin: f64, space: &Space) -> Vec
             }
         }
     }
-    pairs.sort_unstable();
-    pairs
+    sort_pairs(pairs)
+}
+
+/// The pairs (i < j, no duplicates) in lexicographic order: a counting sort by i,
+/// then each i's few partners sorted by j. The same list `sort_unstable` makes
+/// (a sorted list of distinct pairs is unique), in time linear in the pairs
+/// instead of a comparison sort of the whole list.
+fn sort_pairs(pairs: Vec<(u32, u32)>) -> Vec<(u32, u32)> {
+    let Some(n) = pairs.iter().map(|&(i, _)| i as usize + 1).max() else {
+        return pairs;
+    };
+    let mut start = vec![0usize; n + 1];
+    for &(i, _) in &pairs {
+        start[i as usize + 1] += 1;
+    }
+    for b in 0..n {
+        start[b + 1] += start[b];
+    }
+    let mut fill = start.clone();
+    let mut sorted = vec![(0u32, 0u32); pairs.len()];
+    for &(i, j) in &pairs {
+        let slot = &mut fill[i as usize];
+        sorted[*slot] = (i, j);
+        *slot += 1;
+    }
+    for b in 0..n {
+        let run = &mut sorted[start[b]..start[b + 1]];
+        if run.len() > 1 {
+            run.sort_unstable_by_key(|&(_, j)| j);
+        }
+    }
+    sorted
+}
+
+#[cfg(test)]
+mod sort_tests {
+    use super::*;
+
+    #[test]
+    fn pairs_come_out_as_sort_unstable_leaves_them() {
+        let mut state = 12345u64;
+        let mut next = |m: u32| {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((state >> 33) % m as u64) as u32
+        };
+        let mut pairs = Vec::new();
+        for _ in 0..5000 {
+            let (a, b) = (next(300), next(300));
+            if a != b && !pairs.contains(&(a.min(b), a.max(b))) {
+                pairs.push((a.min(b), a.max(b)));
+            }
+        }
+        let mut expected = pairs.clone();
+        expected.sort_unstable();
+        assert_eq!(sort_pairs(pairs), expected);
+        assert!(sort_pairs(Vec::new()).is_empty());
+    }
 }

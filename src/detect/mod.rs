@@ -71,18 +71,27 @@ impl NeighborList {
     /// list can have come within reach (|Δx_i| + Δr_i ≤ skin/2 for both partners).
     pub fn update(&mut self, position: &[Vec3], radius: &[f64], states: &mut dyn StateStore) {
         let half_skin = 0.5 * self.skin;
-        let stale = self.reference_position.len() != position.len()
-            || (0..position.len()).any(|i| {
+        let n = position.len();
+        let stale = self.reference_position.len() != n || {
+            // Slices of one length n (one bounds check per index) and the
+            // nearest-image rule unpacked once (`MinimumImage`).
+            let image = self.space.minimum_image();
+            let (reference_position, reference_radius, radius) = (
+                &self.reference_position[..n],
+                &self.reference_radius[..n],
+                &radius[..n],
+            );
+            (0..n).any(|i| {
                 // What radius growth leaves of the skin for motion; squared distances
                 // keep the check free of square roots when nothing grows.
-                let budget = half_skin - (radius[i] - self.reference_radius[i]).max(0.0);
+                let budget = half_skin - (radius[i] - reference_radius[i]).max(0.0);
                 budget < 0.0
-                    || self
-                        .space
-                        .displacement(&position[i], &self.reference_position[i])
+                    || image
+                        .displacement(&position[i], &reference_position[i])
                         .norm_squared()
                         > budget * budget
-            });
+            })
+        };
         if stale {
             self.rebuild(position, radius, states);
         }

@@ -38,7 +38,7 @@ pub fn rotate_into_plane(spring: Vec3, normal: &Vec3) -> Vec3 {
 }
 
 /// One update of the spring and the resulting tangential force on particle i.
-#[inline]
+#[inline(always)]
 pub fn cundall_strack_force(
     spring: &mut Vec3,
     normal: &Vec3,
