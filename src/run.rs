@@ -45,6 +45,16 @@ fn write_frame(vtk_dir: &Path, index: usize, sim: &Simulation) -> Result<()> {
     output::write_atomic(&path, output::vtk::to_ascii(sim)?.as_bytes())
 }
 
+/// The files a run writes in its `--out` (VTK frames aside, `vtk/`).
+const OUTPUTS: &[&str] = &[
+    "summary.json",
+    "series.csv",
+    "quantities.csv",
+    "trajectory.csv",
+    CHECKPOINT,
+];
+const CHECKPOINT: &str = "checkpoint.json";
+
 pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool, resume: bool) -> Result<Summary> {
     let (scene, sha) = scene::load(scene_path)?;
     let checkpoint_every = scene.output.checkpoint_every;
@@ -54,7 +64,8 @@ pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool, resume: bool) -
         eprintln!("warning: {w}");
     }
     let mut sim = built.sim;
-    output::create_dir(out_dir)?;
+    let keep: &[&str] = if resume { &[CHECKPOINT] } else { &[] };
+    output::claim_dir(out_dir, scene_path, OUTPUTS, keep)?;
     let every = match scene.output.series_every {
         0 => (built.steps / 1000).max(1),
         n => n,
@@ -65,7 +76,7 @@ pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool, resume: bool) -
     if vtk_every > 0 {
         output::create_dir(&vtk_dir)?;
     }
-    let checkpoint_path = out_dir.join("checkpoint.json");
+    let checkpoint_path = out_dir.join(CHECKPOINT);
     let mut series = Series::new(&scene.output.series, &sim);
     let mut trajectory = String::new();
     let mut frames = 0usize;

@@ -318,3 +318,43 @@ fn study_accuracy_cost_sweeps_one_case_and_writes_the_page() {
             .exists()
     );
 }
+
+/// Issue 27, class 6: a run that fails in a directory holding an earlier run's
+/// outputs leaves none of them behind to be taken for its own, and a scene file
+/// inside `--out` named like an output is refused (exit 2), never overwritten.
+#[test]
+fn a_failed_run_leaves_no_earlier_outputs_and_never_overwrites_its_scene() {
+    let (_dir, scene, out) = scene_in_tempdir(&base());
+    let run = |scene: &std::path::Path| {
+        tamp(&[
+            "run",
+            scene.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+            "--quiet",
+        ])
+    };
+    assert_eq!(run(&scene).status.code(), Some(0));
+    for name in ["summary.json", "series.csv", "quantities.csv"] {
+        assert!(out.join(name).exists(), "{name}");
+    }
+    // The same directory, now for a run that goes unstable (ten times Δt_cr).
+    let mut unstable = base();
+    unstable["contact"]["damping"] = Value::Null;
+    unstable["particles"][0]["velocity"] = json!([0, 0, -1.0]);
+    unstable["time_step"] = json!({"fixed": 1.1e-4, "characteristic_velocity": 1.0, "alpha": 1.0});
+    let unstable_path = scene.with_file_name("unstable.json");
+    std::fs::write(&unstable_path, unstable.to_string()).unwrap();
+    assert_eq!(run(&unstable_path).status.code(), Some(3));
+    for name in ["summary.json", "series.csv", "quantities.csv", "trajectory.csv"] {
+        assert!(!out.join(name).exists(), "{name} of the earlier run survived");
+    }
+    // A scene inside --out under an output's name.
+    let inside = out.join("summary.json");
+    std::fs::write(&inside, base().to_string()).unwrap();
+    let o = run(&inside);
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("--out") && stderr.contains("summary.json"), "{stderr}");
+    assert_eq!(std::fs::read_to_string(&inside).unwrap(), base().to_string());
+}

@@ -29,6 +29,35 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
     })
 }
 
+/// Make `out_dir` this run's: create it, refuse (exit 2) if one of the run's output
+/// names would overwrite its `input`, and delete what an earlier run left under
+/// those names, except `keep` (a resumed run's checkpoint). A run that then fails
+/// leaves nothing that could be taken for its own result.
+pub fn claim_dir(out_dir: &Path, input: &Path, outputs: &[&str], keep: &[&str]) -> Result<()> {
+    create_dir(out_dir)?;
+    let input = std::fs::canonicalize(input).ok();
+    for name in outputs {
+        let path = out_dir.join(name);
+        if input.is_some() && std::fs::canonicalize(&path).ok() == input {
+            return Err(TampError::input(
+                "--out",
+                format!(
+                    "{} holds the scene file under the output name '{name}', which this run writes; choose another --out or move the scene",
+                    out_dir.display()
+                ),
+            ));
+        }
+    }
+    for name in outputs.iter().filter(|name| !keep.contains(name)) {
+        let path = out_dir.join(name);
+        if path.exists() {
+            std::fs::remove_file(&path)
+                .map_err(|e| TampError::io(format!("removing {}", path.display()), e))?;
+        }
+    }
+    Ok(())
+}
+
 pub fn create_dir(dir: &Path) -> Result<()> {
     std::fs::create_dir_all(dir)
         .map_err(|e| TampError::io(format!("creating {}", dir.display()), e))

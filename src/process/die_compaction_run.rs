@@ -45,7 +45,24 @@ pub fn run_scene(
     let (scene, sha) = crate::scene::load(scene_path)?;
     let every = scene.output.checkpoint_every;
     crate::checkpoint::require_checkpoints_for_resume(resume, every)?;
-    output::create_dir(out_dir)?;
+    // The specimen and the checkpoint are what a resumed run starts from.
+    let keep: &[&str] = if resume {
+        &["specimen.json", "checkpoint.json"]
+    } else {
+        &[]
+    };
+    output::claim_dir(
+        out_dir,
+        scene_path,
+        &[
+            "specimen.json",
+            "checkpoint.json",
+            "press.scene.json",
+            "compaction.csv",
+            "summary.json",
+        ],
+        keep,
+    )?;
     let specimen_path = out_dir.join("specimen.json");
     let checkpoint_path = out_dir.join("checkpoint.json");
     let specimen: Specimen = if resume && specimen_path.exists() {
