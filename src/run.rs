@@ -4,7 +4,7 @@
 //! uninterrupted run writes, byte for byte (see `checkpoint`).
 
 use crate::checkpoint::{self, Checkpoint, SimState};
-use crate::error::Result;
+use crate::error::{Result, TampError};
 use crate::output::progress::Progress;
 use crate::output::{self, Provenance, series::Series, summary::Summary};
 use crate::scene;
@@ -108,7 +108,7 @@ pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool, resume: bool) -
                 out_dir.display()
             );
         }
-        series.record(&sim);
+        series.record(&sim)?;
         if trajectory_every > 0 {
             trajectory.push_str(crate::compare::TRAJECTORY_HEADER);
             trajectory.push('\n');
@@ -128,7 +128,7 @@ pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool, resume: bool) -
     while sim.step < built.steps {
         sim.step()?;
         if sim.step % every == 0 {
-            series.record(&sim);
+            series.record(&sim)?;
         }
         if trajectory_every > 0 && (sim.step % trajectory_every == 0 || sim.step == built.steps) {
             record_trajectory(&sim, &mut trajectory);
@@ -152,10 +152,17 @@ pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool, resume: bool) -
     }
     progress.finish();
     if sim.step % every != 0 {
-        series.record(&sim);
+        series.record(&sim)?;
     }
     let provenance = Provenance::new(sha, scene.seed, sim.dt, built.dt_estimate, built.steps);
     let summary = Summary::new(&sim, provenance, &scene.name, built.warnings);
+    if let Some((name, value)) = summary.quantities().into_iter().find(|(_, v)| !v.is_finite()) {
+        return Err(TampError::Unstable {
+            step: sim.step,
+            time: sim.time,
+            what: format!("the summary's {name} is {value} (a quantity beyond the range of a double)"),
+        });
+    }
     output::write_atomic(&out_dir.join("series.csv"), &series.to_csv()?)?;
     let json = serde_json::to_vec_pretty(&summary).expect("summary serialises");
     output::write_atomic(&out_dir.join("summary.json"), &json)?;

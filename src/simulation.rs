@@ -825,6 +825,11 @@ impl Simulation {
     fn check_energy(&self) -> Result<()> {
         let gained = -self.dissipated_energy();
         let scale = self.initial_mechanical_energy.abs() + self.external_work_scale;
+        if !(gained.is_finite() && scale.is_finite()) {
+            return Err(self.unstable(format!(
+                "the energy book is not finite (energy gained {gained:e} J, scale {scale:e} J): a quantity beyond the range of a double"
+            )));
+        }
         if scale > 0.0 && gained > self.limits.max_energy_growth * scale {
             let p = &self.particles;
             let fastest = (0..p.len())

@@ -644,3 +644,26 @@ fn coincident_and_nearly_coincident_centres() {
     }
     assert!(all_finite(&sim));
 }
+
+/// Issue 27, class 2: an energy that overflows while every position and velocity is
+/// still finite (a sphere at 1e200 m/s) never reaches an output: the series row ends
+/// the run (exit 3, naming the column), and so does the energy check, whatever its
+/// sign conventions make of inf − inf.
+#[test]
+fn an_overflowing_energy_ends_the_run_instead_of_reaching_an_output() {
+    let scene: Value = serde_json::from_str(include_str!("scenes/base.json")).unwrap();
+    let mut sim = built(&scene).sim;
+    sim.particles.velocity[0] = Vec3::new(1e200, 0.0, 0.0);
+    let mut series = tamp::output::series::Series::new(&[], &sim);
+    match series.record(&sim) {
+        Err(TampError::Unstable { what, .. }) => {
+            assert!(what.contains("kinetic_energy is inf"), "{what}")
+        }
+        other => panic!("expected exit 3, got {other:?}"),
+    }
+    sim.limits.check_every = 1;
+    match sim.step() {
+        Err(TampError::Unstable { what, .. }) => assert!(what.contains("energy"), "{what}"),
+        other => panic!("expected exit 3, got {other:?}"),
+    }
+}

@@ -485,3 +485,24 @@ fn byte_order_mark_and_syntax_errors_are_named() {
     assert!(!stderr.contains("?:"), "{stderr}");
     assert!(stderr.contains("scene: malformed JSON"), "{stderr}");
 }
+
+/// Issue 27, class 2: inputs that pass the per-field rules but make a derived
+/// quantity leave the range of a double are exit 2 naming the field: a density whose
+/// particle masses overflow, a gravity whose speeds over the run overflow the
+/// energies, and a Young's modulus whose critical step is not finite (given a
+/// characteristic velocity, the message must not ask for one).
+#[test]
+fn inputs_whose_derived_quantities_overflow_are_named() {
+    let mut s = base();
+    s["materials"][0]["density"] = json!(1e308);
+    expect_input_error(s, &["materials[0].density:", "mass"]);
+    let mut s = base();
+    s["gravity"] = json!([0, 0, -1e200]);
+    expect_input_error(s, &["gravity:", "range of a double"]);
+    let mut s = base();
+    s["materials"][0]["youngs_modulus"] = json!(1e308);
+    let (code, stderr) = run_text(&s.to_string());
+    assert_eq!(code, 2, "{stderr}");
+    assert!(!stderr.contains("characteristic_velocity: is required"), "{stderr}");
+    assert!(stderr.contains("youngs_modulus"), "{stderr}");
+}

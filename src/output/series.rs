@@ -40,7 +40,10 @@ impl Series {
         }
     }
 
-    pub fn record(&mut self, sim: &Simulation) {
+    /// Append the row of the current state. A value that is not finite (an energy
+    /// that overflowed while every position stayed finite) ends the run: exit 3,
+    /// naming the column and the step, so no series holds NaN or inf.
+    pub fn record(&mut self, sim: &Simulation) -> Result<()> {
         let mut row = vec![sim.step as f64, sim.time];
         for c in &self.columns {
             match c.as_str() {
@@ -59,7 +62,18 @@ impl Series {
                 other => unreachable!("column '{other}' passed validation"),
             }
         }
+        if let Some(k) = row.iter().position(|v| !v.is_finite()) {
+            return Err(TampError::Unstable {
+                step: sim.step,
+                time: sim.time,
+                what: format!(
+                    "{} is {} (a quantity beyond the range of a double)",
+                    self.header[k], row[k]
+                ),
+            });
+        }
         self.rows.push(row);
+        Ok(())
     }
 
     pub fn to_csv(&self) -> Result<Vec<u8>> {

@@ -36,6 +36,61 @@ fn insertion_box(region: &BoxRegion) -> InsertionBox {
     }
 }
 
+/// Rules on what the inputs make together, checked once the scene is built: every
+/// particle's mass and inertia, the step, and the speeds and energies the run can
+/// reach (its initial speeds and the characteristic velocity, plus |g| times its
+/// duration) stay inside the range of a double, with a margin of 10⁶ for sums over
+/// many particles and steps. Otherwise some output would be inf or NaN.
+fn check_range(scene: &Scene, sim: &Simulation, steps: u64) -> Result<()> {
+    const MARGIN: f64 = 1e-6 * f64::MAX;
+    let p = &sim.particles;
+    for i in 0..p.len() {
+        let (m, inertia) = (p.mass[i], p.inertia[i]);
+        if !(m > 0.0 && m.is_finite() && inertia > 0.0 && inertia.is_finite()) {
+            let k = p.material[i];
+            return Err(TampError::input(
+                format!("materials[{k}].density"),
+                format!(
+                    "gives particle {i} (radius {:e} m) a mass of {m:e} kg and a moment of inertia of {inertia:e} kg m²: outside the range of a double",
+                    p.radius[i]
+                ),
+            ));
+        }
+    }
+    if !(sim.dt > 0.0 && sim.dt.is_finite()) {
+        return Err(TampError::input(
+            "time_step",
+            format!("gives a step of {:e} s: it must be > 0 and finite", sim.dt),
+        ));
+    }
+    let duration = steps as f64 * sim.dt;
+    let fall = scene
+        .gravity
+        .map_or(0.0, |g| Vec3::new(g[0], g[1], g[2]).norm() * duration);
+    let moving = p
+        .velocity
+        .iter()
+        .map(|v| v.norm())
+        .fold(scene.time_step.characteristic_velocity.unwrap_or(0.0), f64::max);
+    let total_mass: f64 = p.mass.iter().sum();
+    let energy = total_mass * (moving + fall).powi(2);
+    if !energy.is_finite() || energy >= MARGIN {
+        let (path, what) = if fall > moving {
+            ("gravity", format!("|g| times the run's {duration:e} s"))
+        } else {
+            ("particles", "the fastest initial velocity".to_string())
+        };
+        return Err(TampError::input(
+            path,
+            format!(
+                "gives speeds of {:e} m/s ({what}) and kinetic energies of {energy:e} J for {total_mass:e} kg of particles: beyond the range of a double (1e-6 of its largest value)",
+                moving + fall
+            ),
+        ));
+    }
+    Ok(())
+}
+
 pub fn build(scene: &Scene) -> Result<BuiltScene> {
     let materials: Vec<Material> = scene
         .materials
@@ -276,6 +331,12 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
         }
         (Some(fixed), None) => fixed,
         (None, Some(est)) => est,
+        (None, None) if ts.characteristic_velocity.is_some() => {
+            return Err(TampError::input(
+                "materials",
+                "give no finite critical time step (Rojek eqs 26–29): check every youngs_modulus and density, or give time_step.fixed",
+            ));
+        }
         (None, None) => {
             return Err(TampError::input(
                 "time_step.characteristic_velocity",
@@ -289,6 +350,7 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
         (None, Some(d)) => (d / dt).ceil() as u64,
         (None, None) => unreachable!("validated"),
     };
+    check_range(scene, &sim, steps)?;
     Ok(BuiltScene {
         sim,
         dt_estimate,
