@@ -84,7 +84,7 @@ where
     let overlap = g.overlap;
     if ratio > max_fraction {
         return Err(format!(
-            "overlap {overlap:.4e} m is {ratio:.3} of the smaller radius (limit {max_fraction})"
+            "overlap {overlap:.4e} m is {ratio:.3e} of the smaller radius (limit {max_fraction})"
         ));
     }
     let f = law.evaluate(g, pair, state, dt);
@@ -212,6 +212,8 @@ pub struct Simulation {
     /// Scratch list of the neighbour-list pairs within reach of the law at this
     /// step, with their separation: (index in the list, x_i − x_j).
     near: Vec<(u32, Vec3)>,
+    /// Whether a step's drift is done and its count not yet taken (see `unstable`).
+    stepping: bool,
     /// Force the particles exert on each wall at the current step, N.
     pub wall_force: Vec<Vec3>,
     pub limits: StabilityLimits,
@@ -266,6 +268,7 @@ impl Simulation {
             states,
             scratch: Vec::new(),
             near: Vec::new(),
+            stepping: false,
             limits,
             external_work: 0.0,
             external_work_scale: 0.0,
@@ -307,6 +310,7 @@ impl Simulation {
                 *r = target * f;
             }
         }
+        self.stepping = true;
         for (wall, force) in self.walls.iter_mut().zip(&self.wall_force) {
             if let Err(what) = wall.advance(self.time, dt, force) {
                 return Err(self.unstable(what));
@@ -318,6 +322,7 @@ impl Simulation {
             &mut *self.states,
         );
         self.compute_forces()?;
+        self.stepping = false;
         // Half kick, the finiteness check and the prescribed particles' power, in
         // one pass.
         let kicked = integrate::kick_and_check(&mut self.particles, 0.5 * dt, self.rotation);
@@ -464,12 +469,15 @@ impl Simulation {
         Ok(())
     }
 
+    /// The run's stop, at the step that produced `what`: while a step is under way
+    /// (its drift done, `self.step` not yet counted) that is the next step.
     fn unstable(&self, what: String) -> TampError {
-        TampError::Unstable {
-            step: self.step,
-            time: self.time,
-            what,
-        }
+        let (step, time) = if self.stepping {
+            (self.step + 1, self.time + self.dt)
+        } else {
+            (self.step, self.time)
+        };
+        TampError::Unstable { step, time, what }
     }
 
     fn compute_forces(&mut self) -> Result<()> {
@@ -840,7 +848,7 @@ impl Simulation {
                 })
                 .unwrap_or(0);
             return Err(self.unstable(format!(
-                "mechanical energy grew by {gained:.4e} J, {:.3} of the energy scale {scale:.4e} J, without external work \
+                "mechanical energy grew by {gained:.4e} J, {:.3e} of the energy scale {scale:.4e} J, without external work \
                  (fastest: particle {fastest} at {:.4e} m/s); the time step is likely too large",
                 gained / scale,
                 p.velocity[fastest].norm()

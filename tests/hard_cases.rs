@@ -633,9 +633,10 @@ fn coincident_and_nearly_coincident_centres() {
     through["run"] = json!({"steps": 5000});
     let b = built(&through);
     let mut sim = b.sim;
-    // The error counts the steps completed: the 4096th drift ends on the centre.
+    // The error names the step whose drift ended on the centre, the 4096th (issue 27
+    // class 8: it named the 4095 steps completed before it).
     match sim.run_with(b.steps, |s| assert!(all_finite(s))) {
-        Err(e @ TampError::Unstable { step: 4095, .. }) => {
+        Err(e @ TampError::Unstable { step: 4096, .. }) => {
             assert_eq!(e.exit_code(), 3);
             let text = e.to_string();
             assert!(text.contains("contact 0-1: the centres coincide"), "{text}");
