@@ -11,7 +11,9 @@ pub mod storakers;
 pub mod walton_braun;
 
 use crate::contact::damping::liggghts::LiggghtsModel;
-pub use crate::contact::model::{Needs, NormalModel, NormalResponse};
+pub use crate::contact::model::{
+    LiggghtsDeck, LiggghtsRefusal, LiggghtsScene, Needs, NormalModel, NormalResponse,
+};
 use crate::error::Errors;
 use crate::material::PairProperties;
 pub use hertz::Hertz;
@@ -84,6 +86,14 @@ impl NormalLaw {
     /// See `NormalModel::liggghts`.
     pub fn liggghts(&self) -> Option<LiggghtsModel> {
         each_normal!(self, n => n.liggghts())
+    }
+
+    /// See `NormalModel::liggghts_deck`.
+    pub fn liggghts_deck(
+        &self,
+        scene: &LiggghtsScene,
+    ) -> Option<Result<LiggghtsDeck, Vec<LiggghtsRefusal>>> {
+        each_normal!(self, n => n.liggghts_deck(scene))
     }
 
     /// Whether the law keeps δ_max in the contact state.
