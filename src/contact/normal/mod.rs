@@ -8,6 +8,7 @@ pub mod kuwabara_kono;
 pub mod linear;
 pub mod plastic_cylinder;
 pub mod storakers;
+pub mod thornton;
 pub mod walton_braun;
 
 use crate::contact::damping::liggghts::LiggghtsModel;
@@ -21,6 +22,7 @@ pub use hysteretic::Hysteretic;
 pub use kuwabara_kono::KuwabaraKono;
 pub use linear::Linear;
 pub use storakers::Storakers;
+pub use thornton::Thornton;
 pub use walton_braun::WaltonBraun;
 
 /// The state of a law with memory: the largest overlap reached on the loading
@@ -50,6 +52,8 @@ pub enum NormalLaw {
     Hysteretic(Hysteretic),
     /// Rojek eqs 15–22, optionally capped by Hertz (Martin et al. 2003).
     Storakers(Storakers),
+    /// Thornton 1997 elastic–perfectly-plastic (or LIGGGHTS's `thornton_ning` unloading).
+    Thornton(Thornton),
 }
 
 /// `each_normal!(law, n => expr)`: `expr` with `n` bound to the law's own type, for
@@ -64,6 +68,7 @@ macro_rules! each_normal {
             $crate::contact::normal::NormalLaw::WaltonBraun($n) => $body,
             $crate::contact::normal::NormalLaw::Hysteretic($n) => $body,
             $crate::contact::normal::NormalLaw::Storakers($n) => $body,
+            $crate::contact::normal::NormalLaw::Thornton($n) => $body,
         }
     };
 }
