@@ -74,6 +74,93 @@ pub struct Needs {
     pub rotation: Option<&'static str>,
 }
 
+/// A law's entry in a LIGGGHTS 3.8 deck (`tamp export-liggghts`): the words of
+/// `pair_style gran model <model> tangential history <options>` and the `fix
+/// property/global` lines the model reads besides youngsModulus and poissonsRatio,
+/// in the order the deck writes them.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LiggghtsDeck {
+    pub model: &'static str,
+    /// Words after the tangential model, or "".
+    pub options: &'static str,
+    pub properties: Vec<LiggghtsProperty>,
+}
+
+/// One `fix property/global <name> <values>` line.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LiggghtsProperty {
+    pub name: &'static str,
+    pub values: LiggghtsValues,
+}
+
+/// The values of a property, by LIGGGHTS style.
+#[derive(Clone, Debug, PartialEq)]
+pub enum LiggghtsValues {
+    /// `scalar v`.
+    Scalar(f64),
+    /// `peratomtype v_1 … v_n`, one per atom type (tamp material).
+    PerType(Vec<f64>),
+    /// `peratomtypepair n v_11 v_12 … v_nn`, row-major.
+    PerTypePair(Vec<f64>),
+}
+
+/// A field the deck cannot express: (scene path, reason).
+pub type LiggghtsRefusal = (String, String);
+
+/// One kind of contact in the scene (`export-liggghts` lists every pair of particle
+/// classes and every class against every wall).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LiggghtsContact {
+    pub effective_mass: f64,
+    pub effective_radius: f64,
+    pub effective_modulus: f64,
+    /// Atom type index (tamp material index) and radius of each particle LIGGGHTS may
+    /// take as "i": both for a pair, the particle alone for a wall (`None`).
+    pub first: (usize, f64),
+    pub second: Option<(usize, f64)>,
+}
+
+/// What a law's deck entry reads from the scene.
+#[derive(Clone, Debug)]
+pub struct LiggghtsScene<'a> {
+    pub damping: Option<&'a Damping>,
+    /// Whether the scene has a tangential law.
+    pub tangential: bool,
+    /// Number of atom types (tamp materials).
+    pub types: usize,
+    /// μ of every pair of atom types, row-major (zeros without a tangential law).
+    pub friction: Vec<f64>,
+    /// LIGGGHTS's `coefficientRestitution` for the scene's damping (1 without
+    /// damping); `None` for a constant γ_n, or when no e expresses it (refused).
+    pub restitution: Option<f64>,
+    /// The contact kinds; empty until the scene is built (a first pass, before the
+    /// particles are placed, checks everything else).
+    pub contacts: Vec<LiggghtsContact>,
+}
+
+impl LiggghtsScene<'_> {
+    /// `coefficientFriction peratomtypepair`.
+    pub fn coefficient_friction(&self) -> LiggghtsProperty {
+        LiggghtsProperty {
+            name: "coefficientFriction",
+            values: LiggghtsValues::PerTypePair(self.friction.clone()),
+        }
+    }
+
+    /// `coefficientRestitution peratomtypepair`, the same e for every pair.
+    pub fn coefficient_restitution(&self) -> LiggghtsProperty {
+        self.uniform_pair("coefficientRestitution", self.restitution.unwrap_or(1.0))
+    }
+
+    /// A `peratomtypepair` property with one value for every pair of types.
+    pub fn uniform_pair(&self, name: &'static str, value: f64) -> LiggghtsProperty {
+        LiggghtsProperty {
+            name,
+            values: LiggghtsValues::PerTypePair(vec![value; self.types * self.types]),
+        }
+    }
+}
+
 /// The other roles of the scene's law, for the rules that join two roles.
 #[derive(Clone, Copy, Debug)]
 pub struct Roles<'a> {
@@ -106,8 +193,20 @@ pub trait NormalModel: Copy + Debug + PartialEq {
     /// The rules of its own parameters; `path` is where the scene holds them.
     fn check(&self, _path: &str, _errors: &mut Errors) {}
 
-    /// The LIGGGHTS `model` that is this law, if LIGGGHTS has it.
+    /// The LIGGGHTS `model` whose restitution damping and `tangential history`
+    /// tamp reproduces beside this law (`liggghts_restitution`, `liggghts_history`),
+    /// if it is one of them.
     fn liggghts(&self) -> Option<LiggghtsModel> {
+        None
+    }
+
+    /// Its model in a LIGGGHTS 3.8 deck for this scene (`tamp export-liggghts`),
+    /// or the fields of the scene it cannot express; `None` when LIGGGHTS has no
+    /// counterpart of the law.
+    fn liggghts_deck(
+        &self,
+        _scene: &LiggghtsScene,
+    ) -> Option<Result<LiggghtsDeck, Vec<LiggghtsRefusal>>> {
         None
     }
 

@@ -99,6 +99,7 @@ pub fn normal_examples() -> Vec<NormalExample> {
         WaltonBraun::examples(),
         Hysteretic::examples(),
         Storakers::examples(),
+        Thornton::examples(),
     ]
     .concat()
 }

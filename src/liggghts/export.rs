@@ -7,7 +7,10 @@
 //!   start from the same state. LIGGGHTS's own insertion would draw other positions.
 //! - One atom type per tamp material (type k + 1 = `materials[k]`); a wall's type is
 //!   its material's, so LIGGGHTS mixes E*, G* and μ for walls as tamp does.
-//! - `model hertz` for `hertz`; `model hooke` for `linear` with a restitution-based
+//! - The normal law writes its own `model` and properties
+//!   (`NormalModel::liggghts_deck`, in the law's file); this file asks it, and
+//!   refuses the law when it has none. Today:
+//!   `model hertz` for `hertz`; `model hooke` for `linear` with a restitution-based
 //!   damping, `characteristicVelocity` chosen so that LIGGGHTS's k_n equals tamp's k
 //!   (refused when the k_n LIGGGHTS derives per contact kind differs: it depends on
 //!   m*, R*); `model hooke/stiffness absolute_damping on` for `linear` with a
@@ -25,14 +28,14 @@
 //!   `dump_every` steps to `dump.liggghts`, and the final state to `final.liggghts`.
 
 use crate::boundary::shape::{Revolved, Shape, Triangle};
-use crate::contact::damping::liggghts::{SQRT_FIVE_SIXTHS, hooke_stiffness};
+use crate::contact::damping::liggghts::LiggghtsModel;
+use crate::contact::damping::liggghts::SQRT_FIVE_SIXTHS;
+use crate::contact::damping::{CriticalFraction, Damping, LiggghtsRestitution};
+use crate::contact::model::{LiggghtsContact, LiggghtsScene, LiggghtsValues};
+use crate::contact::tangential::TangentialLaw;
 use crate::error::{Result, TampError};
 use crate::material::{effective_mass, effective_modulus, effective_radius};
 use crate::particles::Vec3;
-use crate::contact::damping::liggghts::LiggghtsModel;
-use crate::contact::damping::{Constant, CriticalFraction, Damping, LiggghtsRestitution};
-use crate::contact::normal::{Linear, NormalLaw};
-use crate::contact::tangential::TangentialLaw;
 use crate::scene::walls::MotionSpec;
 use crate::scene::{self, Scene};
 use std::fmt::Write as _;
@@ -101,30 +104,25 @@ fn restitution(scene: &Scene) -> std::result::Result<f64, (String, String)> {
 pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
     let mut out: Vec<(String, String)> = Vec::new();
     let mut refuse = |path: &str, why: &str| out.push((path.to_string(), why.to_string()));
-    let model = scene.contact.normal.liggghts();
-    if model.is_none() {
-        refuse(
+    // The law's own rules; the contact kinds are checked after the scene is built.
+    match scene.contact.normal.liggghts_deck(&deck_scene(scene, None)) {
+        None => refuse(
             "contact.normal.law",
             &format!(
-                "LIGGGHTS 3.8 has no counterpart of '{}' (exportable: hertz → model hertz, linear → model hooke)",
-                scene.contact.normal.name()
+                "LIGGGHTS 3.8 has no counterpart of '{}' (exportable: {})",
+                scene.contact.normal.name(),
+                exportable_laws()
             ),
-        );
-    }
-    match (model, &scene.contact.damping) {
-        (Some(LiggghtsModel::Hertz), Some(Damping::Constant(_))) => refuse(
-            "contact.damping.kind",
-            "a constant gamma_n has no LIGGGHTS form with model hertz (use liggghts_restitution or critical_fraction)",
         ),
-        (Some(LiggghtsModel::Hooke), Some(Damping::Constant(_)))
-            if scene.contact.tangential.is_some() =>
-        {
-            refuse(
-                "contact.tangential",
-                "a constant gamma_n exports as model hooke/stiffness, which tamp exports only without friction",
-            )
+        Some(Err(list)) => {
+            for (path, why) in list {
+                refuse(&path, &why);
+            }
         }
-        (_, Some(Damping::Constant(_))) | (_, None) => {}
+        Some(Ok(_)) => {}
+    }
+    match &scene.contact.damping {
+        Some(Damping::Constant(_)) | None => {}
         _ => {
             if let Err((path, why)) = restitution(scene) {
                 refuse(&path, &why);
@@ -258,9 +256,55 @@ fn g(x: f64) -> String {
     format!("{x:e}")
 }
 
+/// The normal laws LIGGGHTS 3.8 has, as "law → model" (from the registry).
+fn exportable_laws() -> String {
+    let scene = LiggghtsScene {
+        damping: None,
+        tangential: false,
+        types: 1,
+        friction: vec![0.0],
+        restitution: Some(1.0),
+        contacts: Vec::new(),
+    };
+    let mut laws: Vec<String> = crate::contact::registry::normal_laws()
+        .iter()
+        .filter_map(|law| {
+            let deck = law.liggghts_deck(&scene)?.ok()?;
+            Some(format!("{} → model {}", law.name(), deck.model))
+        })
+        .collect();
+    laws.sort();
+    laws.join(", ")
+}
+
+/// What the normal law's deck entry reads from the scene; before the scene is built
+/// (`sim` None) it has no contact kinds and zero friction.
+fn deck_scene<'a>(
+    scene: &'a Scene,
+    sim: Option<&crate::simulation::Simulation>,
+) -> LiggghtsScene<'a> {
+    let types = scene.materials.len();
+    let friction = match sim {
+        Some(sim) if scene.contact.tangential.is_some() => (0..types * types)
+            .map(|k| sim.pair_table.get(k / types, k % types).friction)
+            .collect(),
+        _ => vec![0.0; types * types],
+    };
+    LiggghtsScene {
+        damping: scene.contact.damping.as_ref(),
+        tangential: scene.contact.tangential.is_some(),
+        types,
+        friction,
+        restitution: match &scene.contact.damping {
+            Some(Damping::Constant(_)) => None,
+            _ => restitution(scene).ok(),
+        },
+        contacts: sim.map(contact_kinds).unwrap_or_default(),
+    }
+}
+
 /// The contact model of the deck (after `refusals` came back empty).
 fn contact_model(scene: &Scene, sim: &crate::simulation::Simulation) -> Result<ContactModel> {
-    let n = sim.materials.len();
     let mut properties = Vec::new();
     let per_type = |f: &dyn Fn(&crate::material::Material) -> f64| -> String {
         sim.materials
@@ -277,67 +321,33 @@ fn contact_model(scene: &Scene, sim: &crate::simulation::Simulation) -> Result<C
         "fix m2 all property/global poissonsRatio peratomtype {}",
         per_type(&|m| m.poisson_ratio.expect("checked"))
     ));
-    let friction = |a: usize, b: usize| sim.pair_table.get(a, b).friction;
-    let pair_matrix = |f: &dyn Fn(usize, usize) -> f64| -> String {
-        let mut s = format!("{n}");
-        for a in 0..n {
-            for b in 0..n {
-                s.push(' ');
-                s.push_str(&g(f(a, b)));
-            }
-        }
-        s
+    let n = sim.materials.len();
+    let deck = match scene
+        .contact
+        .normal
+        .liggghts_deck(&deck_scene(scene, Some(sim)))
+    {
+        Some(Ok(deck)) => deck,
+        Some(Err(list)) => return Err(refuse_all(list)),
+        None => unreachable!("refused by `refusals`"),
     };
-    let mu = if scene.contact.tangential.is_some() {
-        pair_matrix(&friction)
-    } else {
-        pair_matrix(&|_, _| 0.0)
-    };
+    for (k, p) in deck.properties.iter().enumerate() {
+        let values = match &p.values {
+            LiggghtsValues::Scalar(v) => format!("scalar {}", g(*v)),
+            LiggghtsValues::PerType(v) => format!("peratomtype {}", join(v)),
+            LiggghtsValues::PerTypePair(v) => format!("peratomtypepair {n} {}", join(v)),
+        };
+        properties.push(format!(
+            "fix m{} all property/global {} {values}",
+            k + 3,
+            p.name
+        ));
+    }
     let tangential = "tangential history";
-    let pair_style = match (&scene.contact.normal, &scene.contact.damping) {
-        (NormalLaw::Linear(Linear { stiffness }), Some(Damping::Constant(Constant { gamma_n }))) => {
-            properties.push(format!(
-                "fix m3 all property/global kn peratomtypepair {}",
-                pair_matrix(&|_, _| *stiffness)
-            ));
-            properties.push(format!(
-                "fix m4 all property/global kt peratomtypepair {}",
-                pair_matrix(&|_, _| *stiffness)
-            ));
-            properties.push(format!(
-                "fix m5 all property/global gamman_abs peratomtypepair {}",
-                pair_matrix(&|_, _| *gamma_n)
-            ));
-            properties.push(format!(
-                "fix m6 all property/global gammat_abs peratomtypepair {}",
-                pair_matrix(&|_, _| 0.0)
-            ));
-            properties.push(format!(
-                "fix m7 all property/global coefficientFriction peratomtypepair {mu}"
-            ));
-            format!("model hooke/stiffness {tangential} absolute_damping on")
-        }
-        (normal, _) => {
-            let e = restitution(scene).map_err(|(p, w)| TampError::input(p, w))?;
-            properties.push(format!(
-                "fix m3 all property/global coefficientRestitution peratomtypepair {}",
-                pair_matrix(&|_, _| e)
-            ));
-            properties.push(format!(
-                "fix m4 all property/global coefficientFriction peratomtypepair {mu}"
-            ));
-            match normal {
-                NormalLaw::Linear(Linear { stiffness }) => {
-                    let v = characteristic_velocity(sim, *stiffness)?;
-                    properties.push(format!(
-                        "fix m5 all property/global characteristicVelocity scalar {}",
-                        g(v)
-                    ));
-                    format!("model hooke {tangential}")
-                }
-                _ => format!("model hertz {tangential}"),
-            }
-        }
+    let pair_style = if deck.options.is_empty() {
+        format!("model {} {tangential}", deck.model)
+    } else {
+        format!("model {} {tangential} {}", deck.model, deck.options)
     };
     Ok(ContactModel {
         pair_style,
@@ -345,9 +355,14 @@ fn contact_model(scene: &Scene, sim: &crate::simulation::Simulation) -> Result<C
     })
 }
 
-/// The contact kinds of a scene: (m*, R*, E*) of every pair of particle classes and
-/// of every class against every wall.
-fn contact_kinds(sim: &crate::simulation::Simulation) -> Vec<(f64, f64, f64)> {
+/// Values separated by spaces, each as `g` writes it.
+fn join(values: &[f64]) -> String {
+    values.iter().map(|v| g(*v)).collect::<Vec<_>>().join(" ")
+}
+
+/// The contact kinds of a scene: every pair of particle classes (mass, radius,
+/// material) and every class against every wall.
+fn contact_kinds(sim: &crate::simulation::Simulation) -> Vec<LiggghtsContact> {
     let p = &sim.particles;
     let mut classes: Vec<(f64, f64, usize)> = Vec::new();
     for i in 0..p.len() {
@@ -365,41 +380,25 @@ fn contact_kinds(sim: &crate::simulation::Simulation) -> Vec<(f64, f64, f64)> {
     let mut kinds = Vec::new();
     for (k, a) in classes.iter().enumerate() {
         for b in &classes[k..] {
-            kinds.push((
-                effective_mass(a.0, b.0),
-                effective_radius(a.1, b.1),
-                e_star(a.2, b.2),
-            ));
+            kinds.push(LiggghtsContact {
+                effective_mass: effective_mass(a.0, b.0),
+                effective_radius: effective_radius(a.1, b.1),
+                effective_modulus: e_star(a.2, b.2),
+                first: (a.2, a.1),
+                second: Some((b.2, b.1)),
+            });
         }
         for w in &sim.walls {
-            kinds.push((a.0, a.1, e_star(a.2, w.material)));
+            kinds.push(LiggghtsContact {
+                effective_mass: a.0,
+                effective_radius: a.1,
+                effective_modulus: e_star(a.2, w.material),
+                first: (a.2, a.1),
+                second: None,
+            });
         }
     }
     kinds
-}
-
-/// The `characteristicVelocity` V for which LIGGGHTS's `model hooke` gives k_n =
-/// `stiffness` (normal_model_hooke.h l. 269–275 solved for V), refused unless that
-/// holds for every contact kind of the scene.
-fn characteristic_velocity(sim: &crate::simulation::Simulation, stiffness: f64) -> Result<f64> {
-    let kinds = contact_kinds(sim);
-    let Some(&(m, r, e)) = kinds.first() else {
-        return Ok(1.0);
-    };
-    let a = 16.0 * r.sqrt() * e;
-    let v = (a / (15.0 * m) * (15.0 * stiffness / a).powi(5)).sqrt();
-    for &(m, r, e) in &kinds {
-        let k = hooke_stiffness(m, r, e, v);
-        if ((k - stiffness) / stiffness).abs() > 1e-9 {
-            return Err(TampError::input(
-                "contact.normal.stiffness",
-                format!(
-                    "cannot export to LIGGGHTS 3.8: model hooke derives k_n from m*, R*, E* and one characteristicVelocity; with V = {v:e} m/s it gives {k:e} N/m for a contact with m* = {m:e} kg, R* = {r:e} m (a wall contact, or another size or material), not {stiffness:e} N/m"
-                ),
-            ));
-        }
-    }
-    Ok(v)
 }
 
 fn stl(name: &str, triangles: &[[Vec3; 3]]) -> String {

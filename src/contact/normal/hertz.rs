@@ -12,10 +12,11 @@
 //! LIGGGHTS keyword: `model hertz`.
 
 use super::NormalLaw;
-use crate::contact::registry::{self, NormalExample};
 use super::{NormalModel, NormalResponse};
+use crate::contact::damping::Damping;
 use crate::contact::damping::liggghts::LiggghtsModel;
-use crate::contact::model::Needs;
+use crate::contact::model::{LiggghtsDeck, LiggghtsRefusal, LiggghtsScene, Needs};
+use crate::contact::registry::{self, NormalExample};
 use crate::material::PairProperties;
 
 pub fn hertz_force(overlap: f64, effective_radius: f64, effective_modulus: f64) -> f64 {
@@ -94,6 +95,27 @@ impl NormalModel for Hertz {
 
     fn liggghts(&self) -> Option<LiggghtsModel> {
         Some(LiggghtsModel::Hertz)
+    }
+
+    /// `model hertz`, damped by `coefficientRestitution` (no constant γ_n form).
+    fn liggghts_deck(
+        &self,
+        scene: &LiggghtsScene,
+    ) -> Option<Result<LiggghtsDeck, Vec<LiggghtsRefusal>>> {
+        if let Some(Damping::Constant(_)) = scene.damping {
+            return Some(Err(vec![(
+                "contact.damping.kind".into(),
+                "a constant gamma_n has no LIGGGHTS form with model hertz (use liggghts_restitution or critical_fraction)".into(),
+            )]));
+        }
+        Some(Ok(LiggghtsDeck {
+            model: "hertz",
+            options: "",
+            properties: vec![
+                scene.coefficient_restitution(),
+                scene.coefficient_friction(),
+            ],
+        }))
     }
 
     #[inline(always)]

@@ -8,9 +8,13 @@
 //! Parameters: k_n in N/m. No history. LIGGGHTS keyword: `model hooke/stiffness`.
 
 use super::NormalLaw;
-use crate::contact::registry::NormalExample;
 use super::{NormalModel, NormalResponse};
-use crate::contact::damping::liggghts::LiggghtsModel;
+use crate::contact::damping::liggghts::{LiggghtsModel, hooke_stiffness};
+use crate::contact::damping::{Constant, Damping};
+use crate::contact::model::{
+    LiggghtsContact, LiggghtsDeck, LiggghtsProperty, LiggghtsRefusal, LiggghtsScene, LiggghtsValues,
+};
+use crate::contact::registry::NormalExample;
 use crate::error::Errors;
 use crate::material::PairProperties;
 
@@ -73,6 +77,38 @@ impl LinearCollision {
     }
 }
 
+/// The `characteristicVelocity` V for which LIGGGHTS's `model hooke` gives k_n =
+/// `stiffness` (normal_model_hooke.h l. 269–275 solved for V), refused unless that
+/// holds for every contact kind of the scene.
+fn characteristic_velocity(
+    contacts: &[LiggghtsContact],
+    stiffness: f64,
+) -> Result<f64, LiggghtsRefusal> {
+    let Some(first) = contacts.first() else {
+        return Ok(1.0);
+    };
+    let (m, r, e) = (
+        first.effective_mass,
+        first.effective_radius,
+        first.effective_modulus,
+    );
+    let a = 16.0 * r.sqrt() * e;
+    let v = (a / (15.0 * m) * (15.0 * stiffness / a).powi(5)).sqrt();
+    for c in contacts {
+        let (m, r) = (c.effective_mass, c.effective_radius);
+        let k = hooke_stiffness(m, r, c.effective_modulus, v);
+        if ((k - stiffness) / stiffness).abs() > 1e-9 {
+            return Err((
+                "contact.normal.stiffness".into(),
+                format!(
+                    "model hooke derives k_n from m*, R*, E* and one characteristicVelocity; with V = {v:e} m/s it gives {k:e} N/m for a contact with m* = {m:e} kg, R* = {r:e} m (a wall contact, or another size or material), not {stiffness:e} N/m"
+                ),
+            ));
+        }
+    }
+    Ok(v)
+}
+
 /// Zhong model I: F = k_n δ, k_n in N/m.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields)]
@@ -107,6 +143,52 @@ impl NormalModel for Linear {
     /// LIGGGHTS's `model hooke` when k_n is its `hooke_stiffness` (damping/liggghts.rs).
     fn liggghts(&self) -> Option<LiggghtsModel> {
         Some(LiggghtsModel::Hooke)
+    }
+
+    /// With a constant γ_n: `model hooke/stiffness absolute_damping on` (kn = kt = k,
+    /// gamman_abs = γ_n, gammat_abs = 0), exported only without friction. Otherwise
+    /// `model hooke`, damped by `coefficientRestitution`, with the
+    /// `characteristicVelocity` that makes its k_n equal k (`characteristic_velocity`).
+    fn liggghts_deck(
+        &self,
+        scene: &LiggghtsScene,
+    ) -> Option<Result<LiggghtsDeck, Vec<LiggghtsRefusal>>> {
+        let k = self.stiffness;
+        if let Some(Damping::Constant(Constant { gamma_n })) = scene.damping {
+            if scene.tangential {
+                return Some(Err(vec![(
+                    "contact.tangential".into(),
+                    "a constant gamma_n exports as model hooke/stiffness, which tamp exports only without friction".into(),
+                )]));
+            }
+            return Some(Ok(LiggghtsDeck {
+                model: "hooke/stiffness",
+                options: "absolute_damping on",
+                properties: vec![
+                    scene.uniform_pair("kn", k),
+                    scene.uniform_pair("kt", k),
+                    scene.uniform_pair("gamman_abs", *gamma_n),
+                    scene.uniform_pair("gammat_abs", 0.0),
+                    scene.coefficient_friction(),
+                ],
+            }));
+        }
+        Some(
+            characteristic_velocity(&scene.contacts, k)
+                .map(|v| LiggghtsDeck {
+                    model: "hooke",
+                    options: "",
+                    properties: vec![
+                        scene.coefficient_restitution(),
+                        scene.coefficient_friction(),
+                        LiggghtsProperty {
+                            name: "characteristicVelocity",
+                            values: LiggghtsValues::Scalar(v),
+                        },
+                    ],
+                })
+                .map_err(|refusal| vec![refusal]),
+        )
     }
 
     #[inline(always)]

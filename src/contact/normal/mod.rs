@@ -8,10 +8,13 @@ pub mod kuwabara_kono;
 pub mod linear;
 pub mod plastic_cylinder;
 pub mod storakers;
+pub mod thornton;
 pub mod walton_braun;
 
 use crate::contact::damping::liggghts::LiggghtsModel;
-pub use crate::contact::model::{Needs, NormalModel, NormalResponse};
+pub use crate::contact::model::{
+    LiggghtsDeck, LiggghtsRefusal, LiggghtsScene, Needs, NormalModel, NormalResponse,
+};
 use crate::error::Errors;
 use crate::material::PairProperties;
 pub use hertz::Hertz;
@@ -19,6 +22,7 @@ pub use hysteretic::Hysteretic;
 pub use kuwabara_kono::KuwabaraKono;
 pub use linear::Linear;
 pub use storakers::Storakers;
+pub use thornton::Thornton;
 pub use walton_braun::WaltonBraun;
 
 /// The state of a law with memory: the largest overlap reached on the loading
@@ -48,6 +52,8 @@ pub enum NormalLaw {
     Hysteretic(Hysteretic),
     /// Rojek eqs 15–22, optionally capped by Hertz (Martin et al. 2003).
     Storakers(Storakers),
+    /// Thornton 1997 elastic–perfectly-plastic (or LIGGGHTS's `thornton_ning` unloading).
+    Thornton(Thornton),
 }
 
 /// `each_normal!(law, n => expr)`: `expr` with `n` bound to the law's own type, for
@@ -62,6 +68,7 @@ macro_rules! each_normal {
             $crate::contact::normal::NormalLaw::WaltonBraun($n) => $body,
             $crate::contact::normal::NormalLaw::Hysteretic($n) => $body,
             $crate::contact::normal::NormalLaw::Storakers($n) => $body,
+            $crate::contact::normal::NormalLaw::Thornton($n) => $body,
         }
     };
 }
@@ -84,6 +91,14 @@ impl NormalLaw {
     /// See `NormalModel::liggghts`.
     pub fn liggghts(&self) -> Option<LiggghtsModel> {
         each_normal!(self, n => n.liggghts())
+    }
+
+    /// See `NormalModel::liggghts_deck`.
+    pub fn liggghts_deck(
+        &self,
+        scene: &LiggghtsScene,
+    ) -> Option<Result<LiggghtsDeck, Vec<LiggghtsRefusal>>> {
+        each_normal!(self, n => n.liggghts_deck(scene))
     }
 
     /// Whether the law keeps δ_max in the contact state.

@@ -27,6 +27,7 @@ mod rojek_models;
 mod scott_random_packing;
 mod sliding_oblique_impact;
 mod storakers_unloading;
+mod thornton_restitution;
 mod three_sphere_compression;
 mod two_sphere_compression;
 mod van_der_waals_force;
@@ -50,6 +51,7 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("walton_braun_restitution", restitution_laws::walton_braun),
     ("hysteretic_restitution", restitution_laws::hysteretic),
     ("kuwabara_kono_restitution", kuwabara_kono_restitution::run),
+    ("thornton_restitution", thornton_restitution::run),
     ("sliding_oblique_impact", sliding_oblique_impact::run),
     ("van_der_waals_force", van_der_waals_force::run),
     ("nial_die_compaction_small", nial_die_compaction::small),
@@ -74,6 +76,10 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("liggghts_settled_packing", liggghts_settled_packing::run),
     (
         "liggghts_three_sphere_trajectory",
+        liggghts_three_sphere_trajectory::run,
+    ),
+    (
+        "liggghts_two_sphere_thornton",
         liggghts_three_sphere_trajectory::run,
     ),
     ("liggghts_two_sphere_hertz", liggghts_two_sphere::hertz),

@@ -1,0 +1,67 @@
+//! Head-on impacts of two equal spheres under Thornton's elastic–perfectly-plastic
+//! law at v/v_y = 1.5, 3, 10 and 30, in both unloading forms: the restitution
+//! against Thornton's (1997) closed form for `thornton_1997`, and against the closed
+//! form of LIGGGHTS's shifted-Hertz unloading for `liggghts` (both derived in
+//! contact/normal/thornton.rs and docs/models/thornton.md). The scene gives the
+//! spheres, the material and p_y; the case sets the speeds from the yield velocity
+//! v_y and the unloading form.
+
+use super::probe::binary_collision;
+use crate::contact::normal::NormalLaw;
+use crate::contact::normal::thornton::{
+    Thornton, Unloading, liggghts_restitution, thornton_1997_restitution, yield_velocity,
+};
+use crate::error::{Result, TampError};
+use crate::material::{effective_mass, effective_radius};
+use crate::scene;
+use crate::verify::{CaseContext, Measured};
+
+/// e(v/v_y) of one unloading form.
+type ClosedForm = fn(f64) -> f64;
+
+/// v/v_y of the impacts, and their labels in the quantity names.
+const SPEEDS: [(f64, &str); 4] = [(1.5, "1_5"), (3.0, "3"), (10.0, "10"), (30.0, "30")];
+
+pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
+    let base = ctx.scene()?;
+    let NormalLaw::Thornton(law) = base.contact.normal else {
+        return Err(TampError::Other("the scene must use thornton".into()));
+    };
+    let sim = scene::build(&base)?.sim;
+    let p = &sim.particles;
+    let v_y = yield_velocity(
+        law.yield_pressure,
+        sim.pair_table
+            .get(p.material[0], p.material[1])
+            .effective_modulus
+            .expect("thornton needs E and nu"),
+        effective_radius(p.radius[0], p.radius[1]),
+        effective_mass(p.mass[0], p.mass[1]),
+    );
+    let forms: [(Unloading, &str, ClosedForm); 2] = [
+        (
+            Unloading::Thornton1997,
+            "thornton_1997",
+            thornton_1997_restitution,
+        ),
+        (Unloading::Liggghts, "liggghts", liggghts_restitution),
+    ];
+    let mut out = Vec::new();
+    for (unloading, form, closed_form) in forms {
+        for (ratio, label) in SPEEDS {
+            let mut s = base.clone();
+            s.contact.normal = NormalLaw::Thornton(Thornton { unloading, ..law });
+            let v = ratio * v_y;
+            s.particles[0].velocity = Some([0.5 * v, 0.0, 0.0]);
+            s.particles[1].velocity = Some([-0.5 * v, 0.0, 0.0]);
+            let mut sim = scene::build(&s)?.sim;
+            let c = binary_collision(&mut sim, 0, 1, 10_000_000)?;
+            out.push(Measured::new(
+                &format!("restitution_{form}_V{label}"),
+                c.restitution,
+                closed_form(ratio),
+            ));
+        }
+    }
+    Ok(out)
+}
