@@ -205,7 +205,13 @@ fn bench(c: &mut Criterion) {
         "tangential",
         labelled(registry::tangential_laws(), |t| t.name())
             .into_iter()
-            .map(|(name, t)| (name, law(NormalLaw::Hertz(Hertz {}), None, Some(t), None), g))
+            .map(|(name, t)| {
+                (
+                    name,
+                    law(NormalLaw::Hertz(Hertz {}), None, Some(t), None),
+                    g,
+                )
+            })
             .collect(),
     );
 

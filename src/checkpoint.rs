@@ -290,6 +290,7 @@ impl SimState {
         sim.initial_mechanical_energy = self.initial_mechanical_energy;
         sim.max_overlap_ratio = self.max_overlap_ratio;
         sim.target_radius = self.target_radius;
+        sim.refresh_smallest_radius();
         Ok(())
     }
 

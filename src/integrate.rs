@@ -53,10 +53,19 @@ pub struct Kicked {
     pub driven_power: f64,
 }
 
+/// What `kick_drift_wrap` saw of the drift.
+#[derive(Clone, Copy, Debug)]
+pub struct Drifted {
+    /// Work of gravity over the drift, J.
+    pub gravity_work: f64,
+    /// The particle that moved farthest, and |Δx|² of its move, m².
+    pub farthest: (usize, f64),
+}
+
 /// The first half kick, the drift and the periodic wrap of a step in one pass over
 /// the particles: for each, `kick`, then `drift`, then `Space::wrap`, the same
 /// operations as the three passes one after the other. Returns the work of gravity
-/// over the drift, summed in index order as `drift` sums it.
+/// over the drift, summed in index order as `drift` sums it, and the longest move.
 pub fn kick_drift_wrap(
     p: &mut Particles,
     half_dt: f64,
@@ -64,7 +73,7 @@ pub fn kick_drift_wrap(
     rotation: bool,
     gravity: Option<&Vec3>,
     space: &Space,
-) -> f64 {
+) -> Drifted {
     let n = p.len();
     let periodic = space.is_periodic();
     let (position, velocity, omega) = (
@@ -80,6 +89,7 @@ pub fn kick_drift_wrap(
         &p.prescribed[..n],
     );
     let mut work = 0.0;
+    let mut farthest = (0, 0.0);
     for i in 0..n {
         if !prescribed[i] {
             velocity[i] += force[i] * (half_dt / mass[i]);
@@ -88,6 +98,10 @@ pub fn kick_drift_wrap(
             }
         }
         let dx = velocity[i] * dt;
+        let moved = dx.norm_squared();
+        if moved > farthest.1 {
+            farthest = (i, moved);
+        }
         if let (Some(g), false) = (gravity, prescribed[i]) {
             work += mass[i] * g.dot(&dx);
         }
@@ -96,7 +110,10 @@ pub fn kick_drift_wrap(
             space.wrap(&mut position[i]);
         }
     }
-    work
+    Drifted {
+        gravity_work: work,
+        farthest,
+    }
 }
 
 /// The second half kick of a step (`kick`) in one pass with the checks that follow

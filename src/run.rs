@@ -156,11 +156,17 @@ pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool, resume: bool) -
     }
     let provenance = Provenance::new(sha, scene.seed, sim.dt, built.dt_estimate, built.steps);
     let summary = Summary::new(&sim, provenance, &scene.name, built.warnings);
-    if let Some((name, value)) = summary.quantities().into_iter().find(|(_, v)| !v.is_finite()) {
+    if let Some((name, value)) = summary
+        .quantities()
+        .into_iter()
+        .find(|(_, v)| !v.is_finite())
+    {
         return Err(TampError::Unstable {
             step: sim.step,
             time: sim.time,
-            what: format!("the summary's {name} is {value} (a quantity beyond the range of a double)"),
+            what: format!(
+                "the summary's {name} is {value} (a quantity beyond the range of a double)"
+            ),
         });
     }
     output::write_atomic(&out_dir.join("series.csv"), &series.to_csv()?)?;

@@ -178,6 +178,11 @@ pub struct StabilityLimits {
     pub max_energy_growth: f64,
     /// Steps between energy checks.
     pub check_every: u64,
+    /// Largest move of a particle in one step, as a fraction of the smallest radius.
+    /// At 0.25, two particles approaching each other close by at most half that
+    /// radius per step, so a contact is seen at an overlap the default overlap limit
+    /// (0.5) still accepts, instead of being stepped over.
+    pub max_step_fraction: f64,
 }
 
 impl Default for StabilityLimits {
@@ -186,6 +191,7 @@ impl Default for StabilityLimits {
             max_overlap_fraction: 0.5,
             max_energy_growth: 0.5,
             check_every: 100,
+            max_step_fraction: 0.25,
         }
     }
 }
@@ -214,6 +220,8 @@ pub struct Simulation {
     near: Vec<(u32, Vec3)>,
     /// Whether a step's drift is done and its count not yet taken (see `unstable`).
     stepping: bool,
+    /// The smallest final radius of the particles present (`refresh_smallest_radius`).
+    smallest_radius: f64,
     /// Force the particles exert on each wall at the current step, N.
     pub wall_force: Vec<Vec3>,
     pub limits: StabilityLimits,
@@ -269,6 +277,7 @@ impl Simulation {
             scratch: Vec::new(),
             near: Vec::new(),
             stepping: false,
+            smallest_radius: f64::INFINITY,
             limits,
             external_work: 0.0,
             external_work_scale: 0.0,
@@ -287,6 +296,7 @@ impl Simulation {
         sim.dt = dt;
         sim.external_power = sim.prescribed_power();
         sim.initial_mechanical_energy = sim.mechanical_energy();
+        sim.refresh_smallest_radius();
         Ok(sim)
     }
 
@@ -295,8 +305,9 @@ impl Simulation {
         let growing = self.is_growing();
         let gravity = self.active_gravity();
         let space = self.neighbors.space;
+        self.stepping = true;
         // Half kick, drift and periodic wrap, in one pass over the particles.
-        let gravity_work = integrate::kick_drift_wrap(
+        let drifted = integrate::kick_drift_wrap(
             &mut self.particles,
             0.5 * dt,
             dt,
@@ -304,13 +315,23 @@ impl Simulation {
             gravity.as_ref(),
             &space,
         );
+        let gravity_work = drifted.gravity_work;
+        let (i, moved2) = drifted.farthest;
+        let fraction = self.limits.max_step_fraction;
+        if moved2 > (fraction * self.smallest_radius).powi(2) {
+            return Err(self.unstable(format!(
+                "particle {i} moved {:.3e} m in one step (speed {:.3e} m/s), more than {fraction} of the smallest radius {:.3e} m (stability.max_step_fraction): it could pass through a contact unseen; the step is too large for this speed",
+                moved2.sqrt(),
+                self.particles.velocity[i].norm(),
+                self.smallest_radius
+            )));
+        }
         if let Some(growth) = self.growth.filter(|_| growing) {
             let f = growth.fraction(self.time + dt);
             for (r, target) in self.particles.radius.iter_mut().zip(&self.target_radius) {
                 *r = target * f;
             }
         }
-        self.stepping = true;
         for (wall, force) in self.walls.iter_mut().zip(&self.wall_force) {
             if let Err(what) = wall.advance(self.time, dt, force) {
                 return Err(self.unstable(what));
@@ -367,12 +388,26 @@ impl Simulation {
     pub fn set_growth(&mut self, growth: Growth, target_radius: Vec<f64>) {
         self.growth = Some(growth);
         self.target_radius = target_radius;
+        self.refresh_smallest_radius();
         // The forces of `new` included the weights, which wait for the end of growth:
         // take them off again instead of evaluating every contact a second time.
         if let Some(g) = self.gravity.filter(|_| self.is_growing()) {
             add_weights(&mut self.particles, -g);
         }
         self.restart_energy_book();
+    }
+
+    /// Keep `smallest_radius` the smallest final radius present, after particles or
+    /// their final radii change (build, growth, pouring).
+    pub(crate) fn refresh_smallest_radius(&mut self) {
+        self.smallest_radius = (0..self.particles.len())
+            .map(|i| self.final_radius(i))
+            .fold(f64::INFINITY, f64::min);
+    }
+
+    /// The smallest final radius of the particles present, m (∞ with none).
+    pub fn smallest_radius(&self) -> f64 {
+        self.smallest_radius
     }
 
     /// Radius particle i has at the end of any growth stage.
@@ -455,6 +490,7 @@ impl Simulation {
             }
         }
         self.sources = sources;
+        self.refresh_smallest_radius();
         // The neighbour list sees the new length and rebuilds; forces for the new
         // particles are computed at the next step.
         Ok(())

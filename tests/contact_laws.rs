@@ -53,7 +53,9 @@ fn geometry(normal: Vec3, overlap: f64, relative_velocity: Vec3) -> ContactGeome
 /// The variant names serde knows for a role enum (from its unknown-variant message):
 /// the compiler's list of the laws, independent of the registry.
 fn variants<T: serde::de::DeserializeOwned + std::fmt::Debug>() -> Vec<String> {
-    let err = serde_json::from_str::<T>(r#"{"law": "?"}"#).unwrap_err().to_string();
+    let err = serde_json::from_str::<T>(r#"{"law": "?"}"#)
+        .unwrap_err()
+        .to_string();
     let expected = &err[err.find("expected").expect("an unknown-variant message")..];
     expected
         .split('`')
@@ -65,7 +67,10 @@ fn variants<T: serde::de::DeserializeOwned + std::fmt::Debug>() -> Vec<String> {
 
 #[test]
 fn every_law_has_a_closed_form_example() {
-    let normal: Vec<&str> = registry::normal_examples().iter().map(|e| e.law.name()).collect();
+    let normal: Vec<&str> = registry::normal_examples()
+        .iter()
+        .map(|e| e.law.name())
+        .collect();
     for law in variants::<NormalLaw>() {
         assert!(
             normal.iter().any(|n| n.starts_with(law.as_str())),

@@ -588,7 +588,7 @@ fn build_error(v: &Value) -> TampError {
 /// "overlap … is 3.000 of the smaller radius (limit 3.5)", a limit it had not exceeded.
 #[test]
 fn coincident_and_nearly_coincident_centres() {
-    let raised = json!({"initial_overlap_tolerance": 3.5, "max_overlap_fraction": 3.5});
+    let raised = json!({"initial_overlap_tolerance": 3.5, "max_overlap_fraction": 3.5, "max_step_fraction": 3.5});
     for offset in [0.0, 1e-300] {
         for stability in [json!({}), raised.clone()] {
             let e = build_error(&coincident_pair(offset, stability));
@@ -663,8 +663,65 @@ fn an_overflowing_energy_ends_the_run_instead_of_reaching_an_output() {
         other => panic!("expected exit 3, got {other:?}"),
     }
     sim.limits.check_every = 1;
+    sim.limits.max_step_fraction = f64::INFINITY;
     match sim.step() {
         Err(TampError::Unstable { what, .. }) => assert!(what.contains("energy"), "{what}"),
+        other => panic!("expected exit 3, got {other:?}"),
+    }
+}
+
+/// Issue 27, class 1: spheres meeting head-on far faster than the characteristic
+/// velocity their step was sized for could pass through each other with exit 0. Here
+/// the step is 0.70 µs, so at 400 m/s each sphere moves 0.28 mm a step, beyond a
+/// quarter of its 1 mm radius (at 300 m/s, 0.21 mm, the contact is still seen). A step that would
+/// carry a particle more than a quarter of the smallest radius is refused at build
+/// (exit 2) when the initial speeds already do it, with a warning whenever they exceed
+/// the characteristic velocity; a particle that reaches such a speed during the run
+/// (here: a fall of 1 s under a strong gravity) stops it with exit 3 naming the
+/// particle and the step.
+#[test]
+fn a_step_that_could_tunnel_through_a_contact_is_refused() {
+    let pair = |speed: f64| {
+        json!({
+            "materials": [{"name": "s", "density": 7800, "youngs_modulus": 2e11, "poisson_ratio": 0.3}],
+            "contact": {"normal": {"law": "hertz"}},
+            "particles": [
+                {"position": [-0.0011, 0, 0], "radius": 0.001, "material": "s", "velocity": [speed, 0, 0]},
+                {"position": [0.0011, 0, 0], "radius": 0.001, "material": "s", "velocity": [-speed, 0, 0]}
+            ],
+            "time_step": {"alpha": 0.2, "characteristic_velocity": 1.0},
+            "run": {"duration": 1e-4}
+        })
+    };
+    let s = scene::parse(&pair(400.0).to_string()).unwrap();
+    let e = scene::build(&s).err().expect("refused");
+    assert_eq!(e.exit_code(), 2, "{e}");
+    assert!(
+        e.to_string().contains("].velocity: 4e2 m/s moves particle"),
+        "{e}"
+    );
+    let b = built(&pair(2.0));
+    assert!(
+        b.warnings
+            .iter()
+            .any(|w| w.contains("characteristic_velocity")),
+        "{:?}",
+        b.warnings
+    );
+    let mut falling = pair(0.0);
+    falling["particles"][1]["position"] = json!([0.5, 0, 0]);
+    falling["gravity"] = json!([0, 0, -1e4]);
+    falling["run"] = json!({"duration": 1.0});
+    let b = built(&falling);
+    let mut sim = b.sim;
+    match sim.run_with(b.steps, |_| {}) {
+        Err(e @ TampError::Unstable { .. }) => {
+            let text = e.to_string();
+            assert!(
+                text.contains("particle") && text.contains("smallest radius"),
+                "{text}"
+            );
+        }
         other => panic!("expected exit 3, got {other:?}"),
     }
 }

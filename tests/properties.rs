@@ -292,7 +292,11 @@ fn every_registered_law_conserves_momentum_and_ignores_numbering() {
             let Ok(parsed) = scene::parse(&forward.to_string()) else {
                 continue;
             };
-            let label = format!("{} + {:?}", normal.name(), t.as_ref().map(|t| t["law"].clone()));
+            let label = format!(
+                "{} + {:?}",
+                normal.name(),
+                t.as_ref().map(|t| t["law"].clone())
+            );
             let first = scene::build(&parsed).unwrap().sim;
             let p0 = momenta(&first);
             let run = |v: &Value| {
@@ -305,7 +309,10 @@ fn every_registered_law_conserves_momentum_and_ignores_numbering() {
             let sim = run(&forward);
             let p = &sim.particles;
             assert!(
-                (0..3).all(|i| p.position[i].iter().chain(p.omega[i].iter()).all(|c| c.is_finite())),
+                (0..3).all(|i| p.position[i]
+                    .iter()
+                    .chain(p.omega[i].iter())
+                    .all(|c| c.is_finite())),
                 "{label}: not finite"
             );
             assert!(
@@ -314,8 +321,14 @@ fn every_registered_law_conserves_momentum_and_ignores_numbering() {
             );
             let (lin, ang, _) = momenta(&sim);
             let lin_scale: f64 = (0..3).map(|i| p.mass[i] * 0.2).sum();
-            assert!((lin - p0.0).norm() <= 1e-12 * lin_scale, "{label}: linear momentum");
-            assert!((ang - p0.1).norm() <= 1e-10 * p0.2, "{label}: angular momentum");
+            assert!(
+                (lin - p0.0).norm() <= 1e-12 * lin_scale,
+                "{label}: linear momentum"
+            );
+            assert!(
+                (ang - p0.1).norm() <= 1e-10 * p0.2,
+                "{label}: angular momentum"
+            );
             let other = run(&scene(normal_json, t.clone(), &[2, 1, 0]));
             for i in 0..3 {
                 let dx = (p.position[i] - other.particles.position[2 - i]).norm();
@@ -325,5 +338,8 @@ fn every_registered_law_conserves_momentum_and_ignores_numbering() {
         }
     }
     let laws = registry::normal_laws().len() * tangential.len();
-    assert!(checked * 10 >= laws * 8, "only {checked} of {laws} combinations were buildable");
+    assert!(
+        checked * 10 >= laws * 8,
+        "only {checked} of {laws} combinations were buildable"
+    );
 }

@@ -465,9 +465,10 @@ fn trailing_data_after_the_scene_is_named() {
             "{tail:?}: {stderr}"
         );
     }
-    let die: Value =
-        serde_json::from_str(include_str!("../verification/nial_die_compaction_small.scene.json"))
-            .unwrap();
+    let die: Value = serde_json::from_str(include_str!(
+        "../verification/nial_die_compaction_small.scene.json"
+    ))
+    .unwrap();
     let (code, stderr) = run_text(&format!("{die} junk"));
     assert_eq!(code, 2, "{stderr}");
     assert!(stderr.contains("trailing data"), "{stderr}");
@@ -503,6 +504,9 @@ fn inputs_whose_derived_quantities_overflow_are_named() {
     s["materials"][0]["youngs_modulus"] = json!(1e308);
     let (code, stderr) = run_text(&s.to_string());
     assert_eq!(code, 2, "{stderr}");
-    assert!(!stderr.contains("characteristic_velocity: is required"), "{stderr}");
+    assert!(
+        !stderr.contains("characteristic_velocity: is required"),
+        "{stderr}"
+    );
     assert!(stderr.contains("youngs_modulus"), "{stderr}");
 }

@@ -67,11 +67,10 @@ fn check_range(scene: &Scene, sim: &Simulation, steps: u64) -> Result<()> {
     let fall = scene
         .gravity
         .map_or(0.0, |g| Vec3::new(g[0], g[1], g[2]).norm() * duration);
-    let moving = p
-        .velocity
-        .iter()
-        .map(|v| v.norm())
-        .fold(scene.time_step.characteristic_velocity.unwrap_or(0.0), f64::max);
+    let moving = p.velocity.iter().map(|v| v.norm()).fold(
+        scene.time_step.characteristic_velocity.unwrap_or(0.0),
+        f64::max,
+    );
     let total_mass: f64 = p.mass.iter().sum();
     let energy = total_mass * (moving + fall).powi(2);
     if !energy.is_finite() || energy >= MARGIN {
@@ -89,6 +88,47 @@ fn check_range(scene: &Scene, sim: &Simulation, steps: u64) -> Result<()> {
         ));
     }
     Ok(())
+}
+
+/// The step against the initial speeds: refused (exit 2) when it already carries a
+/// particle farther than `stability.max_step_fraction` of the smallest radius, so that
+/// contacts would be stepped over (the run stops on the same rule later, exit 3);
+/// a warning when a particle starts faster than the characteristic velocity the step
+/// was sized for.
+fn check_speeds(scene: &Scene, sim: &Simulation) -> Result<Vec<String>> {
+    let p = &sim.particles;
+    let Some((i, speed)) = (0..p.len())
+        .map(|i| (i, p.velocity[i].norm()))
+        .max_by(|a, b| a.1.total_cmp(&b.1))
+    else {
+        return Ok(Vec::new());
+    };
+    let path = match (i < scene.particles.len(), p.prescribed[i]) {
+        (true, false) => format!("particles[{i}].velocity"),
+        (true, true) => format!("particles[{i}].prescribed_velocity"),
+        (false, _) => "insert".to_string(),
+    };
+    let smallest = sim.smallest_radius();
+    let fraction = sim.limits.max_step_fraction;
+    if speed * sim.dt > fraction * smallest {
+        return Err(TampError::input(
+            path,
+            format!(
+                "{speed:e} m/s moves particle {i} {:.3e} m in one step of {:.3e} s, more than {fraction} of the smallest radius {smallest:e} m (stability.max_step_fraction), so contacts would be stepped over: raise time_step.characteristic_velocity to this speed or give a smaller time_step.fixed",
+                speed * sim.dt,
+                sim.dt
+            ),
+        ));
+    }
+    let mut warnings = Vec::new();
+    if let Some(v) = scene.time_step.characteristic_velocity
+        && speed > v
+    {
+        warnings.push(format!(
+            "{path}: particle {i} starts at {speed:e} m/s, faster than time_step.characteristic_velocity = {v:e} m/s, the impact speed the step was sized for"
+        ));
+    }
+    Ok(warnings)
 }
 
 pub fn build(scene: &Scene) -> Result<BuiltScene> {
@@ -283,6 +323,7 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
         max_overlap_fraction: scene.stability.max_overlap_fraction,
         max_energy_growth: scene.stability.max_energy_growth,
         check_every: scene.stability.check_every,
+        max_step_fraction: scene.stability.max_step_fraction,
     };
     // A growth stage starts from the initial fraction of every radius; the
     // simulation is built at that size so no force is ever computed at full size.
@@ -351,6 +392,7 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
         (None, None) => unreachable!("validated"),
     };
     check_range(scene, &sim, steps)?;
+    warnings.extend(check_speeds(scene, &sim)?);
     Ok(BuiltScene {
         sim,
         dt_estimate,

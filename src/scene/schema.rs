@@ -9,6 +9,7 @@ use crate::contact::normal::NormalLaw;
 use crate::contact::tangential::TangentialLaw;
 use crate::contact::van_der_waals::Cohesion;
 use crate::generate::distribution::SizeDistribution;
+use crate::simulation::StabilityLimits;
 use serde::{Deserialize, Serialize};
 
 #[derive(Clone, Debug, Deserialize, Serialize)]
@@ -347,6 +348,9 @@ pub struct StabilitySpec {
     pub max_energy_growth: f64,
     #[serde(default = "default_check_every")]
     pub check_every: u64,
+    /// Largest move of a particle in one step, as a fraction of the smallest radius.
+    #[serde(default = "default_max_step_fraction")]
+    pub max_step_fraction: f64,
     /// Largest overlap allowed between initial particles, as a fraction of the smaller radius.
     #[serde(default = "default_initial_overlap")]
     pub initial_overlap_tolerance: f64,
@@ -358,9 +362,14 @@ impl Default for StabilitySpec {
             max_overlap_fraction: default_max_overlap(),
             max_energy_growth: default_energy_growth(),
             check_every: default_check_every(),
+            max_step_fraction: default_max_step_fraction(),
             initial_overlap_tolerance: default_initial_overlap(),
         }
     }
+}
+
+fn default_max_step_fraction() -> f64 {
+    StabilityLimits::default().max_step_fraction
 }
 
 fn default_max_overlap() -> f64 {

@@ -446,6 +446,10 @@ fn validate_plain(scene: &Scene) -> Result<()> {
         "stability.max_energy_growth",
         scene.stability.max_energy_growth,
     );
+    e.positive(
+        "stability.max_step_fraction",
+        scene.stability.max_step_fraction,
+    );
     e.non_negative(
         "stability.initial_overlap_tolerance",
         scene.stability.initial_overlap_tolerance,

@@ -75,12 +75,14 @@ struct Law {
 fn laws() -> Vec<Law> {
     let mut rows = chosen();
     let normal_of = |row: &Law| serde_json::from_value::<NormalLaw>(row.contact["normal"].clone());
-    let tangential_of = |row: &Law| {
-        serde_json::from_value::<TangentialLaw>(row.contact["tangential"].clone()).ok()
-    };
+    let tangential_of =
+        |row: &Law| serde_json::from_value::<TangentialLaw>(row.contact["tangential"].clone()).ok();
     let mut enrolled = Vec::new();
     for n in registry::normal_laws() {
-        if !rows.iter().any(|r| normal_of(r).is_ok_and(|m| m.name() == n.name())) {
+        if !rows
+            .iter()
+            .any(|r| normal_of(r).is_ok_and(|m| m.name() == n.name()))
+        {
             enrolled.push(Law {
                 label: format!("{} (registry parameters)", n.name()),
                 contact: json!({ "normal": n }),
@@ -91,7 +93,10 @@ fn laws() -> Vec<Law> {
         }
     }
     for t in registry::tangential_laws() {
-        if !rows.iter().any(|r| tangential_of(r).is_some_and(|u| u.name() == t.name())) {
+        if !rows
+            .iter()
+            .any(|r| tangential_of(r).is_some_and(|u| u.name() == t.name()))
+        {
             let mut tangential = serde_json::to_value(t).expect("a law serialises");
             tangential["friction"] = json!(0.5);
             enrolled.push(Law {
@@ -547,14 +552,16 @@ mod tests {
         for n in registry::normal_laws() {
             let normal = serde_json::to_value(n).unwrap();
             assert!(
-                rows.iter().any(|r| r.contact["normal"]["law"] == normal["law"]),
+                rows.iter()
+                    .any(|r| r.contact["normal"]["law"] == normal["law"]),
                 "{}",
                 n.name()
             );
         }
         for t in registry::tangential_laws() {
             assert!(
-                rows.iter().any(|r| r.contact["tangential"]["law"] == t.name()),
+                rows.iter()
+                    .any(|r| r.contact["tangential"]["law"] == t.name()),
                 "{}",
                 t.name()
             );

@@ -11,8 +11,8 @@
 //! Recoverable (stored) energy: ½ k (1 − γ) δ², released along the unloading branch.
 
 use super::NormalLaw;
-use crate::contact::registry::NormalExample;
 use super::{NormalModel, NormalResponse};
+use crate::contact::registry::NormalExample;
 use crate::error::Errors;
 use crate::material::PairProperties;
 

@@ -13,10 +13,10 @@
 //! No history. Stiffness for the time step: the Hertz tangent 2E*√(R*δ).
 
 use super::NormalLaw;
-use crate::contact::registry::{self, NormalExample};
 use super::hertz::{Hertz, hertz_force, hertz_stiffness};
 use super::{NormalModel, NormalResponse};
 use crate::contact::model::Needs;
+use crate::contact::registry::{self, NormalExample};
 use crate::error::Errors;
 use crate::material::PairProperties;
 

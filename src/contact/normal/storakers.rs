@@ -24,10 +24,10 @@
 //! k_unl otherwise. Recoverable (stored) energy: 2/5 K [(δ − δ_res)^{5/2} − (−δ_res)₊^{5/2}].
 
 use super::NormalLaw;
-use crate::contact::registry::{self, NormalExample};
 use super::hertz::{Hertz, hertz_force, hertz_stiffness};
 use super::{NormalModel, NormalResponse, PeakOverlap};
 use crate::contact::model::Needs;
+use crate::contact::registry::{self, NormalExample};
 use crate::material::{Hollomon, PairProperties};
 
 /// c^{2+m} of Storåkers' similarity solution, fitted by eq 17.

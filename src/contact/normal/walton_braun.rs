@@ -13,8 +13,8 @@
 //! Recoverable (stored) energy: ½ k₂ (δ − δ₀)² while δ > δ₀.
 
 use super::NormalLaw;
-use crate::contact::registry::NormalExample;
 use super::{NormalModel, NormalResponse, PeakOverlap};
+use crate::contact::registry::NormalExample;
 use crate::error::Errors;
 use crate::material::PairProperties;
 

@@ -10,7 +10,6 @@
 use super::{TangentialInput, TangentialLaw, TangentialModel};
 use crate::contact::registry::{self, TangentialExample};
 
-
 use crate::particles::Vec3;
 
 #[inline]

@@ -14,8 +14,8 @@
 //! History: the spring vector ξ_s (m). Parameters: k_s (N/m), μ from the material pair.
 
 use super::{TangentialInput, TangentialLaw, TangentialModel};
-use crate::contact::registry::{self, TangentialExample};
 use crate::contact::model::Roles;
+use crate::contact::registry::{self, TangentialExample};
 use crate::error::Errors;
 
 use super::incremental::cap_to_cone;

@@ -9,8 +9,8 @@
 //! Δt < 2 m/γ_s (per particle, with the rotational lever when spin is on).
 
 use super::{TangentialInput, TangentialLaw, TangentialModel};
-use crate::contact::registry::{self, TangentialExample};
 use crate::contact::model::Roles;
+use crate::contact::registry::{self, TangentialExample};
 use crate::error::Errors;
 
 use crate::particles::Vec3;

@@ -35,10 +35,10 @@
 
 use super::mindlin_no_slip::mindlin_no_slip_stiffness;
 use super::{TangentialInput, TangentialLaw, TangentialModel};
-use crate::contact::registry::{self, TangentialExample};
 use crate::contact::damping::liggghts::LiggghtsModel;
 use crate::contact::damping::{Damping, critical_damping};
 use crate::contact::model::{Needs, Roles};
+use crate::contact::registry::{self, TangentialExample};
 use crate::error::Errors;
 
 use crate::particles::Vec3;

@@ -20,8 +20,8 @@
 use super::incremental::spring_energy;
 use super::mindlin_no_slip::MindlinNoSlip;
 use super::{TangentialInput, TangentialLaw, TangentialModel};
-use crate::contact::registry::{self, TangentialExample};
 use crate::contact::model::Needs;
+use crate::contact::registry::{self, TangentialExample};
 
 use super::scalar_axis::{ScalarAxisState, TangentialBranch};
 use super::scalar_axis::{finish, split};
@@ -101,7 +101,8 @@ impl TangentialModel for MindlinDeresiewicz {
     /// First loading from rest with k Δs < μΔN: θ = 1, F = −8G*√(R*δ) v_t Δt (eq 19); sliding: −μF_n v̂_t.
     fn examples() -> Vec<TangentialExample> {
         let (stick, slide) = (registry::sticking_input(), registry::sliding_input());
-        let k = 8.0 * stick.effective_shear_modulus * (stick.effective_radius * stick.overlap).sqrt();
+        let k =
+            8.0 * stick.effective_shear_modulus * (stick.effective_radius * stick.overlap).sqrt();
         vec![
             TangentialExample {
                 law: TangentialLaw::MindlinDeresiewicz(MindlinDeresiewicz {}),

@@ -12,8 +12,8 @@
 
 use super::incremental::{incremental_force, spring_energy};
 use super::{TangentialInput, TangentialLaw, TangentialModel};
-use crate::contact::registry::{self, TangentialExample};
 use crate::contact::model::Needs;
+use crate::contact::registry::{self, TangentialExample};
 use crate::particles::Vec3;
 
 pub fn mindlin_no_slip_stiffness(
@@ -39,7 +39,8 @@ impl TangentialModel for MindlinNoSlip {
     /// F = −8G*√(R*δ) v_t Δt from rest (Rojek eqs 11–13); sliding: −μF_n v̂_t.
     fn examples() -> Vec<TangentialExample> {
         let (stick, slide) = (registry::sticking_input(), registry::sliding_input());
-        let k = 8.0 * stick.effective_shear_modulus * (stick.effective_radius * stick.overlap).sqrt();
+        let k =
+            8.0 * stick.effective_shear_modulus * (stick.effective_radius * stick.overlap).sqrt();
         vec![
             TangentialExample {
                 law: TangentialLaw::MindlinNoSlip(MindlinNoSlip {}),

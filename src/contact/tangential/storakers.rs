@@ -10,8 +10,8 @@
 
 use super::incremental::{incremental_force, spring_energy};
 use super::{TangentialInput, TangentialLaw, TangentialModel};
-use crate::contact::registry::{self, TangentialExample};
 use crate::contact::model::Roles;
+use crate::contact::registry::{self, TangentialExample};
 use crate::error::Errors;
 use crate::particles::Vec3;
 

@@ -14,8 +14,8 @@
 
 use super::incremental::spring_energy;
 use super::{TangentialInput, TangentialLaw, TangentialModel};
-use crate::contact::registry::{self, TangentialExample};
 use crate::contact::model::Roles;
+use crate::contact::registry::{self, TangentialExample};
 use crate::error::Errors;
 
 use super::scalar_axis::{ScalarAxisState, TangentialBranch};

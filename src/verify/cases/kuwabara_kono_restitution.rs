@@ -7,9 +7,9 @@
 //! fall (0).
 
 use super::probe::binary_collision;
+use crate::contact::normal::{KuwabaraKono, NormalLaw};
 use crate::error::{Result, TampError};
 use crate::material::effective_mass;
-use crate::contact::normal::{KuwabaraKono, NormalLaw};
 use crate::scene;
 use crate::verify::{CaseContext, Measured};
 

@@ -2,9 +2,9 @@
 //! scene before any number is compared: a case refuses to compare when the two
 //! differ (a scene edited without re-recording, or a results file from another deck).
 
+use crate::contact::tangential::TangentialLaw;
 use crate::error::{Result, TampError};
 use crate::scene::Scene;
-use crate::contact::tangential::TangentialLaw;
 
 /// Collects "what: scene …, LIGGGHTS …" for inputs that differ by more than 1e-12.
 #[derive(Default)]

@@ -16,13 +16,13 @@
 //! v_t/v_n ≥ (7/2)μ(1 + e), else rolling at the end, v_t' = ωR = (5/7)v_t.
 
 use super::liggghts_inputs::Mismatches;
+use crate::contact::damping::{Damping, LiggghtsRestitution};
 use crate::error::{Result, TampError};
 use crate::output::plot::{Panel, Series, write_svg};
 use crate::scene::{
     self, Scene,
     walls::{MotionSpec, ShapeSpec},
 };
-use crate::contact::damping::{Damping, LiggghtsRestitution};
 use crate::verify::{CaseContext, Measured};
 use serde::Deserialize;
 use std::fmt::Write as _;

@@ -9,14 +9,12 @@
 
 use super::liggghts_inputs::Mismatches;
 use crate::contact::damping::liggghts::hooke_stiffness;
+use crate::contact::damping::{Damping, LiggghtsRestitution};
+use crate::contact::normal::{Hertz, Linear, NormalLaw};
 use crate::error::{Result, TampError};
 use crate::material::{Material, effective_mass, effective_modulus, effective_radius};
 use crate::measure::region::ball_volume;
-use crate::scene::{
-    self, Scene,
-};
-use crate::contact::damping::{Damping, LiggghtsRestitution};
-use crate::contact::normal::{Hertz, Linear, NormalLaw};
+use crate::scene::{self, Scene};
 use crate::verify::{CaseContext, Measured};
 use serde::Deserialize;
 

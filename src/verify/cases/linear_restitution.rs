@@ -4,11 +4,11 @@
 //! and once with γ_n = 0.
 
 use super::probe::binary_collision;
+use crate::contact::damping::{Constant, Damping};
 use crate::contact::normal::linear::LinearCollision;
+use crate::contact::normal::{Linear, NormalLaw};
 use crate::error::Result;
 use crate::material::effective_mass;
-use crate::contact::damping::{Constant, Damping};
-use crate::contact::normal::{Linear, NormalLaw};
 use crate::scene;
 use crate::verify::{CaseContext, Measured};
 

@@ -32,11 +32,11 @@
 //! as pressed), so a change of code or scene starts the work afresh.
 
 use crate::checkpoint::{self, Checkpoint};
+use crate::contact::normal::{NormalLaw, Storakers};
+use crate::contact::tangential::{TangentialLaw, storakers};
 use crate::error::{Result, TampError};
 use crate::output::plot::{Panel, Series, write_svg};
 use crate::process::die_compaction::{self, PressRecord, PressState, Pressing, Specimen};
-use crate::contact::normal::{NormalLaw, Storakers};
-use crate::contact::tangential::{TangentialLaw, storakers};
 use crate::scene::schema::{HollomonSpec, Scene};
 use crate::verify::{CaseContext, Measured};
 use serde::{Deserialize, Serialize, de::DeserializeOwned};

@@ -4,8 +4,8 @@
 //! derived in docs/models/hysteretic.md). One function per case, sharing the probe.
 
 use super::probe::binary_collision;
-use crate::error::{Result, TampError};
 use crate::contact::normal::{Hysteretic, NormalLaw, WaltonBraun};
+use crate::error::{Result, TampError};
 use crate::scene;
 use crate::verify::{CaseContext, Measured};
 

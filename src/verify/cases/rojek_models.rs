@@ -4,8 +4,8 @@
 //! the closed forms the compression cases compare against, written out from the
 //! papers' equations independently of `crate::contact`.
 
-use crate::error::{Result, TampError};
 use crate::contact::normal::{NormalLaw, Storakers};
+use crate::error::{Result, TampError};
 use crate::scene::schema::{HollomonSpec, Scene};
 
 /// (quantity suffix, Hollomon exponent; `None` = Hertz).

@@ -20,9 +20,9 @@
 //! so its fraction must lie between random loose packing (0.555, Onoda & Liniger
 //! 1990, the limit of vanishing gravity) and random close packing (0.637).
 
+use crate::contact::tangential::{CundallStrack, TangentialLaw};
 use crate::error::Result;
 use crate::measure::{Region, packing::packing_fraction};
-use crate::contact::tangential::{CundallStrack, TangentialLaw};
 use crate::scene::schema::{FrictionSpec, RotationSpec};
 use crate::scene::{self, Scene};
 use crate::verify::{CaseContext, Measured};

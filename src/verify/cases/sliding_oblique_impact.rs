@@ -7,15 +7,12 @@
 //! throughout when v_t > (1 + 5/2) μ (1 + e) v_n (the slip speed v_t − ωR stays
 //! positive); the scene uses v_t = 5 v_n, μ = 0.3.
 
-use crate::error::{Result, TampError};
-use crate::scene::{
-    self,
-    schema::FrictionSpec,
-};
 use crate::contact::tangential::{
     Coulomb, CundallStrack, HaffWerner, MindlinDeresiewicz, MindlinNoSlip, TangentialLaw,
     storakers, walton_braun,
 };
+use crate::error::{Result, TampError};
+use crate::scene::{self, schema::FrictionSpec};
 use crate::verify::{CaseContext, Measured};
 
 /// Each law with its own parameter where it has one (stiffness about half the

@@ -7,8 +7,8 @@
 //!   4/3 E* √R* δ_eq^{3/2} = A R*/(6 h_min²).
 
 use crate::contact::normal::hertz::hertz_overlap_at_force;
-use crate::error::{Result, TampError};
 use crate::contact::van_der_waals::{Cohesion, VanDerWaals};
+use crate::error::{Result, TampError};
 use crate::scene;
 use crate::verify::{CaseContext, Measured};
 
