@@ -1,5 +1,6 @@
 //! The `tamp` command line: parse arguments, call the library, map errors to the
-//! exit codes of the contract (0 ok, 1 verification failure, 2 bad input, 3 unstable).
+//! exit codes of the contract (0 ok; 1 a verification or comparison failed, or a file
+//! could not be read or written; 2 bad input; 3 unstable).
 
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;
@@ -10,7 +11,8 @@ use tamp::verify::{self, Tier};
 #[command(
     name = "tamp",
     version,
-    about = "Verification-first DEM for powder packing and die compaction"
+    about = "Verification-first DEM for powder packing and die compaction",
+    after_help = "Exit codes: 0 ok; 1 a verification or comparison failed, or a file could not be read or written (the message names it); 2 bad input (the message names the field and the rule); 3 the run became unstable (the message names the particle or contact and the step)."
 )]
 struct Cli {
     #[command(subcommand)]
