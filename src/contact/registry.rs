@@ -89,6 +89,30 @@ pub fn sliding_force(input: &TangentialInput) -> Vec3 {
     -input.tangential_velocity.normalize() * (input.friction * input.normal_force)
 }
 
+/// The two examples of a spring law of stiffness `k` from rest: sticking, F = −k v_t Δt;
+/// sliding, Coulomb's limit −μF_n v̂_t.
+pub fn spring_examples(law: TangentialLaw, k: f64) -> Vec<TangentialExample> {
+    let (stick, slide) = (sticking_input(), sliding_input());
+    vec![
+        TangentialExample {
+            law,
+            input: stick,
+            force: -stick.tangential_velocity * (k * stick.dt),
+        },
+        TangentialExample {
+            law,
+            input: slide,
+            force: sliding_force(&slide),
+        },
+    ]
+}
+
+/// Mindlin's no-slip stiffness 8G*√(R*δ) at the reference contact (Rojek eq 12).
+pub fn mindlin_stiffness() -> f64 {
+    let s = sticking_input();
+    8.0 * s.effective_shear_modulus * (s.effective_radius * s.overlap).sqrt()
+}
+
 /// Every normal law's examples, in the order of `NormalLaw`.
 pub fn normal_examples() -> Vec<NormalExample> {
     use super::normal::*;

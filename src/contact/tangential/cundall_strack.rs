@@ -74,20 +74,8 @@ impl TangentialModel for CundallStrack {
 
     /// F = −k_s v_t Δt from rest (Zhong eq 24); sliding: −μF_n v̂_t (eq 25).
     fn examples() -> Vec<TangentialExample> {
-        let (stick, slide) = (registry::sticking_input(), registry::sliding_input());
-        let k = 1e6;
-        vec![
-            TangentialExample {
-                law: TangentialLaw::CundallStrack(CundallStrack { stiffness: 1e6 }),
-                input: stick,
-                force: -stick.tangential_velocity * (k * stick.dt),
-            },
-            TangentialExample {
-                law: TangentialLaw::CundallStrack(CundallStrack { stiffness: 1e6 }),
-                input: slide,
-                force: registry::sliding_force(&slide),
-            },
-        ]
+        let law = TangentialLaw::CundallStrack(CundallStrack { stiffness: 1e6 });
+        registry::spring_examples(law, 1e6)
     }
 
     fn check(&self, path: &str, _: Roles, e: &mut Errors) {

@@ -152,29 +152,17 @@ impl TangentialModel for LiggghtsHistory {
     /// (`model hooke`), no damping (ξ = 0: with it LIGGGHTS's sticking force may leave
     /// the cone, see the tests below); sliding: −μ|F_n| v̂_t.
     fn examples() -> Vec<TangentialExample> {
-        let (stick, slide) = (registry::sticking_input(), registry::sliding_input());
-        let mut out = Vec::new();
-        for model in [LiggghtsModel::Hertz, LiggghtsModel::Hooke] {
+        let hooke_stiffness = registry::sticking_input().normal_stiffness;
+        [
+            (LiggghtsModel::Hertz, registry::mindlin_stiffness()),
+            (LiggghtsModel::Hooke, hooke_stiffness),
+        ]
+        .into_iter()
+        .flat_map(|(model, k)| {
             let law = TangentialLaw::LiggghtsHistory(LiggghtsHistory { model, xi: 0.0 });
-            let k = match model {
-                LiggghtsModel::Hertz => {
-                    8.0 * stick.effective_shear_modulus
-                        * (stick.effective_radius * stick.overlap).sqrt()
-                }
-                LiggghtsModel::Hooke => stick.normal_stiffness,
-            };
-            out.push(TangentialExample {
-                law,
-                input: stick,
-                force: -stick.tangential_velocity * (k * stick.dt),
-            });
-            out.push(TangentialExample {
-                law,
-                input: slide,
-                force: registry::sliding_force(&slide),
-            });
-        }
-        out
+            registry::spring_examples(law, k)
+        })
+        .collect()
     }
 
     fn needs(&self) -> Needs {

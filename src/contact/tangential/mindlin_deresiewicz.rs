@@ -100,21 +100,8 @@ impl TangentialModel for MindlinDeresiewicz {
 
     /// First loading from rest with k Δs < μΔN: θ = 1, F = −8G*√(R*δ) v_t Δt (eq 19); sliding: −μF_n v̂_t.
     fn examples() -> Vec<TangentialExample> {
-        let (stick, slide) = (registry::sticking_input(), registry::sliding_input());
-        let k =
-            8.0 * stick.effective_shear_modulus * (stick.effective_radius * stick.overlap).sqrt();
-        vec![
-            TangentialExample {
-                law: TangentialLaw::MindlinDeresiewicz(MindlinDeresiewicz {}),
-                input: stick,
-                force: -stick.tangential_velocity * (k * stick.dt),
-            },
-            TangentialExample {
-                law: TangentialLaw::MindlinDeresiewicz(MindlinDeresiewicz {}),
-                input: slide,
-                force: registry::sliding_force(&slide),
-            },
-        ]
+        let law = TangentialLaw::MindlinDeresiewicz(MindlinDeresiewicz {});
+        registry::spring_examples(law, registry::mindlin_stiffness())
     }
 
     fn needs(&self) -> Needs {

@@ -38,21 +38,8 @@ impl TangentialModel for MindlinNoSlip {
 
     /// F = −8G*√(R*δ) v_t Δt from rest (Rojek eqs 11–13); sliding: −μF_n v̂_t.
     fn examples() -> Vec<TangentialExample> {
-        let (stick, slide) = (registry::sticking_input(), registry::sliding_input());
-        let k =
-            8.0 * stick.effective_shear_modulus * (stick.effective_radius * stick.overlap).sqrt();
-        vec![
-            TangentialExample {
-                law: TangentialLaw::MindlinNoSlip(MindlinNoSlip {}),
-                input: stick,
-                force: -stick.tangential_velocity * (k * stick.dt),
-            },
-            TangentialExample {
-                law: TangentialLaw::MindlinNoSlip(MindlinNoSlip {}),
-                input: slide,
-                force: registry::sliding_force(&slide),
-            },
-        ]
+        let law = TangentialLaw::MindlinNoSlip(MindlinNoSlip {});
+        registry::spring_examples(law, registry::mindlin_stiffness())
     }
 
     fn needs(&self) -> Needs {

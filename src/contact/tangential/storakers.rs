@@ -35,20 +35,8 @@ impl TangentialModel for Storakers {
 
     /// F = −β k_n v_t Δt from rest (Rojek eq 21, β = 1); sliding: −μF_n v̂_t.
     fn examples() -> Vec<TangentialExample> {
-        let (stick, slide) = (registry::sticking_input(), registry::sliding_input());
-        let k = stick.normal_stiffness;
-        vec![
-            TangentialExample {
-                law: TangentialLaw::Storakers(Storakers { beta: 1.0 }),
-                input: stick,
-                force: -stick.tangential_velocity * (k * stick.dt),
-            },
-            TangentialExample {
-                law: TangentialLaw::Storakers(Storakers { beta: 1.0 }),
-                input: slide,
-                force: registry::sliding_force(&slide),
-            },
-        ]
+        let law = TangentialLaw::Storakers(Storakers { beta: 1.0 });
+        registry::spring_examples(law, registry::sticking_input().normal_stiffness)
     }
 
     fn check(&self, path: &str, _: Roles, e: &mut Errors) {

@@ -81,20 +81,8 @@ impl TangentialModel for WaltonBraun {
 
     /// From rest F* = F = 0, so k̃ = k₀ and F = −k₀ v_t Δt (eqs 26–27); sliding: −μF_n v̂_t.
     fn examples() -> Vec<TangentialExample> {
-        let (stick, slide) = (registry::sticking_input(), registry::sliding_input());
-        let k = 1e6;
-        vec![
-            TangentialExample {
-                law: TangentialLaw::WaltonBraun(WaltonBraun { stiffness: 1e6 }),
-                input: stick,
-                force: -stick.tangential_velocity * (k * stick.dt),
-            },
-            TangentialExample {
-                law: TangentialLaw::WaltonBraun(WaltonBraun { stiffness: 1e6 }),
-                input: slide,
-                force: registry::sliding_force(&slide),
-            },
-        ]
+        let law = TangentialLaw::WaltonBraun(WaltonBraun { stiffness: 1e6 });
+        registry::spring_examples(law, 1e6)
     }
 
     fn check(&self, path: &str, _: Roles, e: &mut Errors) {
