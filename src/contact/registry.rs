@@ -89,6 +89,23 @@ pub fn sliding_force(input: &TangentialInput) -> Vec3 {
     -input.tangential_velocity.normalize() * (input.friction * input.normal_force)
 }
 
+/// The overlaps every normal law is checked at, m, and the loading rate, m/s.
+pub const OVERLAPS: [f64; 4] = [1e-8, 1e-7, 1e-6, 5e-6];
+pub const LOADING_RATE: f64 = 0.01;
+
+/// A normal law's examples: a fresh contact loaded to each of `OVERLAPS` at
+/// `LOADING_RATE`, where its source gives `force(δ)`.
+pub fn loading_examples(law: NormalLaw, force: impl Fn(f64) -> f64) -> Vec<NormalExample> {
+    OVERLAPS
+        .map(|overlap| NormalExample {
+            law,
+            overlap,
+            rate: LOADING_RATE,
+            force: force(overlap),
+        })
+        .to_vec()
+}
+
 /// The two examples of a spring law of stiffness `k` from rest: sticking, F = −k v_t Δt;
 /// sliding, Coulomb's limit −μF_n v̂_t.
 pub fn spring_examples(law: TangentialLaw, k: f64) -> Vec<TangentialExample> {

@@ -76,14 +76,7 @@ impl NormalModel for Hertz {
     /// F = (4/3) E* √R* δ^{3/2} (Rojek eq 2).
     fn examples() -> Vec<NormalExample> {
         let k = 4.0 / 3.0 * registry::EFFECTIVE_MODULUS * registry::EFFECTIVE_RADIUS.sqrt();
-        [1e-8, 1e-7, 1e-6, 5e-6]
-            .map(|overlap: f64| NormalExample {
-                law: NormalLaw::Hertz(Hertz {}),
-                overlap,
-                rate: 0.01,
-                force: k * overlap.powf(1.5),
-            })
-            .to_vec()
+        registry::loading_examples(NormalLaw::Hertz(Hertz {}), |overlap| k * overlap.powf(1.5))
     }
 
     fn needs(&self) -> Needs {

@@ -12,7 +12,7 @@
 
 use super::NormalLaw;
 use super::{NormalModel, NormalResponse};
-use crate::contact::registry::NormalExample;
+use crate::contact::registry::{self, NormalExample};
 use crate::error::Errors;
 use crate::material::PairProperties;
 
@@ -50,18 +50,11 @@ impl NormalModel for Hysteretic {
 
     /// Loading (dδ/dt > 0): F = k_n (1 + γ) δ (Zhong eq 17).
     fn examples() -> Vec<NormalExample> {
-        let law = Hysteretic {
+        let law = NormalLaw::Hysteretic(Hysteretic {
             stiffness: 1e7,
             hysteresis: 0.5,
-        };
-        [1e-8, 1e-7, 1e-6, 5e-6]
-            .map(|overlap| NormalExample {
-                law: NormalLaw::Hysteretic(law),
-                overlap,
-                rate: 0.01,
-                force: 1e7 * 1.5 * overlap,
-            })
-            .to_vec()
+        });
+        registry::loading_examples(law, |overlap| 1e7 * 1.5 * overlap)
     }
 
     fn check(&self, path: &str, e: &mut Errors) {

@@ -52,19 +52,14 @@ impl NormalModel for KuwabaraKono {
 
     /// F = (4/3) E* √R* (δ^{3/2} + (3/2) A δ^{1/2} dδ/dt) (Zhong eq 15).
     fn examples() -> Vec<NormalExample> {
-        let law = KuwabaraKono {
+        let law = NormalLaw::KuwabaraKono(KuwabaraKono {
             dissipation_time: 1e-7,
-        };
+        });
         let k = 4.0 / 3.0 * registry::EFFECTIVE_MODULUS * registry::EFFECTIVE_RADIUS.sqrt();
-        let rate = 0.01;
-        [1e-8, 1e-7, 1e-6, 5e-6]
-            .map(|overlap: f64| NormalExample {
-                law: NormalLaw::KuwabaraKono(law),
-                overlap,
-                rate,
-                force: k * (overlap.powf(1.5) + 1.5 * 1e-7 * overlap.sqrt() * rate),
-            })
-            .to_vec()
+        let rate = registry::LOADING_RATE;
+        registry::loading_examples(law, |overlap| {
+            k * (overlap.powf(1.5) + 1.5 * 1e-7 * overlap.sqrt() * rate)
+        })
     }
 
     fn needs(&self) -> Needs {

@@ -14,7 +14,7 @@ use crate::contact::damping::{Constant, Damping};
 use crate::contact::model::{
     LiggghtsContact, LiggghtsDeck, LiggghtsProperty, LiggghtsRefusal, LiggghtsScene, LiggghtsValues,
 };
-use crate::contact::registry::NormalExample;
+use crate::contact::registry::{self, NormalExample};
 use crate::error::Errors;
 use crate::material::PairProperties;
 
@@ -125,15 +125,8 @@ impl NormalModel for Linear {
 
     /// F = k_n δ.
     fn examples() -> Vec<NormalExample> {
-        let law = Linear { stiffness: 1e7 };
-        [1e-8, 1e-7, 1e-6, 5e-6]
-            .map(|overlap| NormalExample {
-                law: NormalLaw::Linear(law),
-                overlap,
-                rate: 0.01,
-                force: 1e7 * overlap,
-            })
-            .to_vec()
+        let law = NormalLaw::Linear(Linear { stiffness: 1e7 });
+        registry::loading_examples(law, |overlap| 1e7 * overlap)
     }
 
     fn check(&self, path: &str, e: &mut Errors) {

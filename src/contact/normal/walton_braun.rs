@@ -14,7 +14,7 @@
 
 use super::NormalLaw;
 use super::{NormalModel, NormalResponse, PeakOverlap};
-use crate::contact::registry::NormalExample;
+use crate::contact::registry::{self, NormalExample};
 use crate::error::Errors;
 use crate::material::PairProperties;
 
@@ -64,18 +64,11 @@ impl NormalModel for WaltonBraun {
 
     /// Loading branch: F = k₁ δ (Zhong eq 16).
     fn examples() -> Vec<NormalExample> {
-        let law = WaltonBraun {
+        let law = NormalLaw::WaltonBraun(WaltonBraun {
             loading_stiffness: 1e7,
             unloading_stiffness: 3e7,
-        };
-        [1e-8, 1e-7, 1e-6, 5e-6]
-            .map(|overlap| NormalExample {
-                law: NormalLaw::WaltonBraun(law),
-                overlap,
-                rate: 0.01,
-                force: 1e7 * overlap,
-            })
-            .to_vec()
+        });
+        registry::loading_examples(law, |overlap| 1e7 * overlap)
     }
 
     fn check(&self, path: &str, e: &mut Errors) {

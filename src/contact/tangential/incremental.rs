@@ -9,6 +9,7 @@
 //! at a lower stiffness than loading leaves a residual force, as in the paper's
 //! formulation (unlike a total-spring law F_t = −k_t(δ) ξ_s).
 
+use super::TangentialInput;
 use super::cundall_strack::rotate_into_plane;
 use crate::particles::Vec3;
 
@@ -26,6 +27,20 @@ pub fn cap_to_cone(force: Vec3, friction: f64, normal_force: f64) -> Vec3 {
     } else {
         force
     }
+}
+
+/// `incremental_force` of a law of stiffness `stiffness` at the contact `input`.
+#[inline(always)]
+pub fn incremental_step(force: &mut Vec3, input: &TangentialInput, stiffness: f64) -> Vec3 {
+    incremental_force(
+        force,
+        &input.normal,
+        &input.tangential_velocity,
+        input.dt,
+        stiffness,
+        input.friction,
+        input.normal_force,
+    )
 }
 
 #[inline]

@@ -10,7 +10,7 @@
 //! law, `mindlin_deresiewicz.rs`). History: the tangential force vector (N).
 //! Stiffness for the time step: k_t at the current overlap.
 
-use super::incremental::{incremental_force, spring_energy};
+use super::incremental::{incremental_step, spring_energy};
 use super::{TangentialInput, TangentialLaw, TangentialModel};
 use crate::contact::model::Needs;
 use crate::contact::registry::{self, TangentialExample};
@@ -51,15 +51,7 @@ impl TangentialModel for MindlinNoSlip {
 
     #[inline(always)]
     fn force(&self, input: &TangentialInput, force: &mut Vec3) -> Vec3 {
-        incremental_force(
-            force,
-            &input.normal,
-            &input.tangential_velocity,
-            input.dt,
-            self.stiffness(input),
-            input.friction,
-            input.normal_force,
-        )
+        incremental_step(force, input, self.stiffness(input))
     }
 
     fn stiffness(&self, input: &TangentialInput) -> f64 {

@@ -8,7 +8,7 @@
 //! Used with any normal law, it ties the tangential spring to that law's stiffness.
 //! History: the tangential force vector (N). Stiffness for the time step: β k_n.
 
-use super::incremental::{incremental_force, spring_energy};
+use super::incremental::{incremental_step, spring_energy};
 use super::{TangentialInput, TangentialLaw, TangentialModel};
 use crate::contact::model::Roles;
 use crate::contact::registry::{self, TangentialExample};
@@ -45,15 +45,7 @@ impl TangentialModel for Storakers {
 
     #[inline(always)]
     fn force(&self, input: &TangentialInput, force: &mut Vec3) -> Vec3 {
-        incremental_force(
-            force,
-            &input.normal,
-            &input.tangential_velocity,
-            input.dt,
-            self.stiffness(input),
-            input.friction,
-            input.normal_force,
-        )
+        incremental_step(force, input, self.stiffness(input))
     }
 
     fn stiffness(&self, input: &TangentialInput) -> f64 {
