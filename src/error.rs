@@ -1,6 +1,7 @@
 //! The error kinds of tamp and the exit codes the CLI contract maps them to:
 //! 2 for bad input (the message names the field and the rule), 3 for a run that
-//! became unstable (the message names the particle or contact and the step).
+//! became unstable (the message names the particle or contact and the step), 128 +
+//! the signal's number for a run stopped by SIGINT or SIGTERM.
 
 use thiserror::Error;
 
@@ -17,6 +18,16 @@ pub enum TampError {
     /// The run stopped because it became unstable; nothing non-finite was written.
     #[error("unstable at step {step} (t = {time:.6e} s): {what}")]
     Unstable { step: u64, time: f64, what: String },
+
+    /// SIGINT or SIGTERM stopped the run after a whole step; `next` says what was
+    /// saved and how to go on.
+    #[error("stopped by {} after step {step} (t = {time:.6e} s): {next}", crate::interrupt::name(*.signal))]
+    Interrupted {
+        signal: i32,
+        step: u64,
+        time: f64,
+        next: String,
+    },
 
     #[error("{context}: {source}")]
     Io {
@@ -58,6 +69,7 @@ impl TampError {
         match self {
             TampError::Input { .. } | TampError::InputMany(_) => 2,
             TampError::Unstable { .. } => 3,
+            TampError::Interrupted { signal, .. } => 128 + signal,
             TampError::Io { .. } | TampError::Other(_) => 1,
         }
     }

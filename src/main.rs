@@ -12,7 +12,7 @@ use tamp::verify::{self, Tier};
     name = "tamp",
     version,
     about = "Verification-first DEM for powder packing and die compaction",
-    after_help = "Exit codes: 0 ok; 1 a verification or comparison failed, or a file could not be read or written (the message names it); 2 bad input (the message names the field and the rule); 3 the run became unstable (the message names the particle or contact and the step)."
+    after_help = "Exit codes: 0 ok; 1 a verification or comparison failed, or a file could not be read or written (the message names it); 2 bad input (the message names the field and the rule); 3 the run became unstable (the message names the particle or contact and the step); 130/143 `tamp run` stopped by SIGINT/SIGTERM after a whole step (a checkpoint is written when output.checkpoint_every is set)."
 )]
 struct Cli {
     #[command(subcommand)]
@@ -142,6 +142,12 @@ enum Study {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    if let Command::Run { quiet, .. } = cli.command {
+        tamp::output::progress::set_quiet(quiet);
+        if let Err(e) = tamp::interrupt::install() {
+            eprintln!("warning: SIGINT and SIGTERM will end the run at once: {e}");
+        }
+    }
     let result = match cli.command {
         Command::Run {
             scene,

@@ -55,6 +55,33 @@ const OUTPUTS: &[&str] = &[
 ];
 const CHECKPOINT: &str = "checkpoint.json";
 
+/// The error of a run stopped by a signal after a whole step: what was kept and the
+/// command that goes on from it.
+pub fn interrupted(
+    signal: i32,
+    sim: &Simulation,
+    scene_path: &Path,
+    out_dir: &Path,
+    checkpoint_every: u64,
+) -> TampError {
+    let next = if checkpoint_every > 0 {
+        format!(
+            "checkpoint written to {}; go on with `tamp run {} --out {} --resume`",
+            out_dir.join(CHECKPOINT).display(),
+            scene_path.display(),
+            out_dir.display()
+        )
+    } else {
+        "nothing was saved (output.checkpoint_every is 0) and no output was written; set it to make runs resumable".to_string()
+    };
+    TampError::Interrupted {
+        signal,
+        step: sim.step,
+        time: sim.time,
+        next,
+    }
+}
+
 pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool, resume: bool) -> Result<Summary> {
     let (scene, sha) = scene::load(scene_path)?;
     let checkpoint_every = scene.output.checkpoint_every;
@@ -137,7 +164,8 @@ pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool, resume: bool) -
             write_frame(&vtk_dir, frames, &sim)?;
             frames += 1;
         }
-        if checkpoint_every > 0 && sim.step % checkpoint_every == 0 {
+        let signal = crate::interrupt::received();
+        if checkpoint_every > 0 && (sim.step % checkpoint_every == 0 || signal.is_some()) {
             let state = RunState {
                 sim: SimState::capture(&sim),
                 series_rows: Cow::Borrowed(&series.rows),
@@ -146,11 +174,22 @@ pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool, resume: bool) -
             };
             checkpoint::write_checkpoint(&checkpoint_path, &Checkpoint::new(&sha, state))?;
         }
+        if let Some(signal) = signal {
+            progress.finish();
+            return Err(interrupted(
+                signal,
+                &sim,
+                scene_path,
+                out_dir,
+                checkpoint_every,
+            ));
+        }
         if sim.step % 256 == 0 {
             progress.set(sim.step);
         }
     }
     progress.finish();
+    sim.check_energy_at_end()?;
     if sim.step % every != 0 {
         series.record(&sim)?;
     }

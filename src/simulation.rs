@@ -19,7 +19,7 @@ use crate::contact::{ContactForce, ContactGeometry, ContactLaw};
 use crate::detect::NeighborList;
 use crate::error::{Result, TampError};
 use crate::generate::pour::Source;
-use crate::generate::rsi;
+use crate::generate::rsi::Placed;
 use crate::growth::Growth;
 use crate::integrate;
 use crate::material::PairProperties;
@@ -446,24 +446,22 @@ impl Simulation {
         let mut sources = std::mem::take(&mut self.sources);
         for src in sources.iter_mut().filter(|s| s.is_due(t)) {
             src.next += src.every;
+            // One grid per event, O(N), so that each of its draws is O(1).
+            let mut placed = Placed::with(
+                &self.neighbors.space,
+                &self.particles.position,
+                &self.particles.radius,
+                src.radius.max_radius(),
+            );
             for _ in 0..src.per_event.min(src.remaining) {
                 let r = *src
                     .pending_radius
                     .get_or_insert_with(|| src.radius.sample(&mut src.rng));
                 let walls = &self.walls;
                 let clear = |x: &Vec3, r: f64| Boundary::clear_of_all(walls, x, r);
-                let p = &self.particles;
-                let Some(x) = rsi::place(
-                    r,
-                    &src.region,
-                    &p.position,
-                    &p.radius,
-                    &clear,
-                    &self.neighbors.space,
-                    1.0,
-                    &mut src.rng,
-                    src.max_attempts,
-                ) else {
+                let Some(x) =
+                    placed.place(r, &src.region, &clear, 1.0, &mut src.rng, src.max_attempts)
+                else {
                     break; // no room now: this sphere waits for the next event
                 };
                 src.pending_radius = None;
@@ -502,7 +500,20 @@ impl Simulation {
             self.step()?;
             observe(self);
         }
-        Ok(())
+        self.check_energy_at_end()
+    }
+
+    /// The energy check of a run's last steps, which a run shorter than
+    /// `check_every`, or ending between two checks, would otherwise never make.
+    pub fn check_energy_at_end(&self) -> Result<()> {
+        if self.limits.check_every > 0
+            && !self.step.is_multiple_of(self.limits.check_every)
+            && !self.is_growing()
+        {
+            self.check_energy()
+        } else {
+            Ok(())
+        }
     }
 
     /// The run's stop, at the step that produced `what`: while a step is under way

@@ -119,6 +119,40 @@ fn ten_times_the_critical_step_stops_with_exit_3_and_a_diagnostic() {
     );
 }
 
+/// A run shorter than `stability.check_every` used to end without any energy
+/// check, so a step just past the stability limit of a linear spring
+/// (ω Δt ≈ 2.07 > 2) created energy and exited 0. The check now also runs after
+/// the last step.
+#[test]
+fn energy_created_before_the_first_periodic_check_stops_the_run() {
+    let s = json!({
+        "name": "two spheres on a spring stepped just past its limit",
+        "materials": [{"name": "glass", "density": 2500}],
+        "contact": {"normal": {"law": "linear", "stiffness": 1000}},
+        "particles": [
+            {"position": [0, 0, 0], "radius": 0.001, "material": "glass", "velocity": [0.01, 0, 0]},
+            {"position": [0.0021, 0, 0], "radius": 0.001, "material": "glass", "velocity": [-0.01, 0, 0]}
+        ],
+        "time_step": {"fixed": 1.5e-4},
+        "run": {"steps": 90},
+        "stability": {"check_every": 100}
+    });
+    let (_dir, scene, out) = scene_in_tempdir(&s);
+    let o = tamp(&[
+        "run",
+        scene.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(3), "{stderr}");
+    assert!(
+        stderr.contains("unstable at step 90") && stderr.contains("mechanical energy grew"),
+        "{stderr}"
+    );
+    assert!(!out.join("summary.json").exists());
+}
+
 #[test]
 fn verify_rejects_unknown_case_with_exit_2() {
     let o = tamp(&["verify", "--case", "no_such_case"]);

@@ -177,3 +177,33 @@ fn generate_stress_polydisperse() {
     }
     assert_eq!(bad, 0);
 }
+
+/// Issue 27 class 7: random sequential insertion was all-pairs, so a bed of N
+/// spheres cost O(N²) clearance tests (100 000 spheres took 32 s to place). With
+/// the cell grid, the pairs examined per draw must not grow with N at fixed solid
+/// fraction: counted, not timed, so the test holds on any machine.
+#[test]
+fn random_insertion_examines_a_bounded_number_of_pairs_per_draw() {
+    use tamp::generate::rsi::{InsertionBox, Placed};
+    let per_draw = |n: usize| {
+        // Side for a solid fraction of 0.2 with radius 0.5.
+        let side = (n as f64 * 4.0 / 3.0 * std::f64::consts::PI * 0.125 / 0.2).cbrt();
+        let region = InsertionBox {
+            lower: Vec3::zeros(),
+            upper: Vec3::new(side, side, side),
+        };
+        let mut rng = ChaCha8Rng::seed_from_u64(5);
+        let mut placed = Placed::new(&Space::open(), 1.0);
+        let mut draws = 0u64;
+        while placed.position.len() < n {
+            draws += 1;
+            placed.place(0.5, &region, &|_, _| true, 1.0, &mut rng, 1);
+        }
+        placed.pair_tests() as f64 / draws as f64
+    };
+    let (small, large) = (per_draw(1_000), per_draw(20_000));
+    assert!(
+        large < 1.5 * small && large < 30.0,
+        "pairs examined per draw: {small:.2} at N = 1000, {large:.2} at N = 20000"
+    );
+}

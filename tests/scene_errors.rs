@@ -510,3 +510,32 @@ fn inputs_whose_derived_quantities_overflow_are_named() {
     );
     assert!(stderr.contains("youngs_modulus"), "{stderr}");
 }
+
+/// Issue 27 class 4: sizes that cannot fit in memory used to abort the process
+/// (SIGABRT, "memory allocation of … bytes failed"). They are refused before
+/// anything is allocated, naming the field, the estimate and the memory available.
+#[test]
+fn scenes_too_large_for_memory_are_refused_before_allocating() {
+    let needles = |field: &'static str| [field, "GiB of memory", "this process can still use"];
+    let mut s = base();
+    s["insert"] = json!([{"count": 1_000_000_000u64, "radius": 0.001, "material": "glass",
+        "region": {"lower": [-10, -10, 0.01], "upper": [10, 10, 20]}}]);
+    expect_input_error(s, &needles("insert[0].count"));
+
+    let mut s = base();
+    s["walls"] = json!([{"material": "glass", "shape": {"kind": "height_field",
+        "x_range": [-1, 1], "y_range": [-1, 1], "expression": "0.0", "cells": [100000, 100000]}}]);
+    expect_input_error(s, &needles("walls[0].shape.cells"));
+
+    let mut s: Value = serde_json::from_str(include_str!(
+        "../verification/nial_die_compaction_small.scene.json"
+    ))
+    .unwrap();
+    s["die_compaction"]["particles"]["count"] = json!(1_000_000_000u64);
+    expect_input_error(s, &needles("die_compaction.particles.count"));
+
+    let mut s = base();
+    s["output"] = json!({"trajectory_every": 1});
+    s["run"] = json!({"steps": 1_000_000_000_000u64});
+    expect_input_error(s, &needles("output.trajectory_every"));
+}

@@ -53,6 +53,7 @@
 
 use super::distribution::each_positive_finite;
 use super::grid::CellGrid;
+use crate::output::progress::Progress;
 use crate::particles::Vec3;
 use crate::space::Space;
 use rand::RngExt;
@@ -124,6 +125,7 @@ pub fn deposit_at(
         top_z: floor,
         scratch: Vec::new(),
     };
+    let mut progress = Progress::new("deposit", radii.len() as u64, false);
     for (i, (&a, xy)) in radii.iter().zip(drops).enumerate() {
         // Start above every placed sphere so the fall meets the pile from above.
         let start = Vec3::new(xy[0], xy[1], pile.top_z + a + 2.0 * r_max);
@@ -131,7 +133,11 @@ pub fn deposit_at(
             .descend(start, a)
             .map_err(|e| format!("sphere {i} (radius {a}): {e}"))?;
         pile.place(p, a);
+        if i % 1024 == 0 {
+            progress.set(i as u64);
+        }
     }
+    progress.finish();
     Ok(pile.centres)
 }
 

@@ -5,7 +5,16 @@
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use std::io::IsTerminal;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
+
+/// `--quiet` for stages that run deep inside the scene build (generation), where
+/// threading the flag through every caller of `scene::build` would serve no one.
+static QUIET: AtomicBool = AtomicBool::new(false);
+
+pub fn set_quiet(quiet: bool) {
+    QUIET.store(quiet, Ordering::Relaxed);
+}
 
 const LOG_EVERY: Duration = Duration::from_secs(60);
 
@@ -24,6 +33,7 @@ pub struct Progress {
 impl Progress {
     /// A bar for `stage` that will count to `len`.
     pub fn new(stage: &str, len: u64, quiet: bool) -> Self {
+        let quiet = quiet || QUIET.load(Ordering::Relaxed);
         let bar = ProgressBar::with_draw_target(Some(len), ProgressDrawTarget::hidden());
         bar.set_style(
             ProgressStyle::with_template(

@@ -29,7 +29,7 @@
 
 use crate::checkpoint::SimState;
 use crate::error::{Result, TampError};
-use crate::generate::rsi::{self, InsertionBox};
+use crate::generate::rsi::{InsertionBox, Placed};
 use crate::measure::{Region, packing::packing_fraction};
 use crate::output::progress::Progress;
 use crate::particles::Vec3;
@@ -286,19 +286,13 @@ fn loose_column(scene: &Scene, dc: &DieCompactionSpec) -> Result<(Vec<ParticleSp
         upper: Vec3::new(die_radius, die_radius, height),
     };
     let inside = |x: &Vec3, r: f64| x.x.hypot(x.y) + r <= die_radius;
-    let (mut position, mut radius) = (Vec::new(), Vec::new());
+    let mut placed = Placed::new(&Space::open(), 2.0 * radii.first().copied().unwrap_or(0.0));
+    let mut progress = Progress::new("place", radii.len() as u64, false);
     for (k, &r) in radii.iter().enumerate() {
-        let Some(x) = rsi::place(
-            r,
-            &region,
-            &position,
-            &radius,
-            &inside,
-            &Space::open(),
-            1.0,
-            &mut rng,
-            INSERTION_ATTEMPTS,
-        ) else {
+        if placed
+            .place(r, &region, &inside, 1.0, &mut rng, INSERTION_ATTEMPTS)
+            .is_none()
+        {
             return Err(TampError::input(
                 "die_compaction.fill.loose_fraction",
                 format!(
@@ -306,10 +300,15 @@ fn loose_column(scene: &Scene, dc: &DieCompactionSpec) -> Result<(Vec<ParticleSp
                     dc.fill.loose_fraction
                 ),
             ));
-        };
-        position.push(x);
-        radius.push(r);
+        }
+        if k % 1024 == 0 {
+            progress.set(k as u64);
+        }
     }
+    progress.finish();
+    let Placed {
+        position, radius, ..
+    } = placed;
     let mut order: Vec<usize> = (0..position.len()).collect();
     order.sort_by(|&a, &b| position[a].z.total_cmp(&position[b].z));
     let particles = order
@@ -329,6 +328,7 @@ fn loose_column(scene: &Scene, dc: &DieCompactionSpec) -> Result<(Vec<ParticleSp
 /// Fill and flatten: the specimen the press stage starts from.
 pub fn prepare(scene: &Scene, quiet: bool) -> Result<Specimen> {
     let dc = spec(scene)?;
+    crate::scene::memory::check(scene, None)?;
     let g = gravity(scene)? * dc.fill.gravity_scale;
     let (column, column_height) = loose_column(scene, dc)?;
 
@@ -356,6 +356,7 @@ pub fn prepare(scene: &Scene, quiet: bool) -> Result<Specimen> {
     let mut fill_at_rest = false;
     while sim.step < built.steps {
         sim.step()?;
+        stop_if_signalled(&sim, "filling")?;
         if sim.step % REST_CHECK_EVERY == 0 {
             progress.set(sim.step);
             if sim.kinetic_energy() < at_rest {
@@ -407,6 +408,7 @@ pub fn prepare(scene: &Scene, quiet: bool) -> Result<Specimen> {
     let mut progress = Progress::new("flatten", built.steps, quiet);
     while sim.step < built.steps {
         sim.step()?;
+        stop_if_signalled(&sim, "flattening")?;
         if sim.step % REST_CHECK_EVERY == 0 {
             progress.set(sim.step);
         }
@@ -451,6 +453,19 @@ pub fn press_scene(scene: &Scene, specimen: &Specimen) -> Result<Scene> {
         gravity(scene)?,
         dc.press.ramp_time,
     )
+}
+
+/// Stop after a whole step of a stage that is not checkpointed when a signal came.
+fn stop_if_signalled(sim: &Simulation, stage: &str) -> Result<()> {
+    match crate::interrupt::received() {
+        None => Ok(()),
+        Some(signal) => Err(TampError::Interrupted {
+            signal,
+            step: sim.step,
+            time: sim.time,
+            next: format!("the {stage} is not checkpointed; a new run starts from the filling"),
+        }),
+    }
 }
 
 /// Press a specimen under the scene's contact law and record the ramp. `resume`
@@ -531,6 +546,26 @@ pub fn press(
             record(&sim, &mut out)?;
             progress.set(next as u64);
             continue;
+        }
+        if let Some(signal) = crate::interrupt::received() {
+            progress.finish();
+            if every > 0 {
+                out.steps = sim.step;
+                checkpoint(&PressState {
+                    pressing: out.clone(),
+                    sim: SimState::capture(&sim),
+                })?;
+            }
+            return Err(TampError::Interrupted {
+                signal,
+                step: sim.step,
+                time: sim.time,
+                next: if every > 0 {
+                    "the pressing was checkpointed".into()
+                } else {
+                    "nothing was saved (output.checkpoint_every is 0)".into()
+                },
+            });
         }
         if every > 0 && sim.step > 0 && sim.step % every == 0 {
             out.steps = sim.step;

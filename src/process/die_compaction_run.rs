@@ -97,7 +97,25 @@ pub fn run_scene(
     let mut write = |state: &PressState| {
         checkpoint::write_checkpoint(&checkpoint_path, &Checkpoint::new(&sha, state))
     };
-    let pressing = die_compaction::press(&scene, &specimen, quiet, state, every, &mut write)?;
+    let pressing = die_compaction::press(&scene, &specimen, quiet, state, every, &mut write)
+        .map_err(|e| match e {
+            TampError::Interrupted {
+                signal,
+                step,
+                time,
+                next,
+            } if every > 0 => TampError::Interrupted {
+                signal,
+                step,
+                time,
+                next: format!(
+                    "{next}; go on with `tamp run {} --out {} --resume`",
+                    scene_path.display(),
+                    out_dir.display()
+                ),
+            },
+            other => other,
+        })?;
     let mut csv = csv::Writer::from_writer(Vec::new());
     for r in &pressing.records {
         csv.serialize(r)

@@ -7,10 +7,11 @@ use crate::contact::ContactLaw;
 use crate::detect::{Detector, NeighborList};
 use crate::error::{Result, TampError};
 use crate::generate::pour::Source;
-use crate::generate::rsi::{self, InsertionBox};
+use crate::generate::rsi::{InsertionBox, Placed};
 use crate::generate::{ballistic, random_unit};
 use crate::growth::Growth;
 use crate::material::{Hollomon, Material, PairTable};
+use crate::output::progress::Progress;
 use crate::particles::{Motion, Particles, Vec3};
 use crate::simulation::{Simulation, StabilityLimits};
 use crate::space::Space;
@@ -132,6 +133,7 @@ fn check_speeds(scene: &Scene, sim: &Simulation) -> Result<Vec<String>> {
 }
 
 pub fn build(scene: &Scene) -> Result<BuiltScene> {
+    super::memory::check(scene, None)?;
     let materials: Vec<Material> = scene
         .materials
         .iter()
@@ -392,6 +394,7 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
         (None, None) => unreachable!("validated"),
     };
     check_range(scene, &sim, steps)?;
+    super::memory::check(scene, Some(steps))?;
     warnings.extend(check_speeds(scene, &sim)?);
     Ok(BuiltScene {
         sim,
@@ -495,28 +498,29 @@ fn insert_random(
     let region = insertion_box(&ins.region);
     let law = ins.radius.distribution();
     let clear = |x: &Vec3, r: f64| Boundary::clear_of_all(walls, x, r);
-    for placed in 0..ins.count {
+    let mut placed = Placed::with(
+        space,
+        &particles.position,
+        &particles.radius,
+        law.max_radius(),
+    );
+    let mut progress = Progress::new(&format!("insert[{index}]"), ins.count as u64, false);
+    for count in 0..ins.count {
         let r = law.sample(rng);
-        let position = rsi::place(
-            r,
-            &region,
-            &particles.position,
-            &particles.radius,
-            &clear,
-            space,
-            placement_scale,
-            rng,
-            ins.max_attempts,
-        )
-        .ok_or_else(|| {
-            TampError::input(
-                format!("insert[{index}].count"),
-                format!(
-                    "placed only {placed} of {} particles in {} attempts; the region is too full",
-                    ins.count, ins.max_attempts
-                ),
-            )
-        })?;
+        let position = placed
+            .place(r, &region, &clear, placement_scale, rng, ins.max_attempts)
+            .ok_or_else(|| {
+                TampError::input(
+                    format!("insert[{index}].count"),
+                    format!(
+                        "placed only {count} of {} particles in {} attempts; the region is too full",
+                        ins.count, ins.max_attempts
+                    ),
+                )
+            })?;
+        if count % 1024 == 0 {
+            progress.set(count as u64);
+        }
         let velocity = random_unit(rng) * ins.speed;
         let omega = random_unit(rng) * ins.spin;
         particles.push(
@@ -530,6 +534,7 @@ fn insert_random(
             Motion::Free,
         );
     }
+    progress.finish();
     Ok(())
 }
 
