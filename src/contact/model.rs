@@ -14,6 +14,7 @@
 
 use crate::contact::damping::Damping;
 use crate::contact::damping::liggghts::LiggghtsModel;
+use crate::contact::lammps::{LammpsNormal, NoLammpsModel};
 use crate::contact::normal::NormalLaw;
 use crate::contact::registry::{NormalExample, TangentialExample};
 use crate::contact::states::ContactStates;
@@ -198,6 +199,15 @@ pub trait NormalModel: Copy + Debug + PartialEq {
     /// if it is one of them.
     fn liggghts(&self) -> Option<LiggghtsModel> {
         None
+    }
+
+    /// Its model in LAMMPS's `pair granular` (`tamp export-lammps`,
+    /// contact/lammps.rs), or why LAMMPS has none.
+    fn lammps(&self) -> Result<LammpsNormal, NoLammpsModel> {
+        Err(NoLammpsModel(format!(
+            "pair granular has no normal model with the physics of '{}'",
+            self.name()
+        )))
     }
 
     /// Its model in a LIGGGHTS 3.8 deck for this scene (`tamp export-liggghts`),
