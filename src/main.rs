@@ -96,6 +96,12 @@ enum Command {
         live: bool,
         #[arg(long, value_enum, default_value_t = Tier::Quick)]
         tier: Tier,
+        /// Only this peer's cases (repeatable; default: LIGGGHTS and LAMMPS).
+        #[arg(long = "peer", value_enum)]
+        peers: Vec<tamp::liggghts::crosscheck::Peer>,
+        /// Only these cases (repeatable; a named case runs whatever its tier).
+        #[arg(long = "case")]
+        cases: Vec<String>,
         #[arg(long, default_value = "report")]
         report: PathBuf,
     },
@@ -223,8 +229,14 @@ fn main() -> ExitCode {
         Command::Compare { a, b, tolerances } => {
             tamp::compare::run_cli(&a, &b, tolerances.as_deref())
         }
-        Command::Crosscheck { live, tier, report } => {
-            tamp::liggghts::crosscheck::run_cli(live, tier, &report)
+        Command::Crosscheck {
+            live,
+            tier,
+            peers,
+            cases,
+            report,
+        } => {
+            tamp::liggghts::crosscheck::run_cli(live, tier, &peers, &cases, &report)
         }
         Command::Study {
             study:
