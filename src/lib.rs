@@ -11,6 +11,7 @@ pub mod expression;
 pub mod generate;
 pub mod growth;
 pub mod integrate;
+pub mod lammps;
 pub mod liggghts;
 pub mod material;
 pub mod measure;

@@ -329,6 +329,17 @@ pub trait TangentialModel: Copy + Debug + PartialEq {
     /// `path` is where the scene holds the law (`contact.tangential`).
     fn check(&self, _path: &str, _roles: Roles, _errors: &mut Errors) {}
 
+    /// Its `tangential` model in LAMMPS's `pair granular` (`tamp export-lammps`): the
+    /// words after `tangential`, with μ written as `{mu}`, or why LAMMPS has none. No
+    /// law has one yet: LAMMPS's `linear_history` and `mindlin*` have not been checked
+    /// against tamp's spring laws formula by formula (issue 28).
+    fn lammps(&self) -> Result<String, NoLammpsModel> {
+        Err(NoLammpsModel(format!(
+            "'{}' is not mapped to a LAMMPS tangential model (linear_history, mindlin, mindlin_rescale, mindlin/force have not been checked against it formula by formula)",
+            self.name()
+        )))
+    }
+
     /// Take the parameters the law derives from the other roles (LIGGGHTS's
     /// `tangential history`); called once when the scene's law is assembled.
     fn bind(&mut self, _roles: Roles) {}
