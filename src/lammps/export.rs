@@ -45,7 +45,9 @@ fn pair_model(scene: &Scene) -> std::result::Result<String, Vec<(String, String)
         .map_err(|why| refused.push(("contact.normal.law".to_string(), why.0)))
         .ok();
     let damping = match (&scene.contact.damping, normal) {
-        (None, _) => Some(("none", 0.0)),
+        // LAMMPS 22 Jul 2025 refuses `damping none` ("Must specify damping granular
+        // model"); `velocity` with η = 0 adds a force of exactly zero.
+        (None, _) => Some(("velocity", 0.0)),
         (Some(d), Some(n)) => d
             .lammps(n)
             .map(|d| (d.keyword, d.coefficient))
@@ -364,7 +366,7 @@ mod tests {
         let s = two_spheres(r#"{"normal": {"law": "linear", "stiffness": 1e6}}"#, "");
         assert_eq!(
             pair_model(&s).unwrap(),
-            "hooke 1e6 0e0 damping none tangential linear_nohistory 0 0"
+            "hooke 1e6 0e0 damping velocity tangential linear_nohistory 0 0"
         );
     }
 
