@@ -12,6 +12,7 @@ pub mod generate;
 pub mod growth;
 pub mod integrate;
 pub mod interrupt;
+pub mod lammps;
 pub mod liggghts;
 pub mod material;
 pub mod measure;

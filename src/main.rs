@@ -63,6 +63,21 @@ enum Command {
         #[arg(long)]
         seed: Option<u64>,
     },
+    /// Write a LAMMPS deck (in.tamp, particles.data) for SCENE into DIR, for LAMMPS's
+    /// pair_style granular (22 Jul 2025; .ci/install-lammps).
+    ExportLammps {
+        scene: PathBuf,
+        #[arg(long)]
+        out: PathBuf,
+        /// Steps between frames of dump.lammps (default: the scene's trajectory_every,
+        /// else its series_every, else about 100 frames); the final state always goes
+        /// to final.lammps.
+        #[arg(long)]
+        dump_every: Option<u64>,
+        /// Replace the scene's seed (a new random placement, the same scene otherwise).
+        #[arg(long)]
+        seed: Option<u64>,
+    },
     /// Convert a LIGGGHTS dump to trajectory.csv and measure its last frame
     /// (quantities.csv) in DIR.
     ImportLiggghtsDump {
@@ -96,6 +111,12 @@ enum Command {
         live: bool,
         #[arg(long, value_enum, default_value_t = Tier::Quick)]
         tier: Tier,
+        /// Only this peer's cases (repeatable; default: LIGGGHTS and LAMMPS).
+        #[arg(long = "peer", value_enum)]
+        peers: Vec<tamp::liggghts::crosscheck::Peer>,
+        /// Only these cases (repeatable; a named case runs whatever its tier).
+        #[arg(long = "case")]
+        cases: Vec<String>,
         #[arg(long, default_value = "report")]
         report: PathBuf,
     },
@@ -191,6 +212,23 @@ fn main() -> ExitCode {
             json,
             report,
         } => verify::run_cli(tier, &cases, json.as_deref(), &report),
+        Command::ExportLammps {
+            scene,
+            out,
+            dump_every,
+            seed,
+        } => tamp::lammps::export::export_file(&scene, &out, dump_every, seed).map(|x| {
+            println!(
+                "exported {} particles, {} steps of {:e} s to {} ({}); run: cd {} && lmp -in in.tamp",
+                x.particles,
+                x.steps,
+                x.dt,
+                out.display(),
+                x.files.join(", "),
+                out.display()
+            );
+            0
+        }),
         Command::ExportLiggghts {
             scene,
             out,
@@ -229,8 +267,14 @@ fn main() -> ExitCode {
         Command::Compare { a, b, tolerances } => {
             tamp::compare::run_cli(&a, &b, tolerances.as_deref())
         }
-        Command::Crosscheck { live, tier, report } => {
-            tamp::liggghts::crosscheck::run_cli(live, tier, &report)
+        Command::Crosscheck {
+            live,
+            tier,
+            peers,
+            cases,
+            report,
+        } => {
+            tamp::liggghts::crosscheck::run_cli(live, tier, &peers, &cases, &report)
         }
         Command::Study {
             study:

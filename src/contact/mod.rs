@@ -31,6 +31,7 @@
 //!    docs/verification-notes.md) against a closed form or a peer code.
 
 pub mod damping;
+pub mod lammps;
 pub mod model;
 pub mod normal;
 pub mod registry;
@@ -168,6 +169,12 @@ impl ContactLaw {
                 let d = d
                     .with(&self.normal)
                     .expect("validation refuses liggghts_restitution beside this normal law");
+                self.with_tangential(n, d, v)
+            }
+            Some(Damping::Tsuji(d)) => {
+                let d = d
+                    .with(&self.normal)
+                    .expect("validation refuses tsuji beside this normal law");
                 self.with_tangential(n, d, v)
             }
         }

@@ -14,6 +14,7 @@
 
 use crate::contact::damping::Damping;
 use crate::contact::damping::liggghts::LiggghtsModel;
+use crate::contact::lammps::{LammpsNormal, NoLammpsModel};
 use crate::contact::normal::NormalLaw;
 use crate::contact::registry::{NormalExample, TangentialExample};
 use crate::contact::states::ContactStates;
@@ -200,6 +201,15 @@ pub trait NormalModel: Copy + Debug + PartialEq {
         None
     }
 
+    /// Its model in LAMMPS's `pair granular` (`tamp export-lammps`,
+    /// contact/lammps.rs), or why LAMMPS has none.
+    fn lammps(&self) -> Result<LammpsNormal, NoLammpsModel> {
+        Err(NoLammpsModel(format!(
+            "pair granular has no normal model with the physics of '{}'",
+            self.name()
+        )))
+    }
+
     /// Its model in a LIGGGHTS 3.8 deck for this scene (`tamp export-liggghts`),
     /// or the fields of the scene it cannot express; `None` when LIGGGHTS has no
     /// counterpart of the law.
@@ -318,6 +328,17 @@ pub trait TangentialModel: Copy + Debug + PartialEq {
     /// The rules of its own parameters, and of the other roles it works with;
     /// `path` is where the scene holds the law (`contact.tangential`).
     fn check(&self, _path: &str, _roles: Roles, _errors: &mut Errors) {}
+
+    /// Its `tangential` model in LAMMPS's `pair granular` (`tamp export-lammps`): the
+    /// words after `tangential`, with μ written as `{mu}`, or why LAMMPS has none. No
+    /// law has one yet: LAMMPS's `linear_history` and `mindlin*` have not been checked
+    /// against tamp's spring laws formula by formula (issue 28).
+    fn lammps(&self) -> Result<String, NoLammpsModel> {
+        Err(NoLammpsModel(format!(
+            "'{}' is not mapped to a LAMMPS tangential model (linear_history, mindlin, mindlin_rescale, mindlin/force have not been checked against it formula by formula)",
+            self.name()
+        )))
+    }
 
     /// Take the parameters the law derives from the other roles (LIGGGHTS's
     /// `tangential history`); called once when the scene's law is assembled.

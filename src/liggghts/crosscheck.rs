@@ -1,11 +1,12 @@
-//! `tamp crosscheck [--live] [--tier quick|full]`: the LIGGGHTS cross-check cases
-//! (the verification cases named `liggghts_*`).
+//! `tamp crosscheck [--live] [--tier quick|full] [--peer P] [--case C]`: the peer-code
+//! cross-check cases, the verification cases named `liggghts_*` (LIGGGHTS 3.8) and
+//! `lammps_*` (LAMMPS 22 Jul 2025, `.ci/install-lammps`).
 //!
 //! Without `--live` they run against the results recorded in
-//! `reference_data/liggghts/<case>/`, exactly as `tamp verify` runs them. With
-//! `--live`, LIGGGHTS is run now: each case directory holds `regenerate.sh OUTDIR`,
-//! which exports or uses the deck, runs `liggghts` and writes `results.csv` to OUTDIR.
-//! Two checks follow, so that the recorded data cannot drift from what LIGGGHTS
+//! `reference_data/<peer>/<case>/`, exactly as `tamp verify` runs them. With
+//! `--live`, the peer is run now: each case directory holds `regenerate.sh OUTDIR`,
+//! which exports or uses the deck, runs the peer and writes `results.csv` to OUTDIR.
+//! Two checks follow, so that the recorded data cannot drift from what the peer
 //! really does:
 //! 1. every CSV file recorded for the case (`results.csv`, `trajectory.csv`) comes
 //!    out of the fresh run equal to the recorded one (every number to 1e-9
@@ -95,23 +96,93 @@ fn recorded_csv_files(dir: &Path) -> Result<Vec<std::ffi::OsString>> {
     Ok(files)
 }
 
-pub fn run_cli(live: bool, tier: Tier, report_dir: &Path) -> Result<u8> {
+/// A peer code: its cases are named `<name>_*` and recorded in `reference_data/<name>/`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Peer {
+    Liggghts,
+    Lammps,
+}
+
+impl Peer {
+    pub const ALL: [Peer; 2] = [Peer::Liggghts, Peer::Lammps];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Peer::Liggghts => "liggghts",
+            Peer::Lammps => "lammps",
+        }
+    }
+
+    /// Whether the peer can run here, or how to install it.
+    fn check_installed(self) -> Result<()> {
+        match self {
+            Peer::Liggghts if on_path("liggghts") => Ok(()),
+            Peer::Liggghts => Err(TampError::input(
+                "--live",
+                "needs the LIGGGHTS executable 'liggghts' on PATH (apt-get install -y liggghts)",
+            )),
+            Peer::Lammps if lammps_executable().is_file() => Ok(()),
+            Peer::Lammps => Err(TampError::input(
+                "--live",
+                format!(
+                    "needs LAMMPS 22 Jul 2025 at {} (.ci/install-lammps) or in $LMP",
+                    lammps_executable().display()
+                ),
+            )),
+        }
+    }
+}
+
+/// `$LMP`, else `.peers/bin/lmp` of the checkout (`.ci/install-lammps`); the
+/// `regenerate.sh` scripts of the LAMMPS cases take the same one.
+pub fn lammps_executable() -> PathBuf {
+    match std::env::var_os("LMP") {
+        Some(p) => PathBuf::from(p),
+        None => reference_root().join("..").join(".peers/bin/lmp"),
+    }
+}
+
+pub fn run_cli(
+    live: bool,
+    tier: Tier,
+    peers: &[Peer],
+    cases: &[String],
+    report_dir: &Path,
+) -> Result<u8> {
+    let peers = if peers.is_empty() {
+        &Peer::ALL[..]
+    } else {
+        peers
+    };
     let specs = verify::load_specs(&verify::verification_dir())?;
+    let peer_of = |name: &str| {
+        peers
+            .iter()
+            .copied()
+            .find(|p| name.starts_with(&format!("{}_", p.name())))
+    };
     let names: Vec<String> = specs
         .iter()
         .filter(|s| {
-            s.name.starts_with("liggghts_") && (tier == Tier::Full || s.tier == Tier::Quick)
+            peer_of(&s.name).is_some()
+                && (cases.is_empty() || cases.contains(&s.name))
+                && (tier == Tier::Full || s.tier == Tier::Quick || cases.contains(&s.name))
         })
         .map(|s| s.name.clone())
         .collect();
+    if let Some(unknown) = cases.iter().find(|c| !names.contains(c)) {
+        return Err(TampError::input(
+            "--case",
+            format!("'{unknown}' is not a cross-check case of the peers asked for"),
+        ));
+    }
     if !live {
         return verify::run_cases(tier, &names, None, report_dir, None);
     }
-    if !on_path("liggghts") {
-        return Err(TampError::input(
-            "--live",
-            "needs the LIGGGHTS executable 'liggghts' on PATH (apt-get install -y liggghts)",
-        ));
+    for peer in peers {
+        if names.iter().any(|n| peer_of(n) == Some(*peer)) {
+            peer.check_installed()?;
+        }
     }
     let recorded_root = reference_root();
     let live_root = std::path::absolute(report_dir.join("liggghts_live"))
@@ -120,7 +191,8 @@ pub fn run_cli(live: bool, tier: Tier, report_dir: &Path) -> Result<u8> {
         std::env::current_exe().map_err(|e| TampError::io("locating the tamp executable", e))?;
     let mut drifted = 0;
     for name in &names {
-        let recorded = recorded_root.join("liggghts").join(name);
+        let peer = peer_of(name).expect("names are filtered by peer").name();
+        let recorded = recorded_root.join(peer).join(name);
         let script = recorded.join("regenerate.sh");
         if !script.is_file() {
             return Err(TampError::Other(format!(
@@ -128,19 +200,20 @@ pub fn run_cli(live: bool, tier: Tier, report_dir: &Path) -> Result<u8> {
                 script.display()
             )));
         }
-        let out = live_root.join("liggghts").join(name);
+        let out = live_root.join(peer).join(name);
         crate::output::create_dir(&out)?;
-        eprintln!("{name}: running LIGGGHTS ({})", script.display());
+        eprintln!("{name}: running {peer} ({})", script.display());
         let status = Command::new("bash")
             .arg(&script)
             .arg(&out)
             .env("TAMP", &tamp)
+            .env("LMP", lammps_executable())
             .current_dir(&recorded)
             .status()
             .map_err(|e| TampError::io(format!("running {}", script.display()), e))?;
         if !status.success() {
             return Err(TampError::Other(format!(
-                "{} failed ({status}); its LIGGGHTS logs are in {}",
+                "{} failed ({status}); its {peer} logs are in {}",
                 script.display(),
                 out.display()
             )));
@@ -156,13 +229,13 @@ pub fn run_cli(live: bool, tier: Tier, report_dir: &Path) -> Result<u8> {
             "DRIFTED"
         };
         eprintln!(
-            "{name}: fresh LIGGGHTS results vs recorded: largest relative difference {drift:e} ({verdict}, tolerance {DRIFT_TOLERANCE:e})"
+            "{name}: fresh {peer} results vs recorded: largest relative difference {drift:e} ({verdict}, tolerance {DRIFT_TOLERANCE:e})"
         );
     }
     let code = verify::run_cases(tier, &names, None, report_dir, Some(&live_root))?;
     if drifted > 0 {
         eprintln!(
-            "{drifted} case(s) drifted from the recorded LIGGGHTS results: re-record them (regenerate.sh) and say why"
+            "{drifted} case(s) drifted from the recorded peer results: re-record them (regenerate.sh) and say why"
         );
         return Ok(1);
     }

@@ -29,7 +29,7 @@
 
 use crate::boundary::shape::{Revolved, Shape, Triangle};
 use crate::contact::damping::liggghts::LiggghtsModel;
-use crate::contact::damping::liggghts::SQRT_FIVE_SIXTHS;
+use crate::contact::damping::liggghts::{SQRT_FIVE_SIXTHS, restitution_from_beta};
 use crate::contact::damping::{CriticalFraction, Damping, LiggghtsRestitution};
 use crate::contact::model::{LiggghtsContact, LiggghtsScene, LiggghtsValues};
 use crate::contact::tangential::TangentialLaw;
@@ -64,11 +64,6 @@ struct ContactModel {
     properties: Vec<String>,
 }
 
-/// e for LIGGGHTS from a β ≤ 0: inverts β = ln e / √(ln²e + π²).
-fn restitution_from_beta(beta: f64) -> f64 {
-    (beta * std::f64::consts::PI / (1.0 - beta * beta).sqrt()).exp()
-}
-
 /// LIGGGHTS's restitution for the scene's damping, or why there is none.
 fn restitution(scene: &Scene) -> std::result::Result<f64, (String, String)> {
     let hertz = scene.contact.normal.liggghts() == Some(LiggghtsModel::Hertz);
@@ -90,6 +85,16 @@ fn restitution(scene: &Scene) -> std::result::Result<f64, (String, String)> {
             restitution_from_beta(beta)
         }
         Some(Damping::Constant(_)) => unreachable!("handled by the caller"),
+        Some(Damping::Tsuji(t)) => {
+            let xi = t.with(&scene.contact.normal).map(|d| d.xi);
+            return Err((
+                "contact.damping.kind".into(),
+                format!(
+                    "LAMMPS's tsuji has no LIGGGHTS 3.8 model (the same dashpot is critical_fraction with xi = {})",
+                    xi.map_or_else(|e| e, |x| format!("{x:e}"))
+                ),
+            ));
+        }
     };
     if !(e > 0.05 && e <= 1.0) {
         return Err((

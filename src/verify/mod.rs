@@ -161,9 +161,15 @@ impl CaseContext<'_> {
 
     /// The rows of `reference_data/liggghts/<case>/results.csv` (at least one).
     pub fn liggghts_results<T: serde::de::DeserializeOwned>(&self) -> Result<Vec<T>> {
+        self.peer_results("liggghts")
+    }
+
+    /// The rows of `reference_data/<peer>/<case>/results.csv` (at least one), `peer`
+    /// being `liggghts` or `lammps`.
+    pub fn peer_results<T: serde::de::DeserializeOwned>(&self, peer: &str) -> Result<Vec<T>> {
         let path = self
             .reference_data_dir()
-            .join("liggghts")
+            .join(peer)
             .join(&self.spec.name)
             .join("results.csv");
         let bad = |what: String| TampError::Other(format!("{}: {what}", path.display()));
@@ -173,7 +179,7 @@ impl CaseContext<'_> {
             .collect::<std::result::Result<Vec<T>, _>>()
             .map_err(|e| bad(e.to_string()))?;
         if rows.is_empty() {
-            return Err(bad("no LIGGGHTS runs recorded".into()));
+            return Err(bad(format!("no {peer} runs recorded")));
         }
         Ok(rows)
     }

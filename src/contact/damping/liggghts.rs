@@ -24,6 +24,7 @@
 //! See docs/liggghts.md for the full parameter mapping.
 
 use super::CriticalFraction;
+use crate::contact::lammps::{LammpsDamping, LammpsNormal, NoLammpsModel};
 use crate::contact::model::Roles;
 use crate::contact::normal::NormalLaw;
 use crate::error::Errors;
@@ -95,6 +96,18 @@ impl LiggghtsRestitution {
     }
 }
 
+impl LiggghtsRestitution {
+    /// LAMMPS's `damping coeff_restitution` with e in the normal model's damp slot: the
+    /// same γ_n as LIGGGHTS for both normal models (`CriticalFraction::lammps` has
+    /// the algebra), so the same e.
+    pub fn lammps(&self, _: LammpsNormal) -> Result<LammpsDamping, NoLammpsModel> {
+        Ok(LammpsDamping {
+            keyword: "coeff_restitution",
+            coefficient: self.restitution,
+        })
+    }
+}
+
 /// Why `liggghts_restitution` is refused with the normal law `law`.
 pub fn unsupported_law(law: &str) -> String {
     format!(
@@ -105,6 +118,11 @@ pub fn unsupported_law(law: &str) -> String {
 /// LIGGGHTS's rule for `coefficientRestitution`.
 pub fn restitution_is_valid(e: f64) -> bool {
     e > 0.05 && e <= 1.0
+}
+
+/// e from a β in (−1, 0]: inverts β = ln e / √(ln²e + π²).
+pub fn restitution_from_beta(beta: f64) -> f64 {
+    (beta * std::f64::consts::PI / (1.0 - beta * beta).sqrt()).exp()
 }
 
 /// β = ln e / √(ln²e + π²) (LIGGGHTS `betaeff`), in (−1, 0].

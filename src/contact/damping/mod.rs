@@ -8,16 +8,22 @@
 //!   tangent stiffness of the normal law at the current overlap (eq 9, eq 10);
 //! - `Constant`: c_n = γ_n (Zhong eq 6).
 //!
-//! The scene kind `liggghts_restitution` is not a third form: `liggghts.rs` turns
-//! LIGGGHTS's restitution coefficient into the `CriticalFraction` ξ that gives
-//! LIGGGHTS's γ_n for the scene's normal law, once, when the scene is built.
+//! The scene kinds `liggghts_restitution` and `tsuji` are not further forms:
+//! `liggghts.rs` turns LIGGGHTS's restitution coefficient, `tsuji.rs` LAMMPS's
+//! `damping tsuji` coefficient, into the `CriticalFraction` ξ that gives the peer's
+//! γ_n for the scene's normal law, once, when the scene is built.
+//!
+//! Each kind names its LAMMPS `damping` model (`lammps`, for `tamp export-lammps`).
 
 pub mod liggghts;
+pub mod tsuji;
 
+use crate::contact::lammps::{LammpsDamping, LammpsNormal, NoLammpsModel};
 pub use crate::contact::model::DampingModel;
 use crate::contact::model::Roles;
 use crate::error::Errors;
 pub use liggghts::LiggghtsRestitution;
+pub use tsuji::Tsuji;
 
 /// c_n = ξ · 2√(m* k_n), Rojek eqs 6–10.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
@@ -40,6 +46,31 @@ impl DampingModel for CriticalFraction {
     }
     fn ratio(&self, _: f64, _: f64) -> f64 {
         self.xi
+    }
+}
+
+impl CriticalFraction {
+    /// LAMMPS's `coeff_restitution` damping, η = d √(m* F/δ), is c_n = ξ · 2√(m* k_n)
+    /// with ξ = d √(F/(δ k_n))/2 (contact/lammps.rs), d = −2√(5/6)√(3/2) β for
+    /// `hertz/material` and −2β for `hooke`, β = ln e/√(ln²e + π²)
+    /// (`GranSubModDampingCoeffRestitution::init`): so ξ = −√(5/6) β or −β, LIGGGHTS's
+    /// relation (liggghts.rs), and the e written is the one whose β gives this ξ.
+    pub fn lammps(&self, normal: LammpsNormal) -> Result<LammpsDamping, NoLammpsModel> {
+        let beta = match normal {
+            LammpsNormal::HertzMaterial => -self.xi / liggghts::SQRT_FIVE_SIXTHS,
+            LammpsNormal::Hooke { .. } => -self.xi,
+        };
+        if beta <= -1.0 {
+            return Err(NoLammpsModel(format!(
+                "xi = {} is more than coeff_restitution can express beside {} (e -> 0)",
+                self.xi,
+                normal.keyword()
+            )));
+        }
+        Ok(LammpsDamping {
+            keyword: "coeff_restitution",
+            coefficient: liggghts::restitution_from_beta(beta),
+        })
     }
 }
 
@@ -67,6 +98,16 @@ impl DampingModel for Constant {
     }
 }
 
+impl Constant {
+    /// LAMMPS's `damping velocity`: η = damp (`GranSubModDampingVelocity`).
+    pub fn lammps(&self, _: LammpsNormal) -> Result<LammpsDamping, NoLammpsModel> {
+        Ok(LammpsDamping {
+            keyword: "velocity",
+            coefficient: self.gamma_n,
+        })
+    }
+}
+
 /// The scene's damping role, read as `{"kind": "<name>", <its parameters>}`.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
@@ -76,6 +117,9 @@ pub enum Damping {
     /// LIGGGHTS 3.8's damping from a restitution coefficient: run as the
     /// `CriticalFraction` whose ξ the normal law gives (liggghts.rs).
     LiggghtsRestitution(LiggghtsRestitution),
+    /// LAMMPS 22 Jul 2025's `damping tsuji`: run as the `CriticalFraction` whose ξ the
+    /// normal law gives (tsuji.rs).
+    Tsuji(Tsuji),
 }
 
 impl Damping {
@@ -85,6 +129,7 @@ impl Damping {
             Damping::CriticalFraction(d) => d.name(),
             Damping::Constant(d) => d.name(),
             Damping::LiggghtsRestitution(_) => LiggghtsRestitution::NAME,
+            Damping::Tsuji(_) => Tsuji::NAME,
         }
     }
 
@@ -94,6 +139,17 @@ impl Damping {
             Damping::CriticalFraction(d) => d.check(path, roles, errors),
             Damping::Constant(d) => d.check(path, roles, errors),
             Damping::LiggghtsRestitution(d) => d.check(path, roles, errors),
+            Damping::Tsuji(d) => d.check(path, roles, errors),
+        }
+    }
+
+    /// Its `damping` model in LAMMPS's `pair granular` beside `normal`, or why none.
+    pub fn lammps(&self, normal: LammpsNormal) -> Result<LammpsDamping, NoLammpsModel> {
+        match self {
+            Damping::CriticalFraction(d) => d.lammps(normal),
+            Damping::Constant(d) => d.lammps(normal),
+            Damping::LiggghtsRestitution(d) => d.lammps(normal),
+            Damping::Tsuji(d) => d.lammps(normal),
         }
     }
 }

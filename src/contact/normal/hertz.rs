@@ -15,6 +15,7 @@ use super::NormalLaw;
 use super::{NormalModel, NormalResponse};
 use crate::contact::damping::Damping;
 use crate::contact::damping::liggghts::LiggghtsModel;
+use crate::contact::lammps::{LammpsNormal, NoLammpsModel};
 use crate::contact::model::{LiggghtsDeck, LiggghtsRefusal, LiggghtsScene, Needs};
 use crate::contact::registry::{self, NormalExample};
 use crate::material::PairProperties;
@@ -88,6 +89,12 @@ impl NormalModel for Hertz {
 
     fn liggghts(&self) -> Option<LiggghtsModel> {
         Some(LiggghtsModel::Hertz)
+    }
+
+    /// `hertz/material E damp ν`: F = (4/3)E* a δ, a = √(R*δ), the same E* mixing
+    /// (contact/lammps.rs).
+    fn lammps(&self) -> Result<LammpsNormal, NoLammpsModel> {
+        Ok(LammpsNormal::HertzMaterial)
     }
 
     /// `model hertz`, damped by `coefficientRestitution` (no constant γ_n form).

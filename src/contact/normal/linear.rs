@@ -11,6 +11,7 @@ use super::NormalLaw;
 use super::{NormalModel, NormalResponse};
 use crate::contact::damping::liggghts::{LiggghtsModel, hooke_stiffness};
 use crate::contact::damping::{Constant, Damping};
+use crate::contact::lammps::{LammpsNormal, NoLammpsModel};
 use crate::contact::model::{
     LiggghtsContact, LiggghtsDeck, LiggghtsProperty, LiggghtsRefusal, LiggghtsScene, LiggghtsValues,
 };
@@ -136,6 +137,13 @@ impl NormalModel for Linear {
     /// LIGGGHTS's `model hooke` when k_n is its `hooke_stiffness` (damping/liggghts.rs).
     fn liggghts(&self) -> Option<LiggghtsModel> {
         Some(LiggghtsModel::Hooke)
+    }
+
+    /// `hooke k damp`: F = k δ with k this law's stiffness.
+    fn lammps(&self) -> Result<LammpsNormal, NoLammpsModel> {
+        Ok(LammpsNormal::Hooke {
+            stiffness: self.stiffness,
+        })
     }
 
     /// With a constant γ_n: `model hooke/stiffness absolute_damping on` (kn = kt = k,

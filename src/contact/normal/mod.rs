@@ -12,6 +12,7 @@ pub mod thornton;
 pub mod walton_braun;
 
 use crate::contact::damping::liggghts::LiggghtsModel;
+use crate::contact::lammps::{LammpsNormal, NoLammpsModel};
 pub use crate::contact::model::{
     LiggghtsDeck, LiggghtsRefusal, LiggghtsScene, Needs, NormalModel, NormalResponse,
 };
@@ -91,6 +92,11 @@ impl NormalLaw {
     /// See `NormalModel::liggghts`.
     pub fn liggghts(&self) -> Option<LiggghtsModel> {
         each_normal!(self, n => n.liggghts())
+    }
+
+    /// See `NormalModel::lammps`.
+    pub fn lammps(&self) -> Result<LammpsNormal, NoLammpsModel> {
+        each_normal!(self, n => n.lammps())
     }
 
     /// See `NormalModel::liggghts_deck`.

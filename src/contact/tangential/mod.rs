@@ -86,6 +86,11 @@ pub struct TangentialInput {
 }
 
 impl TangentialLaw {
+    /// See `TangentialModel::lammps`.
+    pub fn lammps(&self) -> Result<String, crate::contact::lammps::NoLammpsModel> {
+        each_tangential!(self, t => t.lammps())
+    }
+
     pub fn name(&self) -> &'static str {
         each_tangential!(self, t => t.name())
     }

@@ -1,4 +1,4 @@
-//! The inputs a recorded LIGGGHTS run was made with, checked against the case's
+//! The inputs a recorded LIGGGHTS (or LAMMPS) run was made with, checked against the case's
 //! scene before any number is compared: a case refuses to compare when the two
 //! differ (a scene edited without re-recording, or a results file from another deck).
 
@@ -6,7 +6,7 @@ use crate::contact::tangential::TangentialLaw;
 use crate::error::{Result, TampError};
 use crate::scene::Scene;
 
-/// Collects "what: scene …, LIGGGHTS …" for inputs that differ by more than 1e-12.
+/// Collects "what: scene …, peer run …" for inputs that differ by more than 1e-12.
 #[derive(Default)]
 pub(super) struct Mismatches(pub Vec<String>);
 
@@ -16,7 +16,7 @@ impl Mismatches {
         let close = (tamp - liggghts).abs() <= 1e-12 * liggghts.abs();
         if !close {
             self.0
-                .push(format!("{what}: scene {tamp:e}, LIGGGHTS {liggghts:e}"));
+                .push(format!("{what}: scene {tamp:e}, peer run {liggghts:e}"));
         }
     }
 
@@ -26,7 +26,7 @@ impl Mismatches {
             return Ok(());
         }
         Err(TampError::Other(format!(
-            "the scene is not the one LIGGGHTS ran ({run}): {}",
+            "the scene is not the one the peer code ran ({run}): {}",
             self.0.join("; ")
         )))
     }

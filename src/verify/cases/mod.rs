@@ -12,6 +12,7 @@ mod hertz_collision_time;
 mod hertz_yield_onset;
 mod hollomon_constants;
 mod kuwabara_kono_restitution;
+mod lammps_two_sphere;
 mod liggghts_inputs;
 mod liggghts_oblique_wall_impact;
 mod liggghts_settled_packing;
@@ -92,6 +93,7 @@ pub const CASES: &[(&str, CaseFn)] = &[
         "liggghts_oblique_wall_impact",
         liggghts_oblique_wall_impact::run,
     ),
+    ("lammps_two_sphere_hertz", lammps_two_sphere::run),
 ];
 
 pub fn find(name: &str) -> Option<CaseFn> {

@@ -1,0 +1,405 @@
+//! `tamp export-lammps SCENE --out DIR`: the same scene as a LAMMPS deck for
+//! `pair_style granular` (LAMMPS 22 Jul 2025, `.ci/install-lammps`), or a refusal
+//! listing every field LAMMPS cannot express with the same physics (exit 2, one
+//! `path: cannot export to LAMMPS: why` per field, nothing written).
+//!
+//! What the deck holds, and why it is written this way:
+//! - The particles as tamp placed them at t = 0 (`particles.data`, `read_data`, atom
+//!   style sphere: id type diameter density x y z; velocities and spins), so both codes
+//!   start from the same state.
+//! - One atom type per tamp material (type k + 1 = `materials[k]`), each with its own
+//!   `pair_coeff k k`; LAMMPS mixes the other pairs itself, E* exactly as tamp does
+//!   (`mix_stiffnessE`: 1/E* = (1 − ν_i²)/E_i + (1 − ν_j²)/E_j).
+//! - Each role's law says what it is in LAMMPS (contact/lammps.rs, `lammps()` on the
+//!   normal, damping and tangential laws); this file only asks, and refuses the field
+//!   of a law that has no LAMMPS model. No tangential law has one yet; a scene without
+//!   friction writes `tangential linear_nohistory 0 0`, a force of exactly zero.
+//! - `limit_damping` is not written: off, as tamp's damping (the force may pull).
+//! - Walls, cohesion, growth and scheduled insertion are refused (walls: not yet
+//!   exported, issue 28).
+//! - Dumps at `%.17g`, sorted by id: every `dump_every` steps to `dump.lammps`, the
+//!   final state to `final.lammps`; `tamp compare` and `import-liggghts-dump` read them.
+
+use crate::contact::lammps::LammpsNormal;
+use crate::error::{Result, TampError};
+use crate::liggghts::export::{DUMP_COLUMNS, Exported};
+use crate::scene::{self, Scene};
+use std::fmt::Write as _;
+use std::path::Path;
+
+const AXES: [&str; 3] = ["x", "y", "z"];
+
+/// `%.17g`-equivalent: Rust's shortest round-trip form.
+fn g(x: f64) -> String {
+    format!("{x:e}")
+}
+
+/// The contact model of every `pair_coeff` line, with the material's E and ν left as
+/// `{E}` and `{nu}`.
+fn pair_model(scene: &Scene) -> std::result::Result<String, Vec<(String, String)>> {
+    let mut refused = Vec::new();
+    let normal = scene
+        .contact
+        .normal
+        .lammps()
+        .map_err(|why| refused.push(("contact.normal.law".to_string(), why.0)))
+        .ok();
+    let damping = match (&scene.contact.damping, normal) {
+        // LAMMPS 22 Jul 2025 refuses `damping none` ("Must specify damping granular
+        // model"); `velocity` with η = 0 adds a force of exactly zero.
+        (None, _) => Some(("velocity", 0.0)),
+        (Some(d), Some(n)) => d
+            .lammps(n)
+            .map(|d| (d.keyword, d.coefficient))
+            .map_err(|why| refused.push(("contact.damping.kind".to_string(), why.0)))
+            .ok(),
+        (Some(_), None) => None,
+    };
+    let tangential = match &scene.contact.tangential {
+        None => Some("linear_nohistory 0 0".to_string()),
+        Some(t) => t
+            .law
+            .lammps()
+            .map_err(|why| refused.push(("contact.tangential.law".to_string(), why.0)))
+            .ok(),
+    };
+    match (normal, damping, tangential) {
+        (Some(n), Some((kw, coefficient)), Some(t)) if refused.is_empty() => {
+            let normal = match n {
+                LammpsNormal::HertzMaterial => {
+                    format!("hertz/material {{E}} {} {{nu}}", g(coefficient))
+                }
+                LammpsNormal::Hooke { stiffness } => {
+                    format!("hooke {} {}", g(stiffness), g(coefficient))
+                }
+            };
+            Ok(format!("{normal} damping {kw} tangential {t}"))
+        }
+        _ => Err(refused),
+    }
+}
+
+/// Every field of `scene` LAMMPS's `pair granular` cannot express, as (path, reason).
+pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
+    let mut out = pair_model(scene).err().unwrap_or_default();
+    let mut refuse = |path: String, why: &str| out.push((path, why.to_string()));
+    if scene.contact.cohesion.is_some() {
+        refuse(
+            "contact.cohesion".into(),
+            "pair granular has no van der Waals (Hamaker) cohesion model",
+        );
+    }
+    if let Some(r) = &scene.rotation
+        && r.inertia_scale != 1.0
+    {
+        refuse(
+            "rotation.inertia_scale".into(),
+            "LAMMPS's fix nve/sphere uses the moment of inertia of a solid sphere (scale 1)",
+        );
+    }
+    if scene.growth.is_some() {
+        refuse(
+            "growth".into(),
+            "LAMMPS has no radius growth stage here; export the grown state instead",
+        );
+    }
+    for (k, ins) in scene.insert.iter().enumerate() {
+        if ins.schedule.is_some() {
+            refuse(
+                format!("insert[{k}].schedule"),
+                "LAMMPS pours with its own random placement; export scenes whose particles are all placed at t = 0",
+            );
+        }
+    }
+    for (k, p) in scene.particles.iter().enumerate() {
+        if p.prescribed_velocity.is_some() {
+            refuse(
+                format!("particles[{k}].prescribed_velocity"),
+                "not exported (LAMMPS would need a separate fix for each driven particle)",
+            );
+        }
+    }
+    let hertz = scene.contact.normal.lammps() == Ok(LammpsNormal::HertzMaterial);
+    for (k, m) in scene.materials.iter().enumerate() {
+        if hertz && (m.youngs_modulus.is_none() || m.poisson_ratio.is_none()) {
+            refuse(
+                format!("materials[{k}]"),
+                "hertz/material needs the Young's modulus and Poisson ratio of every atom type",
+            );
+        }
+    }
+    for k in 0..scene.walls.len() {
+        refuse(
+            format!("walls[{k}]"),
+            "walls are not exported to LAMMPS yet (fix wall/gran, issue 28)",
+        );
+    }
+    out
+}
+
+fn refuse_all(list: Vec<(String, String)>) -> TampError {
+    let mut errors: Vec<TampError> = list
+        .into_iter()
+        .map(|(path, why)| TampError::input(path, format!("cannot export to LAMMPS: {why}")))
+        .collect();
+    if errors.len() == 1 {
+        errors.pop().expect("one error")
+    } else {
+        TampError::InputMany(errors)
+    }
+}
+
+/// Write the deck for the scene file at `scene_path` into `out_dir`.
+pub fn export_file(
+    scene_path: &Path,
+    out_dir: &Path,
+    dump_every: Option<u64>,
+    seed: Option<u64>,
+) -> Result<Exported> {
+    let (mut scene, sha) = scene::load(scene_path)?;
+    if let Some(seed) = seed {
+        scene.seed = seed;
+    }
+    export(&scene, &sha, out_dir, dump_every)
+}
+
+/// Write the deck and the data file for `scene` into `out_dir`.
+pub fn export(
+    scene: &Scene,
+    sha: &str,
+    out_dir: &Path,
+    dump_every: Option<u64>,
+) -> Result<Exported> {
+    let list = refusals(scene);
+    if !list.is_empty() {
+        return Err(refuse_all(list));
+    }
+    let model = pair_model(scene).map_err(refuse_all)?;
+    let built = scene::build(scene)?;
+    let sim = built.sim;
+    crate::output::create_dir(out_dir)?;
+    let p = &sim.particles;
+    let n_types = sim.materials.len();
+
+    // Box: periodic axes exactly; the others shrink-wrap with a minimum (`m`) around
+    // the particles' bounding box and a margin.
+    let periodic = scene.periodic.clone().unwrap_or_default().axes();
+    let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+    for (x, r) in p.position.iter().zip(&p.radius) {
+        for a in 0..3 {
+            lo[a] = lo[a].min(x[a] - r);
+            hi[a] = hi[a].max(x[a] + r);
+        }
+    }
+    if p.is_empty() {
+        (lo, hi) = ([-1.0; 3], [1.0; 3]);
+    }
+    let span = (0..3).map(|a| hi[a] - lo[a]).fold(0.0, f64::max);
+    let max_r = p.radius.iter().copied().fold(0.0, f64::max);
+    let margin = 0.05 * span + 2.0 * max_r;
+    let mut boundary = Vec::new();
+    let mut data = format!(
+        "LAMMPS data file exported by tamp {} ({}) from scene sha256 {sha}\n\n{} atoms\n{n_types} atom types\n\n",
+        crate::VERSION,
+        crate::GIT_COMMIT,
+        p.len()
+    );
+    for a in 0..3 {
+        let (l, h, flag) = match periodic[a] {
+            Some([l, h]) => (l, h, "p"),
+            None => (lo[a] - margin, hi[a] + margin, "m"),
+        };
+        boundary.push(flag);
+        let _ = writeln!(data, "{} {} {}lo {}hi", g(l), g(h), AXES[a], AXES[a]);
+    }
+    data.push_str("\nAtoms # sphere\n\n");
+    for i in 0..p.len() {
+        let x = p.position[i];
+        let density = sim.materials[p.material[i]].density;
+        let _ = writeln!(
+            data,
+            "{} {} {} {} {} {} {}",
+            i + 1,
+            p.material[i] + 1,
+            g(2.0 * p.radius[i]),
+            g(density),
+            g(x.x),
+            g(x.y),
+            g(x.z)
+        );
+    }
+    data.push_str("\nVelocities\n\n");
+    for i in 0..p.len() {
+        let (v, w) = (p.velocity[i], p.omega[i]);
+        let _ = writeln!(
+            data,
+            "{} {} {} {} {} {} {}",
+            i + 1,
+            g(v.x),
+            g(v.y),
+            g(v.z),
+            g(w.x),
+            g(w.y),
+            g(w.z)
+        );
+    }
+    crate::output::write_atomic(&out_dir.join("particles.data"), data.as_bytes())?;
+
+    let min_r = p.radius.iter().copied().fold(f64::INFINITY, f64::min);
+    let skin = if min_r.is_finite() {
+        scene.broad_phase.skin_fraction * min_r
+    } else {
+        1e-3
+    };
+    let every = dump_every.unwrap_or(
+        match (scene.output.trajectory_every, scene.output.series_every) {
+            (0, 0) => (built.steps / 100).max(1),
+            (0, n) | (n, _) => n,
+        },
+    );
+
+    let mut deck = String::new();
+    let _ = writeln!(
+        deck,
+        "# LAMMPS (22 Jul 2025) deck exported by tamp {} (commit {})",
+        crate::VERSION,
+        crate::GIT_COMMIT
+    );
+    let _ = writeln!(
+        deck,
+        "# scene '{}', sha256 {sha}, seed {}, dt {}\n# run: lmp -in in.tamp   (or mpiexec -n N lmp -in in.tamp)",
+        scene.name.replace(['\n', '\r'], " "),
+        scene.seed,
+        g(sim.dt)
+    );
+    deck.push_str("units        si\natom_style   sphere\natom_modify  map array\n");
+    let _ = writeln!(deck, "boundary     {}", boundary.join(" "));
+    deck.push_str("newton       off\ncomm_modify  vel yes\nread_data    particles.data\n");
+    let _ = writeln!(deck, "neighbor     {} bin\nneigh_modify delay 0", g(skin));
+    deck.push_str(
+        "# limit_damping is off (not written), as tamp's damping.\npair_style   granular\n",
+    );
+    for (k, m) in sim.materials.iter().enumerate() {
+        let line = model
+            .replace("{E}", &g(m.youngs_modulus.unwrap_or(0.0)))
+            .replace("{nu}", &g(m.poisson_ratio.unwrap_or(0.0)));
+        let _ = writeln!(deck, "pair_coeff   {} {} {line}", k + 1, k + 1);
+    }
+    let _ = writeln!(deck, "timestep     {}", g(sim.dt));
+    if let Some(gv) = sim.gravity {
+        let norm = gv.norm();
+        if norm > 0.0 {
+            let d = gv / norm;
+            let _ = writeln!(
+                deck,
+                "fix          gravi all gravity {} vector {} {} {}",
+                g(norm),
+                g(d.x),
+                g(d.y),
+                g(d.z)
+            );
+        }
+    }
+    deck.push_str("fix          integr all nve/sphere\n");
+    let format = std::iter::once("%d %d")
+        .chain(std::iter::repeat_n("%.17g", 14))
+        .collect::<Vec<_>>()
+        .join(" ");
+    let _ = writeln!(
+        deck,
+        "dump         dmp all custom {every} dump.lammps {DUMP_COLUMNS}\ndump_modify  dmp format line \"{format}\" sort id"
+    );
+    deck.push_str("thermo_style custom step time atoms ke\nthermo_modify norm no lost ignore\n");
+    let _ = writeln!(deck, "thermo       {}", (built.steps / 20).max(1));
+    let _ = writeln!(deck, "run          {}", built.steps);
+    let _ = writeln!(
+        deck,
+        "write_dump   all custom final.lammps {DUMP_COLUMNS} modify format line \"{format}\" sort id"
+    );
+    crate::output::write_atomic(&out_dir.join("in.tamp"), deck.as_bytes())?;
+    Ok(Exported {
+        particles: p.len(),
+        steps: built.steps,
+        dt: sim.dt,
+        files: vec!["in.tamp".into(), "particles.data".into()],
+        notes: Vec::new(),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn two_spheres(contact: &str, extra: &str) -> Scene {
+        scene::parse(&format!(
+            r#"{{"name": "t", "materials": [{{"name": "steel", "density": 7800, "youngs_modulus": 2e11, "poisson_ratio": 0.3}}],
+              "contact": {contact},
+              "particles": [{{"position": [-0.001001, 0, 0], "radius": 0.001, "material": "steel", "velocity": [0.5, 0, 0]}},
+                            {{"position": [0.001001, 0, 0], "radius": 0.001, "material": "steel", "velocity": [-0.5, 0, 0]}}],
+              "time_step": {{"fixed": 1e-9}}, "run": {{"duration": 1e-6}}{extra}}}"#
+        ))
+        .expect("a valid scene")
+    }
+
+    #[test]
+    fn each_damping_law_names_its_lammps_model() {
+        for (damping, line) in [
+            (
+                r#"{"kind": "liggghts_restitution", "restitution": 0.5}"#,
+                "hertz/material {E} 5e-1 {nu} damping coeff_restitution tangential linear_nohistory 0 0",
+            ),
+            (
+                r#"{"kind": "tsuji", "restitution": 0.9}"#,
+                "hertz/material {E} 9e-1 {nu} damping tsuji tangential linear_nohistory 0 0",
+            ),
+            (
+                r#"{"kind": "constant", "gamma_n": 2.5}"#,
+                "hertz/material {E} 2.5e0 {nu} damping velocity tangential linear_nohistory 0 0",
+            ),
+        ] {
+            let s = two_spheres(
+                &format!(r#"{{"normal": {{"law": "hertz"}}, "damping": {damping}}}"#),
+                "",
+            );
+            assert_eq!(pair_model(&s).unwrap(), line);
+        }
+        let s = two_spheres(r#"{"normal": {"law": "linear", "stiffness": 1e6}}"#, "");
+        assert_eq!(
+            pair_model(&s).unwrap(),
+            "hooke 1e6 0e0 damping velocity tangential linear_nohistory 0 0"
+        );
+    }
+
+    #[test]
+    fn critical_fraction_is_written_as_the_restitution_that_gives_its_xi() {
+        // ξ = −√(5/6) β(e) for hertz/material (CriticalFraction::lammps).
+        let xi = -crate::contact::damping::liggghts::SQRT_FIVE_SIXTHS
+            * crate::contact::damping::liggghts::beta(0.7);
+        let s = two_spheres(
+            &format!(
+                r#"{{"normal": {{"law": "hertz"}}, "damping": {{"kind": "critical_fraction", "xi": {xi:e}}}}}"#
+            ),
+            "",
+        );
+        let line = pair_model(&s).unwrap();
+        let e: f64 = line.split(' ').nth(2).unwrap().parse().unwrap();
+        assert!((e - 0.7).abs() < 1e-14, "{line}");
+    }
+
+    #[test]
+    fn refusals_name_every_field_and_nothing_is_written() {
+        let s = two_spheres(
+            r#"{"normal": {"law": "hertz"}, "tangential": {"law": "cundall_strack", "stiffness": 1e3, "friction": 0.3}}"#,
+            r#", "rotation": {}, "walls": [{"name": "floor", "material": "steel", "shape": {"kind": "plane", "point": [0, 0, -0.01], "normal": [0, 0, 1]}}]"#,
+        );
+        let paths: Vec<String> = refusals(&s).into_iter().map(|(p, _)| p).collect();
+        assert_eq!(paths, ["contact.tangential.law", "walls[0]"]);
+        let dir = std::env::temp_dir().join(format!("tamp-lammps-refused-{}", std::process::id()));
+        let err = export(&s, "sha", &dir, None).unwrap_err().to_string();
+        assert!(
+            err.contains("contact.tangential.law: cannot export to LAMMPS: "),
+            "{err}"
+        );
+        assert!(!dir.exists());
+    }
+}

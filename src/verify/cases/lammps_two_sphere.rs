@@ -1,0 +1,109 @@
+//! Cross-check against LAMMPS 22 Jul 2025 (update 4), `pair_style granular`: two equal
+//! spheres meet head-on, `hertz/material` with `damping coeff_restitution` (tamp's
+//! `liggghts_restitution`: LAMMPS derives the same γ_n from e as LIGGGHTS,
+//! contact/damping/mod.rs `CriticalFraction::lammps`) and with `damping tsuji` (tamp's
+//! `tsuji`, contact/damping/tsuji.rs), once per restitution LAMMPS was run with. The
+//! reference values are read from `reference_data/lammps/<case>/results.csv` (written by
+//! `reference_data/lammps/run_two_sphere.sh` from the LAMMPS dumps, with the LIGGGHTS
+//! case's extractor); the case refuses to compare when the scene and the recorded
+//! LAMMPS inputs disagree. tamp's side is measured with the extractor's definitions:
+//! interpolated overlap zero crossings, largest sampled overlap, full-step velocities.
+
+use super::liggghts_inputs::Mismatches;
+use super::probe::binary_collision;
+use crate::contact::damping::{Damping, LiggghtsRestitution, Tsuji};
+use crate::error::{Result, TampError};
+use crate::scene::{self, Scene};
+use crate::verify::{CaseContext, Measured};
+use serde::Deserialize;
+
+/// One LAMMPS run, as `two_sphere_extract.py` writes it: `model` is the LAMMPS damping
+/// model (`characteristic_velocity` and `steps_in_contact` are not read).
+#[derive(Debug, Deserialize)]
+struct Row {
+    model: String,
+    restitution_in: f64,
+    time_step: f64,
+    youngs_modulus: f64,
+    poisson_ratio: f64,
+    density: f64,
+    radius: f64,
+    relative_speed: f64,
+    initial_gap: f64,
+    restitution: f64,
+    contact_duration: f64,
+    max_overlap: f64,
+}
+
+/// Differences between the scene and the inputs LAMMPS ran with.
+fn mismatches(scene: &Scene, row: &Row) -> Mismatches {
+    let mut out = Mismatches::default();
+    out.check_material_and_step(
+        scene,
+        row.density,
+        row.youngs_modulus,
+        row.poisson_ratio,
+        row.time_step,
+    );
+    let [a, b] = [&scene.particles[0], &scene.particles[1]];
+    out.check("radius of particles[0]", a.radius, row.radius);
+    out.check("radius of particles[1]", b.radius, row.radius);
+    let d: f64 = (0..3)
+        .map(|k| (b.position[k] - a.position[k]).powi(2))
+        .sum::<f64>()
+        .sqrt();
+    out.check("initial gap", d - a.radius - b.radius, row.initial_gap);
+    let (va, vb) = (
+        a.velocity.unwrap_or([0.0; 3]),
+        b.velocity.unwrap_or([0.0; 3]),
+    );
+    let approach: f64 = (0..3)
+        .map(|k| (va[k] - vb[k]) * (b.position[k] - a.position[k]) / d)
+        .sum();
+    out.check("relative speed", approach, row.relative_speed);
+    out
+}
+
+/// tamp's damping for a LAMMPS damping model with e in the normal model's damp slot.
+fn damping(model: &str, restitution: f64) -> Result<Damping> {
+    match model {
+        "coeff_restitution" => Ok(Damping::LiggghtsRestitution(LiggghtsRestitution {
+            restitution,
+        })),
+        "tsuji" => Ok(Damping::Tsuji(Tsuji { restitution })),
+        other => Err(TampError::Other(format!(
+            "results.csv: LAMMPS damping model '{other}' has no tamp law in this case"
+        ))),
+    }
+}
+
+pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
+    let base = ctx.scene()?;
+    let mut out = Vec::new();
+    for row in ctx.peer_results::<Row>("lammps")? {
+        let e = row.restitution_in;
+        let run = format!("damping {} e = {e}", row.model);
+        mismatches(&base, &row).refuse_any(&run)?;
+        let mut s = base.clone();
+        s.contact.damping = Some(damping(&row.model, e)?);
+        let mut sim = scene::build(&s)?.sim;
+        let c = binary_collision(&mut sim, 0, 1, 1_000_000)?;
+        let m = &row.model;
+        out.push(Measured::new(
+            &format!("restitution_{m}_e{e}"),
+            c.restitution,
+            row.restitution,
+        ));
+        out.push(Measured::new(
+            &format!("contact_duration_{m}_e{e}"),
+            c.duration,
+            row.contact_duration,
+        ));
+        out.push(Measured::new(
+            &format!("max_overlap_{m}_e{e}"),
+            c.max_sampled_overlap,
+            row.max_overlap,
+        ));
+    }
+    Ok(out)
+}
