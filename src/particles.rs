@@ -74,6 +74,24 @@ impl Particles {
             .push(matches!(motion, Motion::Prescribed(_)));
     }
 
+    /// Room for `additional` more particles, or an error instead of the abort an
+    /// infallible allocation makes when memory runs out.
+    pub fn try_reserve(
+        &mut self,
+        additional: usize,
+    ) -> Result<(), std::collections::TryReserveError> {
+        self.position.try_reserve_exact(additional)?;
+        self.velocity.try_reserve_exact(additional)?;
+        self.omega.try_reserve_exact(additional)?;
+        self.force.try_reserve_exact(additional)?;
+        self.torque.try_reserve_exact(additional)?;
+        self.radius.try_reserve_exact(additional)?;
+        self.mass.try_reserve_exact(additional)?;
+        self.inertia.try_reserve_exact(additional)?;
+        self.material.try_reserve_exact(additional)?;
+        self.prescribed.try_reserve_exact(additional)
+    }
+
     /// From now on particle `i` moves at velocity `v` whatever the force.
     pub fn prescribe(&mut self, i: usize, v: Vec3) {
         self.prescribed[i] = true;

@@ -202,6 +202,17 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
 
     let inertia_scale = scene.rotation.as_ref().map_or(1.0, |r| r.inertia_scale);
     let mut particles = Particles::default();
+    let count = scene.particles.len()
+        + scene.insert.iter().map(|i| i.count).sum::<usize>()
+        + scene.deposit.iter().map(|d| d.count).sum::<usize>();
+    particles.try_reserve(count).map_err(|e| {
+        TampError::input(
+            "scene",
+            format!(
+                "memory for {count} particles could not be allocated ({e}); make the scene smaller"
+            ),
+        )
+    })?;
     for p in &scene.particles {
         let m = material_id(&p.material);
         let motion = p
