@@ -21,12 +21,17 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Run a scene file and write summary.json and series.csv to DIR.
+    /// Run a scene file (or a die-compaction file) and write its results to DIR.
+    #[command(after_help = RUN_HELP)]
     Run {
+        /// The scene, a JSON file (fields: docs/scene-format.md; examples:
+        /// verification/*.scene.json).
         scene: PathBuf,
-        #[arg(long)]
+        /// Output directory, created if needed. The run first deletes what an earlier
+        /// run left there under its own file names.
+        #[arg(long, value_name = "DIR")]
         out: PathBuf,
-        /// No progress bar.
+        /// No progress bar or log lines on stderr.
         #[arg(long)]
         quiet: bool,
         /// Go on from DIR/checkpoint.json if there is one (scene field
@@ -34,9 +39,12 @@ enum Command {
         #[arg(long)]
         resume: bool,
     },
-    /// Run verification cases and write the report.
+    /// Run verification cases and write the report (REPORT/verification.md and .json).
     Verify {
-        /// quick (CI, seconds) or full (paper scale); `full` includes the quick cases.
+        /// quick: about 10 min on 2 cores (CI). full: the papers' scale, many hours
+        /// (the NiAl die compaction alone about 2.8 h, each full 2D compaction about
+        /// 105 min); it includes the quick cases, and an interrupted NiAl case goes on
+        /// from REPORT/nial_die_compaction_runs/.
         #[arg(long, value_enum, default_value_t = Tier::Quick)]
         tier: Tier,
         /// Only these cases (repeatable).
@@ -45,14 +53,16 @@ enum Command {
         /// Also write the JSON result to this file (default: REPORT/verification.json).
         #[arg(long)]
         json: Option<PathBuf>,
-        /// Directory of the report.
+        /// Directory of the report, its plots and its CSVs.
         #[arg(long, default_value = "report")]
         report: PathBuf,
     },
     /// Write a LIGGGHTS 3.8 deck (in.tamp, particles.data, meshes) for SCENE into DIR.
     ExportLiggghts {
+        /// The scene to translate; what LIGGGHTS cannot express is listed, exit 2.
         scene: PathBuf,
-        #[arg(long)]
+        /// Directory of the deck.
+        #[arg(long, value_name = "DIR")]
         out: PathBuf,
         /// Steps between frames of dump.liggghts (default: the scene's
         /// trajectory_every, else its series_every, else about 100 frames); the final
@@ -66,8 +76,10 @@ enum Command {
     /// Write a LAMMPS deck (in.tamp, particles.data) for SCENE into DIR, for LAMMPS's
     /// pair_style granular (22 Jul 2025; .ci/install-lammps).
     ExportLammps {
+        /// The scene to translate; what LAMMPS cannot express is listed, exit 2.
         scene: PathBuf,
-        #[arg(long)]
+        /// Directory of the deck.
+        #[arg(long, value_name = "DIR")]
         out: PathBuf,
         /// Steps between frames of dump.lammps (default: the scene's trajectory_every,
         /// else its series_every, else about 100 frames); the final state always goes
@@ -81,8 +93,11 @@ enum Command {
     /// Convert a LIGGGHTS dump to trajectory.csv and measure its last frame
     /// (quantities.csv) in DIR.
     ImportLiggghtsDump {
+        /// A `dump custom` file of LIGGGHTS or LAMMPS (id, radius, x y z, vx vy vz,
+        /// omegax omegay omegaz; atoms in any order, from any number of ranks).
         file: PathBuf,
-        #[arg(long)]
+        /// Directory of trajectory.csv and quantities.csv.
+        #[arg(long, value_name = "DIR")]
         out: PathBuf,
         /// Height of the floor under the bed, m (default: the lowest sphere bottom).
         #[arg(long)]
@@ -98,7 +113,9 @@ enum Command {
     /// Compare run A with the reference run B (layout: docs/compare.md); exit 1
     /// beyond tolerance.
     Compare {
+        /// The run to check: a directory with quantities.csv and/or trajectory.csv.
         a: PathBuf,
+        /// The reference run, in the same layout.
         b: PathBuf,
         /// CSV `item,tolerance,kind` overriding the defaults.
         #[arg(long)]
@@ -107,8 +124,11 @@ enum Command {
     /// Run the LIGGGHTS cross-check cases against the recorded LIGGGHTS results, or
     /// against LIGGGHTS run now (--live).
     Crosscheck {
+        /// Run the peers now (LIGGGHTS: `apt-get install liggghts`; LAMMPS:
+        /// .ci/install-lammps) and require their results to equal the recorded ones.
         #[arg(long)]
         live: bool,
+        /// Which cross-check cases: quick (seconds) or full.
         #[arg(long, value_enum, default_value_t = Tier::Quick)]
         tier: Tier,
         /// Only this peer's cases (repeatable; default: LIGGGHTS and LAMMPS).
@@ -117,10 +137,13 @@ enum Command {
         /// Only these cases (repeatable; a named case runs whatever its tier).
         #[arg(long = "case")]
         cases: Vec<String>,
+        /// Directory of the cross-check report.
         #[arg(long, default_value = "report")]
         report: PathBuf,
     },
-    /// Numerical studies; `--out docs` rewrites docs/accuracy-cost.md.
+    /// Numerical studies. Each writes into the directory given by --out (default
+    /// `study/`); only an explicit `--out docs` rewrites the repository's
+    /// docs/accuracy-cost.md.
     Study {
         #[command(subcommand)]
         study: Study,
@@ -147,6 +170,7 @@ enum Study {
     },
     /// Bisect the largest stable α of each contact law in a loaded FCC lattice.
     StableAlpha {
+        /// Directory of accuracy-cost.md (its stable-α section) and accuracy-cost/stable_alpha.csv.
         #[arg(long, default_value = "study")]
         out: PathBuf,
     },
@@ -156,10 +180,25 @@ enum Study {
         /// The die-compaction scene (default: the quick NiAl case's).
         #[arg(long)]
         scene: Option<PathBuf>,
+        /// Directory of accuracy-cost.md (its die-compaction section) and accuracy-cost/die_compaction.csv.
         #[arg(long, default_value = "study")]
         out: PathBuf,
     },
 }
+
+const RUN_HELP: &str = "Files written to DIR (each under a temporary name, then renamed):
+  summary.json      final quantities with provenance (version, commit, scene sha256, dt, steps)
+  series.csv        the quantities of output.series every output.series_every steps
+  quantities.csv    the summary's quantities as name,value rows (for `tamp compare`)
+  trajectory.csv    with output.trajectory_every: one row per particle per record
+  vtk/frame_*.vtk   with output.vtk_every: particles for ParaView
+  checkpoint.json   with output.checkpoint_every: the state to --resume from
+A die-compaction file writes specimen.json, press.scene.json, compaction.csv and summary.json.
+
+Exit codes: 0 finished; 1 a file could not be read or written; 2 bad input (the field and
+the rule are named; nothing is run); 3 the run became unstable (the particle or contact and
+the step are named; no summary is written); 130/143 stopped by SIGINT/SIGTERM after a whole
+step (a checkpoint is written when output.checkpoint_every is set).";
 
 fn main() -> ExitCode {
     let cli = Cli::parse();

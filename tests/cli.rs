@@ -408,3 +408,35 @@ fn a_failed_run_leaves_no_earlier_outputs_and_never_overwrites_its_scene() {
         base().to_string()
     );
 }
+
+/// Issue 31 item 2: help a user can act on. `run --help` names the files it writes
+/// and the exit codes; `verify --help` gives the tiers' real durations; the studies
+/// write where the user says, `docs/` only when named.
+#[test]
+fn help_texts_name_files_exit_codes_durations_and_where_studies_write() {
+    let text = |args: &[&str]| String::from_utf8(tamp(args).stdout).unwrap();
+    let run = text(&["run", "--help"]);
+    for needle in [
+        "summary.json",
+        "series.csv",
+        "quantities.csv",
+        "trajectory.csv",
+        "checkpoint.json",
+        "compaction.csv",
+        "Exit codes",
+        "130/143",
+        "<SCENE>  The scene",
+        "--out <DIR>",
+    ] {
+        assert!(run.contains(needle), "run --help lacks '{needle}':\n{run}");
+    }
+    let verify = text(&["verify", "--help"]);
+    assert!(verify.contains("about 10 min on 2 cores"), "{verify}");
+    assert!(!verify.contains("seconds)"), "{verify}");
+    let study = text(&["study", "--help"]);
+    assert!(study.contains("only an explicit `--out docs`"), "{study}");
+    for sub in ["accuracy-cost", "stable-alpha", "die-compaction"] {
+        let help = text(&["study", sub, "--help"]);
+        assert!(help.contains("[default: study]"), "{sub}: {help}");
+    }
+}
