@@ -65,9 +65,14 @@ pub struct Scene {
 #[serde(deny_unknown_fields)]
 pub struct MaterialSpec {
     pub name: String,
-    /// kg/m³
-    pub density: f64,
-    /// Pa; required by elastic laws (hertz).
+    /// kg/m³; required unless `rigid`.
+    #[serde(default)]
+    pub density: Option<f64>,
+    /// A wall material that does not deform: no density or elastic constants, and a
+    /// zero compliance term in E* and G* (docs/scene-format.md). Walls only.
+    #[serde(default)]
+    pub rigid: bool,
+    /// Pa; required by elastic laws (hertz) unless `rigid`.
     #[serde(default)]
     pub youngs_modulus: Option<f64>,
     #[serde(default)]
