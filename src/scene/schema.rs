@@ -10,6 +10,7 @@ use crate::contact::tangential::TangentialLaw;
 use crate::contact::van_der_waals::Cohesion;
 use crate::generate::distribution::SizeDistribution;
 use crate::simulation::StabilityLimits;
+use crate::until::UntilSpec;
 use serde::{Deserialize, Serialize};
 
 #[derive(Clone, Debug, Deserialize, Serialize)]
@@ -307,6 +308,10 @@ pub struct RunSpec {
     pub duration: Option<f64>,
     #[serde(default)]
     pub steps: Option<u64>,
+    /// End the run earlier, once the particles have settled; `duration` or `steps`
+    /// stays its maximum (docs/scene-format.md).
+    #[serde(default)]
+    pub until: Option<UntilSpec>,
 }
 
 #[derive(Clone, Debug, Deserialize, Serialize)]

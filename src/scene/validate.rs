@@ -99,7 +99,7 @@ fn validate_die_compaction(scene: &Scene, dc: &DieCompactionSpec) -> Result<()> 
         ("growth", scene.growth.is_some()),
         (
             "run",
-            scene.run.duration.is_some() || scene.run.steps.is_some(),
+            scene.run.duration.is_some() || scene.run.steps.is_some() || scene.run.until.is_some(),
         ),
     ];
     for (field, given) in owned {
@@ -475,6 +475,16 @@ fn validate_plain(scene: &Scene) -> Result<()> {
         (Some(d), None) => e.positive("run.duration", d),
         (None, Some(_)) => {}
         _ => e.push("run", "give exactly one of 'duration' (s) or 'steps'"),
+    }
+    if let Some(u) = &scene.run.until {
+        e.positive(
+            "run.until.kinetic_energy_per_particle",
+            u.kinetic_energy_per_particle,
+        );
+        if let Some(v) = u.max_speed {
+            e.positive("run.until.max_speed", v);
+        }
+        e.non_negative("run.until.held_for", u.held_for);
     }
     e.positive("broad_phase.skin_fraction", scene.broad_phase.skin_fraction);
     e.positive(
