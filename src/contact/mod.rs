@@ -33,6 +33,7 @@
 pub mod damping;
 pub mod model;
 pub mod normal;
+pub mod record;
 pub mod registry;
 pub mod states;
 pub mod tangential;
