@@ -14,7 +14,6 @@ use crate::boundary::{Boundary, shape::ShapeContact};
 use crate::contact::model::{
     CohesionModel, Composed, DampingModel, LawVisitor, NormalModel, StateOf, TangentialModel,
 };
-use crate::contact::record::{ContactRecord, Partner};
 use crate::contact::states::{ContactStates, StateStore};
 use crate::contact::{ContactForce, ContactGeometry, ContactLaw};
 use crate::detect::NeighborList;
@@ -240,9 +239,6 @@ pub struct Simulation {
     pub sources: Vec<Source>,
     /// Moment-of-inertia scale of new particles (`rotation.inertia_scale`).
     pub inertia_scale: f64,
-    /// `Some` only for a step whose contacts an output wants (`record_contacts`):
-    /// the force loop then pushes one record per contact.
-    contact_log: Option<Vec<ContactRecord>>,
 }
 
 impl Simulation {
@@ -292,7 +288,6 @@ impl Simulation {
             target_radius: Vec::new(),
             sources: Vec::new(),
             inertia_scale: 1.0,
-            contact_log: None,
         };
         // Forces at t = 0 with a zero step, so no tangential spring is advanced before
         // the first real step.
@@ -601,9 +596,6 @@ impl Simulation {
         // Pass 1, over every pair of the list: the pairs within reach of their law,
         // with their separation; the state of every other pair is reset (it is apart).
         // Most pairs of a Verlet list are apart, and this loop is all they cost.
-        // Off (`None`) except at the steps an output records: one test per contact
-        // of a loop-invariant local.
-        let mut log = self.contact_log.take();
         let mut near = std::mem::take(&mut self.near);
         near.clear();
         for (k, &(i, j)) in pairs.iter().enumerate() {
@@ -670,19 +662,6 @@ impl Simulation {
             };
             force[i] += total;
             force[j] -= total;
-            if let Some(log) = log.as_mut() {
-                log.push(ContactRecord {
-                    i,
-                    partner: Partner::Particle(j),
-                    centre: position[i],
-                    other_end: position[i] - d,
-                    point: position[i] - normal * lever_i,
-                    normal,
-                    normal_force: f.normal,
-                    tangential_force: f.tangential,
-                    overlap,
-                });
-            }
             if torques {
                 let t = -normal.cross(&f.tangential);
                 torque[i] += t * lever_i;
@@ -743,20 +722,6 @@ impl Simulation {
                     };
                     p.force[i] += total;
                     on_wall -= total;
-                    if let Some(log) = log.as_mut() {
-                        let point = p.position[i] - normal * lever;
-                        log.push(ContactRecord {
-                            i,
-                            partner: Partner::Wall(w),
-                            centre: p.position[i],
-                            other_end: point,
-                            point,
-                            normal,
-                            normal_force: f.normal,
-                            tangential_force: f.tangential,
-                            overlap,
-                        });
-                    }
                     if torques {
                         p.torque[i] += -normal.cross(&f.tangential) * lever;
                     }
@@ -766,18 +731,7 @@ impl Simulation {
         }
         self.scratch = found;
         self.max_overlap_ratio = worst;
-        self.contact_log = log;
         Ok(())
-    }
-
-    /// Make the next step record its contacts; `take_contacts` hands them over.
-    pub fn record_contacts(&mut self) {
-        self.contact_log = Some(Vec::new());
-    }
-
-    /// The contacts the last step recorded (empty unless `record_contacts` asked).
-    pub fn take_contacts(&mut self) -> Vec<ContactRecord> {
-        self.contact_log.take().unwrap_or_default()
     }
 
     /// Power the prescribed bodies put into the particles at the current state, W.

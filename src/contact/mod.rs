@@ -33,7 +33,6 @@
 pub mod damping;
 pub mod model;
 pub mod normal;
-pub mod record;
 pub mod registry;
 pub mod states;
 pub mod tangential;
