@@ -26,6 +26,7 @@ pub mod simulation;
 pub mod space;
 pub mod study;
 pub mod timestep;
+pub mod until;
 pub mod verify;
 
 pub use error::{Result, TampError};

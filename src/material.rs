@@ -4,6 +4,9 @@
 //!   1/E* = (1 − ν_i²)/E_i + (1 − ν_j²)/E_j
 //! Effective shear modulus (Rojek 2016 eq 13, with G = E / (2(1 + ν))):
 //!   1/G* = (2 − ν_i)/G_i + (2 − ν_j)/G_j
+//! A rigid material (a wall's only) has zero compliance: its term in both sums is 0, so
+//! against a rigid wall E* = E_i/(1 − ν_i²) and G* = G_i/(2 − ν_i). Two rigid bodies
+//! never touch (walls meet particles only), so their pair has no modulus.
 //! Effective radius (Rojek eq 4): 1/R* = 1/R_i + 1/R_j; a plane wall has R = ∞.
 //! Effective mass: m* = m_i m_j / (m_i + m_j); a wall or an immovable body has m = ∞.
 //! Effective Hollomon constant (Rojek eq 18): (σ0*)^{−1/m} = (σ0_i)^{−1/m} + (σ0_j)^{−1/m};
@@ -12,7 +15,10 @@
 #[derive(Clone, Debug, PartialEq)]
 pub struct Material {
     pub name: String,
-    pub density: f64,
+    /// kg/m³; `None` for a rigid material, which no particle may use.
+    pub density: Option<f64>,
+    /// Infinitely stiff (zero compliance); validation gives it no elastic constants.
+    pub rigid: bool,
     pub youngs_modulus: Option<f64>,
     pub poisson_ratio: Option<f64>,
     /// Rigid-plastic hardening curve σ = σ0 ε^m (Rojek eq 15); needed by Storåkers.
@@ -63,6 +69,13 @@ pub fn effective_hollomon(a: Option<Hollomon>, b: Option<Hollomon>) -> Option<Ho
 }
 
 impl Material {
+    /// The density of a particle's material; validation refuses a rigid material (the
+    /// only one without a density) for particles.
+    pub fn particle_density(&self) -> f64 {
+        self.density
+            .expect("validated: particle materials are not rigid and have a density")
+    }
+
     pub fn shear_modulus(&self) -> Option<f64> {
         Some(self.youngs_modulus? / (2.0 * (1.0 + self.poisson_ratio?)))
     }
@@ -80,14 +93,27 @@ pub struct PairProperties {
     pub friction: f64,
 }
 
+/// 1/E* as the sum of the two compliance terms; `None` when a term is missing or both
+/// bodies are rigid (they never touch).
+fn mix(a: Option<f64>, b: Option<f64>) -> Option<f64> {
+    let sum = a? + b?;
+    (sum > 0.0).then(|| 1.0 / sum)
+}
+
 pub fn effective_modulus(a: &Material, b: &Material) -> Option<f64> {
-    let term = |m: &Material| Some((1.0 - m.poisson_ratio?.powi(2)) / m.youngs_modulus?);
-    Some(1.0 / (term(a)? + term(b)?))
+    let term = |m: &Material| match m.rigid {
+        true => Some(0.0),
+        false => Some((1.0 - m.poisson_ratio?.powi(2)) / m.youngs_modulus?),
+    };
+    mix(term(a), term(b))
 }
 
 pub fn effective_shear_modulus(a: &Material, b: &Material) -> Option<f64> {
-    let term = |m: &Material| Some((2.0 - m.poisson_ratio?) / m.shear_modulus()?);
-    Some(1.0 / (term(a)? + term(b)?))
+    let term = |m: &Material| match m.rigid {
+        true => Some(0.0),
+        false => Some((2.0 - m.poisson_ratio?) / m.shear_modulus()?),
+    };
+    mix(term(a), term(b))
 }
 
 pub fn effective_radius(r_i: f64, r_j: f64) -> f64 {
@@ -153,7 +179,8 @@ mod tests {
     fn steel() -> Material {
         Material {
             name: "s".into(),
-            density: 7800.0,
+            density: Some(7800.0),
+            rigid: false,
             youngs_modulus: Some(2e11),
             poisson_ratio: Some(0.3),
             hollomon: None,
@@ -211,6 +238,23 @@ mod tests {
             800e6,
             max_relative = 1e-14
         );
+    }
+
+    #[test]
+    fn a_rigid_partner_leaves_the_particle_term_alone() {
+        let wall = Material {
+            name: "w".into(),
+            density: None,
+            rigid: true,
+            youngs_modulus: None,
+            poisson_ratio: None,
+            hollomon: None,
+        };
+        let e = effective_modulus(&steel(), &wall).unwrap();
+        assert_eq!(e, 1.0 / ((1.0 - 0.09) / 2e11));
+        let g = effective_shear_modulus(&wall, &steel()).unwrap();
+        assert_eq!(g, 1.0 / ((2.0 - 0.3) / (2e11 / 2.6)));
+        assert!(effective_modulus(&wall, &wall).is_none());
     }
 
     #[test]

@@ -6,9 +6,14 @@
 use crate::checkpoint::{self, Checkpoint, SimState};
 use crate::error::{Result, TampError};
 use crate::output::progress::Progress;
-use crate::output::{self, Provenance, series::Series, summary::Summary};
+use crate::output::{
+    self, Provenance,
+    series::Series,
+    summary::{RunEnd, Summary},
+};
 use crate::scene;
 use crate::simulation::Simulation;
+use crate::until::Until;
 use serde::{Deserialize, Serialize};
 use std::borrow::Cow;
 use std::path::Path;
@@ -22,6 +27,10 @@ struct RunState<'a> {
     series_rows: Cow<'a, [Vec<f64>]>,
     trajectory: Cow<'a, str>,
     vtk_frames: usize,
+    /// `run.until`'s unbroken stretch below its thresholds (absent without `until`,
+    /// so the checkpoints of other scenes are unchanged).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    settled_since: Option<f64>,
 }
 
 /// Append one trajectory.csv row per particle at the current step.
@@ -107,6 +116,7 @@ pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool, resume: bool) -
     let mut series = Series::new(&scene.output.series, &sim);
     let mut trajectory = String::new();
     let mut frames = 0usize;
+    let mut until = scene.run.until.clone().map(Until::new);
     if resume && checkpoint_path.exists() {
         let saved: Checkpoint<RunState> = checkpoint::read_checkpoint(&checkpoint_path)?;
         if saved.git_commit != crate::GIT_COMMIT {
@@ -122,6 +132,9 @@ pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool, resume: bool) -
         series.rows = state.series_rows.into_owned();
         trajectory = state.trajectory.into_owned();
         frames = state.vtk_frames;
+        if let Some(u) = &mut until {
+            u.held_since = state.settled_since;
+        }
         eprintln!(
             "resuming from step {} of {} ({})",
             sim.step,
@@ -152,12 +165,17 @@ pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool, resume: bool) -
 
     let mut progress = Progress::new("steps", built.steps, quiet);
     progress.set(sim.step);
-    while sim.step < built.steps {
+    let mut settled = false;
+    while sim.step < built.steps && !settled {
         sim.step()?;
+        if let Some(u) = &mut until {
+            settled = u.settled(&sim);
+        }
+        let last = settled || sim.step == built.steps;
         if sim.step % every == 0 {
             series.record(&sim)?;
         }
-        if trajectory_every > 0 && (sim.step % trajectory_every == 0 || sim.step == built.steps) {
+        if trajectory_every > 0 && (sim.step % trajectory_every == 0 || last) {
             record_trajectory(&sim, &mut trajectory);
         }
         if vtk_every > 0 && sim.step % vtk_every == 0 {
@@ -171,6 +189,7 @@ pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool, resume: bool) -
                 series_rows: Cow::Borrowed(&series.rows),
                 trajectory: Cow::Borrowed(&trajectory),
                 vtk_frames: frames,
+                settled_since: until.as_ref().and_then(|u| u.held_since),
             };
             checkpoint::write_checkpoint(&checkpoint_path, &Checkpoint::new(&sha, state))?;
         }
@@ -194,7 +213,34 @@ pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool, resume: bool) -
         series.record(&sim)?;
     }
     let provenance = Provenance::new(sha, scene.seed, sim.dt, built.dt_estimate, built.steps);
-    let summary = Summary::new(&sim, provenance, &scene.name, built.warnings);
+    let mut summary = Summary::new(&sim, provenance, &scene.name, built.warnings);
+    if let Some(u) = &until {
+        let criterion = match (settled, scene.run.steps) {
+            (true, _) => "run.until",
+            (false, Some(_)) => "run.steps",
+            (false, None) => "run.duration",
+        };
+        let r = crate::until::reading(&sim);
+        eprintln!(
+            "{criterion} ended the run at t = {:e} s (step {}): kinetic energy per particle {:e} J (run.until: below {:e} J{} for {:e} s), largest speed {:e} m/s",
+            sim.time,
+            sim.step,
+            r.kinetic_energy_per_particle,
+            u.spec.kinetic_energy_per_particle,
+            u.spec
+                .max_speed
+                .map_or(String::new(), |v| format!(" and speeds below {v:e} m/s")),
+            u.spec.held_for,
+            r.max_speed
+        );
+        summary.ended_by = Some(RunEnd {
+            criterion,
+            time: sim.time,
+            step: sim.step,
+            kinetic_energy_per_particle: r.kinetic_energy_per_particle,
+            max_speed: r.max_speed,
+        });
+    }
     if let Some((name, value)) = summary
         .quantities()
         .into_iter()

@@ -468,7 +468,7 @@ impl Simulation {
                 src.remaining -= 1;
                 let velocity = crate::generate::random_unit(&mut src.rng) * src.speed;
                 let omega = crate::generate::random_unit(&mut src.rng) * src.spin;
-                let density = self.materials[src.material].density;
+                let density = self.materials[src.material].particle_density();
                 self.particles.push(
                     x,
                     velocity,
@@ -978,7 +978,7 @@ impl Simulation {
         for src in self.sources.iter().filter(|s| s.remaining > 0) {
             let r = src.radius.min_radius();
             if r > 0.0 {
-                let m = self.materials[src.material].density * 4.0 / 3.0
+                let m = self.materials[src.material].particle_density() * 4.0 / 3.0
                     * std::f64::consts::PI
                     * r.powi(3);
                 bodies.push((

@@ -210,6 +210,11 @@ fn export_liggghts_refuses_what_liggghts_cannot_express_naming_every_field() {
     scene["contact"]["cohesion"] =
         json!({"law": "van_der_waals", "hamaker": 1e-19, "min_separation": 4e-10, "cutoff": 1e-6});
     scene["growth"] = json!({"duration": 0.01, "initial_fraction": 0.5});
+    scene["materials"]
+        .as_array_mut()
+        .unwrap()
+        .push(json!({"name": "die", "rigid": true}));
+    scene["walls"][0]["material"] = json!("die");
     let (_dir, path, out) = scene_in_tempdir(&scene);
     let o = tamp(&[
         "export-liggghts",
@@ -224,6 +229,7 @@ fn export_liggghts_refuses_what_liggghts_cannot_express_naming_every_field() {
         "contact.tangential.law",
         "contact.cohesion",
         "growth",
+        "materials[1].rigid",
     ] {
         assert!(
             err.contains(&format!("{field}: cannot export to LIGGGHTS 3.8")),

@@ -538,4 +538,53 @@ fn scenes_too_large_for_memory_are_refused_before_allocating() {
     s["output"] = json!({"trajectory_every": 1});
     s["run"] = json!({"steps": 1_000_000_000_000u64});
     expect_input_error(s, &needles("output.trajectory_every"));
+/// A rigid wall material: no density or elastic constants (a value given would never
+/// be used, so it is refused), and never a particle's material.
+#[test]
+fn rigid_material_rules_are_named() {
+    let mut s = base();
+    s["materials"]
+        .as_array_mut()
+        .unwrap()
+        .push(json!({"name": "die", "rigid": true, "density": 7800, "youngs_modulus": 2e11}));
+    s["walls"][0]["material"] = json!("die");
+    s["particles"][1]["material"] = json!("die");
+    s["materials"][0].as_object_mut().unwrap().remove("density");
+    expect_input_error(
+        s,
+        &[
+            "materials[1].density: must be absent for a rigid material",
+            "materials[1].youngs_modulus: must be absent for a rigid material",
+            "particles[1].material: 'die' is rigid: only walls may be made of a rigid material",
+            "materials[0].density: is required (kg/m³) unless the material is \"rigid\": true",
+        ],
+    );
+}
+
+#[test]
+fn a_rigid_wall_material_runs_without_constants() {
+    let mut s = base();
+    s["materials"]
+        .as_array_mut()
+        .unwrap()
+        .push(json!({"name": "die", "rigid": true}));
+    s["walls"][0]["material"] = json!("die");
+    s["run"]["duration"] = json!(0.01);
+    let (code, stderr) = run_text(&s.to_string());
+    assert_eq!(code, 0, "stderr: {stderr}");
+}
+
+#[test]
+fn a_die_compaction_of_rigid_particles_is_named() {
+    let mut die: Value = serde_json::from_str(include_str!(
+        "../verification/nial_die_compaction_small.scene.json"
+    ))
+    .unwrap();
+    die["materials"][0] = json!({"name": "NiAl", "rigid": true});
+    expect_input_error(
+        die,
+        &[
+            "die_compaction.particles.material: 'NiAl' is rigid: only walls may be made of a rigid material",
+        ],
+    );
 }

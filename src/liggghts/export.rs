@@ -185,6 +185,15 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
         }
     }
     for (k, m) in scene.materials.iter().enumerate() {
+        if m.rigid {
+            // An atom type's youngsModulus must be finite: a stand-in stiffness would
+            // be a different scene, so the user chooses it.
+            refuse(
+                &format!("materials[{k}].rigid"),
+                "LIGGGHTS has no rigid material (every atom type needs a finite youngsModulus and poissonsRatio); give the wall material elastic constants",
+            );
+            continue;
+        }
         if m.youngs_modulus.is_none() {
             refuse(
                 &format!("materials[{k}].youngs_modulus"),
@@ -528,7 +537,7 @@ pub fn export(
         let _ = writeln!(data, "{} {} {}lo {}hi", g(l), g(h), AXES[a], AXES[a]);
     }
     data.push_str("\nAtoms\n\n");
-    let density = |i: usize| sim.materials[p.material[i]].density;
+    let density = |i: usize| sim.materials[p.material[i]].particle_density();
     for i in 0..p.len() {
         let x = p.position[i];
         let _ = writeln!(

@@ -21,6 +21,21 @@ pub struct Summary {
     pub neighbor_list_builds: u64,
     pub wall_forces: Vec<WallForce>,
     pub warnings: Vec<String>,
+    /// Which criterion ended the run; present only when the scene gives `run.until`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ended_by: Option<RunEnd>,
+}
+
+/// How a run with `run.until` ended: `criterion` is `run.until` when the particles
+/// settled, or `run.duration` / `run.steps` when the maximum came first; the reading
+/// is the criterion's at the last step.
+#[derive(Debug, Serialize)]
+pub struct RunEnd {
+    pub criterion: &'static str,
+    pub time: f64,
+    pub step: u64,
+    pub kinetic_energy_per_particle: f64,
+    pub max_speed: f64,
 }
 
 #[derive(Debug, Serialize)]
@@ -60,6 +75,7 @@ impl Summary {
                 })
                 .collect(),
             warnings,
+            ended_by: None,
         }
     }
 

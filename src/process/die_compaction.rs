@@ -158,6 +158,7 @@ fn stage_scene(
     s.run = RunSpec {
         duration: Some(duration),
         steps: None,
+        until: None,
     };
     // A carried bed is in contact: its overlaps are state, not input mistakes.
     s.stability.initial_overlap_tolerance = s.stability.max_overlap_fraction;

@@ -10,6 +10,7 @@ use crate::contact::tangential::TangentialLaw;
 use crate::contact::van_der_waals::Cohesion;
 use crate::generate::distribution::SizeDistribution;
 use crate::simulation::StabilityLimits;
+use crate::until::UntilSpec;
 use serde::{Deserialize, Serialize};
 
 #[derive(Clone, Debug, Deserialize, Serialize)]
@@ -65,9 +66,14 @@ pub struct Scene {
 #[serde(deny_unknown_fields)]
 pub struct MaterialSpec {
     pub name: String,
-    /// kg/m³
-    pub density: f64,
-    /// Pa; required by elastic laws (hertz).
+    /// kg/m³; required unless `rigid`.
+    #[serde(default)]
+    pub density: Option<f64>,
+    /// A wall material that does not deform: no density or elastic constants, and a
+    /// zero compliance term in E* and G* (docs/scene-format.md). Walls only.
+    #[serde(default)]
+    pub rigid: bool,
+    /// Pa; required by elastic laws (hertz) unless `rigid`.
     #[serde(default)]
     pub youngs_modulus: Option<f64>,
     #[serde(default)]
@@ -302,6 +308,10 @@ pub struct RunSpec {
     pub duration: Option<f64>,
     #[serde(default)]
     pub steps: Option<u64>,
+    /// End the run earlier, once the particles have settled; `duration` or `steps`
+    /// stays its maximum (docs/scene-format.md).
+    #[serde(default)]
+    pub until: Option<UntilSpec>,
 }
 
 #[derive(Clone, Debug, Deserialize, Serialize)]

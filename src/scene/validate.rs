@@ -29,7 +29,7 @@ fn require(e: &mut Errors, scene: &Scene, needs: Needs, by: &str) {
                 ("youngs_modulus", m.youngs_modulus.is_some()),
                 ("poisson_ratio", m.poisson_ratio.is_some()),
             ] {
-                if !given {
+                if !given && !m.rigid {
                     e.push(
                         format!("materials[{k}].{field}"),
                         format!("is required by {by}{what_for}"),
@@ -99,7 +99,7 @@ fn validate_die_compaction(scene: &Scene, dc: &DieCompactionSpec) -> Result<()> 
         ("growth", scene.growth.is_some()),
         (
             "run",
-            scene.run.duration.is_some() || scene.run.steps.is_some(),
+            scene.run.duration.is_some() || scene.run.steps.is_some() || scene.run.until.is_some(),
         ),
     ];
     for (field, given) in owned {
@@ -118,6 +118,19 @@ fn validate_die_compaction(scene: &Scene, dc: &DieCompactionSpec) -> Result<()> 
     }
     let names: HashSet<&str> = scene.materials.iter().map(|m| m.name.as_str()).collect();
     dc.validate(&|name| names.contains(name), &mut e);
+    if let Some(m) = scene
+        .materials
+        .iter()
+        .find(|m| m.rigid && m.name == dc.particles.material)
+    {
+        e.push(
+            "die_compaction.particles.material",
+            format!(
+                "'{}' is rigid: only walls may be made of a rigid material",
+                m.name
+            ),
+        );
+    }
     if e.0.is_empty() {
         let mut probe = scene.clone();
         probe.die_compaction = None;
@@ -159,7 +172,30 @@ fn validate_plain(scene: &Scene) -> Result<()> {
                 format!("must be unique, '{}' is repeated", m.name),
             );
         }
-        e.positive(format!("materials[{k}].density"), m.density);
+        if m.rigid {
+            // Refused rather than ignored: a value given but never used would mislead.
+            for (field, given) in [
+                ("density", m.density.is_some()),
+                ("youngs_modulus", m.youngs_modulus.is_some()),
+                ("poisson_ratio", m.poisson_ratio.is_some()),
+                ("hollomon", m.hollomon.is_some()),
+            ] {
+                if given {
+                    e.push(
+                        format!("materials[{k}].{field}"),
+                        "must be absent for a rigid material: it does not deform or move, so the value would never be used",
+                    );
+                }
+            }
+        } else {
+            match m.density {
+                Some(d) => e.positive(format!("materials[{k}].density"), d),
+                None => e.push(
+                    format!("materials[{k}].density"),
+                    "is required (kg/m³) unless the material is \"rigid\": true",
+                ),
+            }
+        }
         if let Some(y) = m.youngs_modulus {
             e.positive(format!("materials[{k}].youngs_modulus"), y);
         }
@@ -173,6 +209,24 @@ fn validate_plain(scene: &Scene) -> Result<()> {
         }
     }
     let known = |name: &str| names.contains(name);
+    let rigid: HashSet<&str> = scene
+        .materials
+        .iter()
+        .filter(|m| m.rigid)
+        .map(|m| m.name.as_str())
+        .collect();
+    // What a particle's material must be: known, and not rigid (a rigid body has no
+    // mass to integrate).
+    let particle_material = |e: &mut Errors, path: String, name: &str| {
+        if !known(name) {
+            e.push(path, format!("unknown material '{name}'"));
+        } else if rigid.contains(name) {
+            e.push(
+                path,
+                format!("'{name}' is rigid: only walls may be made of a rigid material"),
+            );
+        }
+    };
 
     let contact = &scene.contact;
     let roles = Roles {
@@ -266,12 +320,7 @@ fn validate_plain(scene: &Scene) -> Result<()> {
     for (k, p) in scene.particles.iter().enumerate() {
         e.finite3(format!("particles[{k}].position"), &p.position);
         e.positive(format!("particles[{k}].radius"), p.radius);
-        if !known(&p.material) {
-            e.push(
-                format!("particles[{k}].material"),
-                format!("unknown material '{}'", p.material),
-            );
-        }
+        particle_material(&mut e, format!("particles[{k}].material"), &p.material);
         if p.prescribed_velocity.is_some() && (p.velocity.is_some() || p.omega.is_some()) {
             e.push(
                 format!("particles[{k}].prescribed_velocity"),
@@ -296,12 +345,7 @@ fn validate_plain(scene: &Scene) -> Result<()> {
     }
     for (k, ins) in scene.insert.iter().enumerate() {
         let path = format!("insert[{k}]");
-        if !known(&ins.material) {
-            e.push(
-                format!("{path}.material"),
-                format!("unknown material '{}'", ins.material),
-            );
-        }
+        particle_material(&mut e, format!("{path}.material"), &ins.material);
         let r_max = match ins.radius {
             RadiusSpec::Fixed(r) => {
                 e.positive(format!("{path}.radius"), r);
@@ -357,12 +401,7 @@ fn validate_plain(scene: &Scene) -> Result<()> {
     }
     for (k, dep) in scene.deposit.iter().enumerate() {
         let path = format!("deposit[{k}]");
-        if !known(&dep.material) {
-            e.push(
-                format!("{path}.material"),
-                format!("unknown material '{}'", dep.material),
-            );
-        }
+        particle_material(&mut e, format!("{path}.material"), &dep.material);
         radius_law_max(&mut e, &format!("{path}.radius"), &dep.radius);
         let [lo, hi] = dep.footprint;
         if !(lo.iter().chain(&hi).all(|c| c.is_finite()) && hi[0] > lo[0] && hi[1] > lo[1]) {
@@ -436,6 +475,16 @@ fn validate_plain(scene: &Scene) -> Result<()> {
         (Some(d), None) => e.positive("run.duration", d),
         (None, Some(_)) => {}
         _ => e.push("run", "give exactly one of 'duration' (s) or 'steps'"),
+    }
+    if let Some(u) = &scene.run.until {
+        e.positive(
+            "run.until.kinetic_energy_per_particle",
+            u.kinetic_energy_per_particle,
+        );
+        if let Some(v) = u.max_speed {
+            e.positive("run.until.max_speed", v);
+        }
+        e.non_negative("run.until.held_for", u.held_for);
     }
     e.positive("broad_phase.skin_fraction", scene.broad_phase.skin_fraction);
     e.positive(

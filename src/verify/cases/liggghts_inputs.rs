@@ -41,7 +41,7 @@ impl Mismatches {
         time_step: f64,
     ) {
         let m = &scene.materials[0];
-        self.check("density", m.density, density);
+        self.check("density", m.density.unwrap_or(f64::NAN), density);
         self.check(
             "youngs_modulus",
             m.youngs_modulus.unwrap_or(f64::NAN),

@@ -80,7 +80,8 @@ fn mismatches(scene: &Scene, row: &Row, model: &str) -> Mismatches {
         // model hooke: the scene's k_n must be LIGGGHTS's stiffness at characteristicVelocity.
         let steel = Material {
             name: "LIGGGHTS type 1".into(),
-            density: row.density,
+            density: Some(row.density),
+            rigid: false,
             youngs_modulus: Some(row.youngs_modulus),
             poisson_ratio: Some(row.poisson_ratio),
             hollomon: None,

@@ -94,7 +94,8 @@ fn scene_of(base: &Scene, row: &Row) -> Result<Scene> {
             // model hooke: k_n from the materials and characteristicVelocity.
             let steel = Material {
                 name: "LIGGGHTS type 1".into(),
-                density: row.density,
+                density: Some(row.density),
+                rigid: false,
                 youngs_modulus: Some(row.youngs_modulus),
                 poisson_ratio: Some(row.poisson_ratio),
                 hollomon: None,

@@ -9,6 +9,7 @@ mod compaction_2d;
 mod density_segregation;
 mod energy_conservation_elastic;
 mod hertz_collision_time;
+mod hertz_rigid_wall_impact;
 mod hertz_yield_onset;
 mod hollomon_constants;
 mod kuwabara_kono_restitution;
@@ -39,6 +40,7 @@ use super::CaseFn;
 pub const CASES: &[(&str, CaseFn)] = &[
     ("linear_restitution", linear_restitution::run),
     ("hertz_collision_time", hertz_collision_time::run),
+    ("hertz_rigid_wall_impact", hertz_rigid_wall_impact::run),
     ("hertz_yield_onset", hertz_yield_onset::run),
     (
         "energy_conservation_elastic",

@@ -2,6 +2,7 @@
 //! the measurements themselves never change the state.
 
 use crate::error::{Result, TampError};
+use crate::particles::Vec3;
 use crate::simulation::Simulation;
 
 /// What one binary collision between particles `i` and `j` looked like.
@@ -26,15 +27,49 @@ pub fn binary_collision(
     max_steps: u64,
 ) -> Result<Collision> {
     let n = (sim.particles.position[i] - sim.particles.position[j]).normalize();
-    let approach = |s: &Simulation| -(s.particles.velocity[i] - s.particles.velocity[j]).dot(&n);
+    collision(
+        sim,
+        max_steps,
+        &format!("particles {i} and {j}"),
+        |s| s.overlap(i, j),
+        |s| -(s.particles.velocity[i] - s.particles.velocity[j]).dot(&n),
+    )
+}
+
+/// Step `sim` until particle `i` has touched and left the fixed plane through `point`
+/// with unit `normal` (at most `max_steps`); the overlap is R_i − (x_i − point)·n.
+pub fn plane_collision(
+    sim: &mut Simulation,
+    i: usize,
+    point: Vec3,
+    normal: Vec3,
+    max_steps: u64,
+) -> Result<Collision> {
+    collision(
+        sim,
+        max_steps,
+        &format!("particle {i} and the plane"),
+        |s| s.particles.radius[i] - (s.particles.position[i] - point).dot(&normal),
+        |s| -s.particles.velocity[i].dot(&normal),
+    )
+}
+
+/// One collision seen through its overlap and normal approach speed.
+fn collision(
+    sim: &mut Simulation,
+    max_steps: u64,
+    bodies: &str,
+    overlap: impl Fn(&Simulation) -> f64,
+    approach: impl Fn(&Simulation) -> f64,
+) -> Result<Collision> {
     let v_before = approach(sim);
     let dt = sim.dt;
-    let mut prev = sim.overlap(i, j);
+    let mut prev = overlap(sim);
     let (mut start, mut end) = (None, None);
     let mut samples: Vec<f64> = Vec::new();
     for _ in 0..max_steps {
         sim.step()?;
-        let now = sim.overlap(i, j);
+        let now = overlap(sim);
         if start.is_none() && prev <= 0.0 && now > 0.0 {
             start = Some(sim.time - dt + dt * (-prev) / (now - prev));
         }
@@ -49,7 +84,7 @@ pub fn binary_collision(
     }
     let (Some(start), Some(end)) = (start, end) else {
         return Err(TampError::Other(format!(
-            "particles {i} and {j} did not complete a collision in {max_steps} steps"
+            "{bodies} did not complete a collision in {max_steps} steps"
         )));
     };
     let k = samples
