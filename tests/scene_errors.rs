@@ -538,6 +538,8 @@ fn scenes_too_large_for_memory_are_refused_before_allocating() {
     s["output"] = json!({"trajectory_every": 1});
     s["run"] = json!({"steps": 1_000_000_000_000u64});
     expect_input_error(s, &needles("output.trajectory_every"));
+}
+
 /// A rigid wall material: no density or elastic constants (a value given would never
 /// be used, so it is refused), and never a particle's material.
 #[test]

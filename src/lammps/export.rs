@@ -121,6 +121,15 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
     }
     let hertz = scene.contact.normal.lammps() == Ok(LammpsNormal::HertzMaterial);
     for (k, m) in scene.materials.iter().enumerate() {
+        if m.rigid {
+            // A wall material only; walls are refused below, and a stand-in
+            // stiffness would be a different scene.
+            refuse(
+                format!("materials[{k}].rigid"),
+                "LAMMPS has no rigid material for pair granular; give the wall material elastic constants",
+            );
+            continue;
+        }
         if hertz && (m.youngs_modulus.is_none() || m.poisson_ratio.is_none()) {
             refuse(
                 format!("materials[{k}]"),
@@ -215,7 +224,9 @@ pub fn export(
     data.push_str("\nAtoms # sphere\n\n");
     for i in 0..p.len() {
         let x = p.position[i];
-        let density = sim.materials[p.material[i]].density;
+        let density = sim.materials[p.material[i]]
+            .density
+            .expect("validated: a particle material is not rigid and has a density");
         let _ = writeln!(
             data,
             "{} {} {} {} {} {} {}",
