@@ -446,3 +446,38 @@ fn help_texts_name_files_exit_codes_durations_and_where_studies_write() {
         assert!(help.contains("[default: study]"), "{sub}: {help}");
     }
 }
+
+/// Issue 31 item 1: the README is a front door of about one screen before its
+/// documentation list, and every file its commands name exists.
+#[test]
+fn readme_front_door_is_one_screen_and_names_existing_files() {
+    let readme = include_str!("../README.md");
+    let front = readme
+        .split("## Documentation")
+        .next()
+        .expect("README has a documentation list");
+    assert!(
+        front.lines().count() <= 50,
+        "{} lines before the documentation list",
+        front.lines().count()
+    );
+    for needle in [
+        "cargo install --path .",
+        "cargo run --release -- verify",
+        "cargo test --release",
+    ] {
+        assert!(front.contains(needle), "README lacks `{needle}`");
+    }
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let named: Vec<&str> = front
+        .split(|c: char| c.is_whitespace() || c == '`' || c == '(' || c == ')')
+        .filter(|w| w.ends_with(".scene.json") || w.starts_with(".ci/"))
+        .collect();
+    assert!(named.len() >= 3, "{named:?}");
+    for path in named {
+        assert!(
+            root.join(path).exists(),
+            "README names {path}, which does not exist"
+        );
+    }
+}
