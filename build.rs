@@ -55,6 +55,21 @@ fn main() {
         source
     };
     println!("cargo:rustc-env=TAMP_SOURCE_TREE={source}");
-    println!("cargo:rerun-if-changed=.git/HEAD");
-    println!("cargo:rerun-if-changed=.git/index");
+    // Ask git where HEAD and the index are: in a worktree `.git` is a file, and a
+    // path that does not exist would make cargo rebuild tamp on every command.
+    let git_dir = Command::new("git")
+        .args(["rev-parse", "--git-dir"])
+        .output()
+        .ok()
+        .filter(|o| o.status.success())
+        .map(|o| std::path::PathBuf::from(String::from_utf8_lossy(&o.stdout).trim()));
+    println!("cargo:rerun-if-changed=build.rs");
+    if let Some(dir) = git_dir {
+        for name in ["HEAD", "index"] {
+            let path = dir.join(name);
+            if path.exists() {
+                println!("cargo:rerun-if-changed={}", path.display());
+            }
+        }
+    }
 }
