@@ -77,6 +77,20 @@ impl TampError {
 
 pub type Result<T> = std::result::Result<T, TampError>;
 
+/// Every field a peer code cannot express, as one input error with one
+/// `path: cannot export to PEER: why` line per field.
+pub fn cannot_export(peer: &str, list: Vec<(String, String)>) -> TampError {
+    let mut errors: Vec<TampError> = list
+        .into_iter()
+        .map(|(path, why)| TampError::input(path, format!("cannot export to {peer}: {why}")))
+        .collect();
+    if errors.len() == 1 {
+        errors.pop().expect("one error")
+    } else {
+        TampError::InputMany(errors)
+    }
+}
+
 /// Input rules broken, collected in one pass: each `json.path: rule, got value`.
 pub struct Errors(pub Vec<TampError>);
 

@@ -147,15 +147,7 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
 }
 
 fn refuse_all(list: Vec<(String, String)>) -> TampError {
-    let mut errors: Vec<TampError> = list
-        .into_iter()
-        .map(|(path, why)| TampError::input(path, format!("cannot export to LAMMPS: {why}")))
-        .collect();
-    if errors.len() == 1 {
-        errors.pop().expect("one error")
-    } else {
-        TampError::InputMany(errors)
-    }
+    crate::error::cannot_export("LAMMPS", list)
 }
 
 /// Write the deck for the scene file at `scene_path` into `out_dir`.

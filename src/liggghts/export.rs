@@ -233,15 +233,7 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
 }
 
 fn refuse_all(list: Vec<(String, String)>) -> TampError {
-    let mut errors: Vec<TampError> = list
-        .into_iter()
-        .map(|(path, why)| TampError::input(path, format!("cannot export to LIGGGHTS 3.8: {why}")))
-        .collect();
-    if errors.len() == 1 {
-        errors.pop().expect("one error")
-    } else {
-        TampError::InputMany(errors)
-    }
+    crate::error::cannot_export("LIGGGHTS 3.8", list)
 }
 
 /// Write the deck for the scene file at `scene_path` into `out_dir`.

@@ -45,22 +45,7 @@ fn mismatches(scene: &Scene, row: &Row) -> Mismatches {
         row.poisson_ratio,
         row.time_step,
     );
-    let [a, b] = [&scene.particles[0], &scene.particles[1]];
-    out.check("radius of particles[0]", a.radius, row.radius);
-    out.check("radius of particles[1]", b.radius, row.radius);
-    let d: f64 = (0..3)
-        .map(|k| (b.position[k] - a.position[k]).powi(2))
-        .sum::<f64>()
-        .sqrt();
-    out.check("initial gap", d - a.radius - b.radius, row.initial_gap);
-    let (va, vb) = (
-        a.velocity.unwrap_or([0.0; 3]),
-        b.velocity.unwrap_or([0.0; 3]),
-    );
-    let approach: f64 = (0..3)
-        .map(|k| (va[k] - vb[k]) * (b.position[k] - a.position[k]) / d)
-        .sum();
-    out.check("relative speed", approach, row.relative_speed);
+    out.check_head_on_pair(scene, row.radius, row.initial_gap, row.relative_speed);
     out
 }
 

@@ -59,6 +59,33 @@ impl Mismatches {
         );
     }
 
+    /// A head-on pair of equal spheres (`particles[0]`, `particles[1]`): radius,
+    /// initial gap and speed of approach along the line of centres.
+    pub fn check_head_on_pair(
+        &mut self,
+        scene: &Scene,
+        radius: f64,
+        initial_gap: f64,
+        relative_speed: f64,
+    ) {
+        let [a, b] = [&scene.particles[0], &scene.particles[1]];
+        self.check("radius of particles[0]", a.radius, radius);
+        self.check("radius of particles[1]", b.radius, radius);
+        let d: f64 = (0..3)
+            .map(|k| (b.position[k] - a.position[k]).powi(2))
+            .sum::<f64>()
+            .sqrt();
+        self.check("initial gap", d - a.radius - b.radius, initial_gap);
+        let (va, vb) = (
+            a.velocity.unwrap_or([0.0; 3]),
+            b.velocity.unwrap_or([0.0; 3]),
+        );
+        let approach: f64 = (0..3)
+            .map(|k| (va[k] - vb[k]) * (b.position[k] - a.position[k]) / d)
+            .sum();
+        self.check("relative speed", approach, relative_speed);
+    }
+
     /// What the runs with friction share: LIGGGHTS's tangential history with one
     /// friction coefficient, solid-sphere spins, no gravity.
     pub fn check_history_runs(&mut self, scene: &Scene) {
