@@ -193,7 +193,8 @@ const RUN_HELP: &str = "Files written to DIR (each under a temporary name, then 
   trajectory.csv    with output.trajectory_every: one row per particle per record
   vtk/frame_*.vtk   with output.vtk_every: particles for ParaView
   checkpoint.json   with output.checkpoint_every: the state to --resume from
-A die-compaction file writes specimen.json, press.scene.json, compaction.csv and summary.json.
+A die-compaction file writes the same summary.json, series.csv (one row per pressure record) and
+quantities.csv, and specimen.json and press.scene.json.
 
 Exit codes: 0 finished; 1 a file could not be read or written; 2 bad input (the field and
 the rule are named; nothing is run); 3 the run became unstable (the particle or contact and
@@ -217,7 +218,7 @@ fn main() -> ExitCode {
         } if is_die_compaction(&scene) => {
             tamp::process::die_compaction_run::run_scene(&scene, &out, quiet, resume).map(|s| {
                 println!(
-                    "die compaction of {} particles: H0 = {:e} m, initial density {:.4} (RVE {:.4}); at {:e} Pa density {:.4} (RVE {:.4}); wrote {}",
+                    "die compaction of {} particles: H0 = {:e} m, initial density {:e} (RVE {:e}); at {:e} Pa density {:e} (RVE {:e}); wrote {}",
                     s.particles,
                     s.h0,
                     s.initial_density_specimen,

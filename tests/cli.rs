@@ -428,7 +428,7 @@ fn help_texts_name_files_exit_codes_durations_and_where_studies_write() {
         "quantities.csv",
         "trajectory.csv",
         "checkpoint.json",
-        "compaction.csv",
+        "one row per pressure record",
         "Exit codes",
         "130/143",
         "<SCENE>  The scene",

@@ -52,7 +52,7 @@ fn killed_compaction_resumes_to_identical_outputs() {
     child.kill().unwrap();
     child.wait().unwrap();
     assert!(
-        !b.join("compaction.csv").exists(),
+        !b.join("series.csv").exists(),
         "the run finished before it was killed: the test proves nothing"
     );
 
@@ -73,7 +73,8 @@ fn killed_compaction_resumes_to_identical_outputs() {
         "{stderr}"
     );
     for file in [
-        "compaction.csv",
+        "series.csv",
+        "quantities.csv",
         "summary.json",
         "specimen.json",
         "press.scene.json",
@@ -84,6 +85,20 @@ fn killed_compaction_resumes_to_identical_outputs() {
         );
         assert!(x == y, "{file} differs after resuming");
     }
+    // One layout for every run (issue 31 item 6): `scene_name` in summary.json, and
+    // quantities.csv and series.csv that `tamp compare` reads like a plain run's.
+    let summary: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(a.join("summary.json")).unwrap()).unwrap();
+    assert!(summary["scene_name"].is_string(), "{summary}");
+    let quantities = std::fs::read_to_string(a.join("quantities.csv")).unwrap();
+    assert!(quantities.starts_with("quantity,value\n"), "{quantities}");
+    assert!(quantities.contains("final_density_rve,"), "{quantities}");
+    let compared = tamp().arg("compare").arg(&a).arg(&b).output().unwrap();
+    assert!(
+        compared.status.success(),
+        "{}",
+        String::from_utf8_lossy(&compared.stdout)
+    );
     fresh(&base);
 }
 
@@ -108,6 +123,6 @@ fn broken_die_compaction_rules_exit_2_naming_the_field() {
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(stderr.contains("die_compaction.rve_diameter"), "{stderr}");
     assert!(stderr.contains("run: must be left out"), "{stderr}");
-    assert!(!dir.join("out").join("compaction.csv").exists());
+    assert!(!dir.join("out").join("series.csv").exists());
     fresh(&dir);
 }

@@ -1,12 +1,13 @@
 //! `tamp run` of a die-compaction scene: the three stages, then the records.
 //!
-//! Writes to the output directory (each file atomically):
-//! - `compaction.csv`: one row per record along the pressure ramp (`PressRecord`);
+//! Writes the layout of every `tamp run` (docs/compare.md), each file atomically:
+//! - `series.csv`: one row per record along the pressure ramp (`PressRecord`);
+//! - `quantities.csv`: the summary's numbers as `quantity,value` rows;
 //! - `press.scene.json`: the press stage as an ordinary scene (the flattened
 //!   specimen as explicit particles, the pressure-loaded punch), to rerun the
 //!   pressing alone or with another contact law;
-//! - `summary.json`: provenance, the specimen (H₀, both initial densities, the fill)
-//!   and the last record;
+//! - `summary.json`: provenance, `scene_name`, the specimen (H₀, both initial
+//!   densities, the fill) and the last record;
 //! - `specimen.json`: the flattened specimen, written when flattening ends;
 //! - `checkpoint.json`: the pressing's state every `output.checkpoint_every` steps.
 //!
@@ -25,7 +26,7 @@ use std::path::Path;
 #[derive(Debug, Serialize)]
 pub struct CompactionSummary {
     pub provenance: Provenance,
-    pub name: String,
+    pub scene_name: String,
     pub particles: usize,
     pub h0: f64,
     pub initial_density_specimen: f64,
@@ -58,7 +59,8 @@ pub fn run_scene(
             "specimen.json",
             "checkpoint.json",
             "press.scene.json",
-            "compaction.csv",
+            "series.csv",
+            "quantities.csv",
             "summary.json",
         ],
         keep,
@@ -119,12 +121,12 @@ pub fn run_scene(
     let mut csv = csv::Writer::from_writer(Vec::new());
     for r in &pressing.records {
         csv.serialize(r)
-            .map_err(|e| TampError::Other(format!("compaction.csv: {e}")))?;
+            .map_err(|e| TampError::Other(format!("series.csv: {e}")))?;
     }
     let bytes = csv
         .into_inner()
-        .map_err(|e| TampError::Other(format!("compaction.csv: {e}")))?;
-    output::write_atomic(&out_dir.join("compaction.csv"), &bytes)?;
+        .map_err(|e| TampError::Other(format!("series.csv: {e}")))?;
+    output::write_atomic(&out_dir.join("series.csv"), &bytes)?;
     let last = pressing
         .records
         .last()
@@ -132,7 +134,7 @@ pub fn run_scene(
         .clone();
     let summary = CompactionSummary {
         provenance: Provenance::new(sha, scene.seed, last.dt, None, pressing.steps),
-        name: scene.name.clone(),
+        scene_name: scene.name.clone(),
         particles: specimen.particles.len(),
         h0: specimen.h0,
         initial_density_specimen: specimen.density_specimen,
@@ -144,5 +146,37 @@ pub fn run_scene(
     };
     let json = serde_json::to_vec_pretty(&summary).expect("summary serialises");
     output::write_atomic(&out_dir.join("summary.json"), &json)?;
+    output::write_atomic(
+        &out_dir.join("quantities.csv"),
+        crate::compare::quantities_csv(&summary.quantities()).as_bytes(),
+    )?;
     Ok(summary)
+}
+
+impl CompactionSummary {
+    /// The numbers of the summary by name, as `quantities.csv` lists them for
+    /// `tamp compare`: the specimen's, then the last record's as `final_*`.
+    pub fn quantities(&self) -> Vec<(String, f64)> {
+        let l = &self.last;
+        [
+            ("particles", self.particles as f64),
+            ("h0", self.h0),
+            ("initial_density_specimen", self.initial_density_specimen),
+            ("initial_density_rve", self.initial_density_rve),
+            ("fill_time", self.fill_time),
+            ("press_steps", self.press_steps as f64),
+            ("final_pressure", l.pressure),
+            ("final_punch_reaction", l.punch_reaction),
+            ("final_floor_reaction", l.floor_reaction),
+            ("final_die_friction", l.die_friction),
+            ("final_height", l.height),
+            ("final_height_reduction", l.height_reduction),
+            ("final_density_specimen", l.density_specimen),
+            ("final_density_rve", l.density_rve),
+            ("final_contact_count", l.contact_count as f64),
+        ]
+        .into_iter()
+        .map(|(name, value)| (name.to_string(), value))
+        .collect()
+    }
 }
