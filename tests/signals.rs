@@ -25,6 +25,15 @@ fn tamp(args: &[&str]) -> Command {
     c
 }
 
+/// Send `signal` (`-INT`, `-TERM`, `-KILL`) with the shell's built-in `kill`, which
+/// every machine with `sh` has.
+fn send(signal: &str, pid: u32) -> std::process::ExitStatus {
+    Command::new("sh")
+        .args(["-c", &format!("kill {signal} {pid}")])
+        .status()
+        .unwrap()
+}
+
 /// Start `tamp run`, send `signal` once it is stepping, and wait for it.
 fn signalled(scene: &Path, out: &Path, signal: &str) -> Output {
     let child = tamp(&[
@@ -38,10 +47,7 @@ fn signalled(scene: &Path, out: &Path, signal: &str) -> Output {
     .spawn()
     .unwrap();
     std::thread::sleep(Duration::from_millis(500));
-    let kill = Command::new("kill")
-        .args([signal, &child.id().to_string()])
-        .status()
-        .unwrap();
+    let kill = send(signal, child.id());
     assert!(kill.success());
     child.wait_with_output().unwrap()
 }
@@ -125,10 +131,7 @@ fn a_killed_run_leaves_no_file_cut_short_under_its_final_name() {
         .spawn()
         .unwrap();
         std::thread::sleep(Duration::from_millis(delay));
-        Command::new("kill")
-            .args(["-KILL", &child.id().to_string()])
-            .status()
-            .unwrap();
+        send("-KILL", child.id());
         let _ = child.wait_with_output().unwrap();
         for entry in std::fs::read_dir(&out).unwrap() {
             let name = entry.unwrap().file_name().to_string_lossy().to_string();
