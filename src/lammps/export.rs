@@ -22,7 +22,7 @@
 
 use crate::contact::lammps::LammpsNormal;
 use crate::error::{Result, TampError};
-use crate::liggghts::export::{DUMP_COLUMNS, Exported};
+use crate::liggghts::export::{DUMP_COLUMNS, Exported, frame_every, load_with_seed, neighbor_skin};
 use crate::scene::{self, Scene};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -157,10 +157,7 @@ pub fn export_file(
     dump_every: Option<u64>,
     seed: Option<u64>,
 ) -> Result<Exported> {
-    let (mut scene, sha) = scene::load(scene_path)?;
-    if let Some(seed) = seed {
-        scene.seed = seed;
-    }
+    let (scene, sha) = load_with_seed(scene_path, seed)?;
     export(&scene, &sha, out_dir, dump_every)
 }
 
@@ -248,18 +245,8 @@ pub fn export(
     }
     crate::output::write_atomic(&out_dir.join("particles.data"), data.as_bytes())?;
 
-    let min_r = p.radius.iter().copied().fold(f64::INFINITY, f64::min);
-    let skin = if min_r.is_finite() {
-        scene.broad_phase.skin_fraction * min_r
-    } else {
-        1e-3
-    };
-    let every = dump_every.unwrap_or(
-        match (scene.output.trajectory_every, scene.output.series_every) {
-            (0, 0) => (built.steps / 100).max(1),
-            (0, n) | (n, _) => n,
-        },
-    );
+    let skin = neighbor_skin(scene, &p.radius);
+    let every = dump_every.unwrap_or_else(|| frame_every(scene, built.steps));
 
     let mut deck = String::new();
     let _ = writeln!(

@@ -232,6 +232,35 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
     out
 }
 
+/// The scene file and its hash, with `--seed` replacing the scene's seed (a new
+/// random placement, the same scene otherwise).
+pub(crate) fn load_with_seed(path: &Path, seed: Option<u64>) -> Result<(Scene, String)> {
+    let (mut scene, sha) = scene::load(path)?;
+    if let Some(seed) = seed {
+        scene.seed = seed;
+    }
+    Ok((scene, sha))
+}
+
+/// The peer's neighbour skin: the scene's skin fraction of the smallest radius.
+pub(crate) fn neighbor_skin(scene: &Scene, radius: &[f64]) -> f64 {
+    let min_r = radius.iter().copied().fold(f64::INFINITY, f64::min);
+    if min_r.is_finite() {
+        scene.broad_phase.skin_fraction * min_r
+    } else {
+        1e-3
+    }
+}
+
+/// Steps between dumped frames when none is asked for: as the scene's own
+/// trajectory.csv (else series.csv) has them, so the two compare row by row.
+pub(crate) fn frame_every(scene: &Scene, steps: u64) -> u64 {
+    match (scene.output.trajectory_every, scene.output.series_every) {
+        (0, 0) => (steps / 100).max(1),
+        (0, n) | (n, _) => n,
+    }
+}
+
 fn refuse_all(list: Vec<(String, String)>) -> TampError {
     crate::error::cannot_export("LIGGGHTS 3.8", list)
 }
@@ -243,10 +272,7 @@ pub fn export_file(
     dump_every: Option<u64>,
     seed: Option<u64>,
 ) -> Result<Exported> {
-    let (mut scene, sha) = scene::load(scene_path)?;
-    if let Some(seed) = seed {
-        scene.seed = seed;
-    }
+    let (scene, sha) = load_with_seed(scene_path, seed)?;
     export(&scene, &sha, out_dir, dump_every)
 }
 
@@ -567,19 +593,8 @@ pub fn export(
         .iter()
         .filter_map(|m| m.youngs_modulus)
         .collect();
-    let min_r = p.radius.iter().copied().fold(f64::INFINITY, f64::min);
-    let skin = if min_r.is_finite() {
-        scene.broad_phase.skin_fraction * min_r
-    } else {
-        1e-3
-    };
-    // Frames as the scene's own trajectory.csv has them, so that the two compare row by row.
-    let every = dump_every.unwrap_or(
-        match (scene.output.trajectory_every, scene.output.series_every) {
-            (0, 0) => (built.steps / 100).max(1),
-            (0, n) | (n, _) => n,
-        },
-    );
+    let skin = neighbor_skin(scene, &p.radius);
+    let every = dump_every.unwrap_or_else(|| frame_every(scene, built.steps));
 
     let mut deck = String::new();
     let _ = writeln!(

@@ -73,21 +73,9 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         s.contact.damping = Some(damping(&row.model, e)?);
         let mut sim = scene::build(&s)?.sim;
         let c = binary_collision(&mut sim, 0, 1, 1_000_000)?;
-        let m = &row.model;
-        out.push(Measured::new(
-            &format!("restitution_{m}_e{e}"),
-            c.restitution,
-            row.restitution,
-        ));
-        out.push(Measured::new(
-            &format!("contact_duration_{m}_e{e}"),
-            c.duration,
-            row.contact_duration,
-        ));
-        out.push(Measured::new(
-            &format!("max_overlap_{m}_e{e}"),
-            c.max_sampled_overlap,
-            row.max_overlap,
+        out.extend(c.against_peer(
+            &format!("{}_e{e}", row.model),
+            [row.restitution, row.contact_duration, row.max_overlap],
         ));
     }
     Ok(out)

@@ -98,21 +98,9 @@ fn run(ctx: &CaseContext, model: &str) -> Result<Vec<Measured>> {
         }));
         let mut sim = scene::build(&s)?.sim;
         let c = binary_collision(&mut sim, 0, 1, 1_000_000)?;
-        let e = row.restitution_in;
-        out.push(Measured::new(
-            &format!("restitution_e{e}"),
-            c.restitution,
-            row.restitution,
-        ));
-        out.push(Measured::new(
-            &format!("contact_duration_e{e}"),
-            c.duration,
-            row.contact_duration,
-        ));
-        out.push(Measured::new(
-            &format!("max_overlap_e{e}"),
-            c.max_sampled_overlap,
-            row.max_overlap,
+        out.extend(c.against_peer(
+            &format!("e{}", row.restitution_in),
+            [row.restitution, row.contact_duration, row.max_overlap],
         ));
     }
     Ok(out)

@@ -19,6 +19,24 @@ pub struct Collision {
     pub restitution: f64,
 }
 
+impl Collision {
+    /// The three quantities a recorded peer collision is compared on, named
+    /// `restitution_<tag>`, `contact_duration_<tag>`, `max_overlap_<tag>` against the
+    /// peer's values in that order. The sampled overlap, since peer dumps are sampled.
+    pub fn against_peer(&self, tag: &str, peer: [f64; 3]) -> [crate::verify::Measured; 3] {
+        use crate::verify::Measured;
+        [
+            Measured::new(&format!("restitution_{tag}"), self.restitution, peer[0]),
+            Measured::new(&format!("contact_duration_{tag}"), self.duration, peer[1]),
+            Measured::new(
+                &format!("max_overlap_{tag}"),
+                self.max_sampled_overlap,
+                peer[2],
+            ),
+        ]
+    }
+}
+
 /// Step `sim` until `i` and `j` have touched and separated (at most `max_steps`).
 pub fn binary_collision(
     sim: &mut Simulation,
