@@ -43,7 +43,8 @@ use std::path::Path;
 /// The layout of `SimState` this tamp writes and reads. Format 2 stores the contact
 /// states typed by the scene's laws (`contact_states`) and the `prescribed` flags;
 /// files without the field are format 1 (tamp before the typed contact states).
-pub const CHECKPOINT_FORMAT: u32 = 2;
+/// Format 3 adds each particle's id, which `broad_phase.sort` separates from its index.
+pub const CHECKPOINT_FORMAT: u32 = 3;
 
 /// A checkpoint file: a state and the scene and tamp version it belongs to.
 #[derive(Serialize, Deserialize)]
@@ -135,7 +136,7 @@ pub fn read_checkpoint<T: DeserializeOwned>(path: &Path) -> Result<T> {
         return Err(TampError::input(
             path.display().to_string(),
             format!(
-                "is checkpoint format {checkpoint_format}; this tamp reads format {CHECKPOINT_FORMAT} only (it stores each contact's state in the shape of the scene's laws): run the scene again from the start"
+                "is checkpoint format {checkpoint_format}; this tamp reads format {CHECKPOINT_FORMAT} only (it stores each contact's state in the shape of the scene's laws, and each particle's id): run the scene again from the start"
             ),
         ));
     }
@@ -352,6 +353,7 @@ impl SimState {
             p.inertia.len(),
             p.material.len(),
             p.prescribed.len(),
+            p.id.len(),
         ];
         if lengths.iter().any(|&l| l != n) {
             return refuse(
@@ -538,7 +540,7 @@ mod tests {
         assert_eq!(err.exit_code(), 2);
         assert!(
             err.to_string()
-                .contains("is checkpoint format 1; this tamp reads format 2"),
+                .contains("is checkpoint format 1; this tamp reads format 3"),
             "{err}"
         );
     }

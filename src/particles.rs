@@ -31,6 +31,11 @@ pub struct Particles {
     /// held in `velocity`) rather than by Newton–Euler: one flag, so the per-particle
     /// passes and the contact loop read a byte, not the 32-byte `Motion`.
     pub prescribed: Vec<bool>,
+    /// The particle's id in every output (1-based, in the order the scene creates
+    /// particles). It equals the index + 1 unless the scene asks for the particles to
+    /// be renumbered for locality (`broad_phase.sort`), which moves the arrays but
+    /// never the ids.
+    pub id: Vec<u64>,
 }
 
 impl Particles {
@@ -72,6 +77,29 @@ impl Particles {
         self.material.push(material);
         self.prescribed
             .push(matches!(motion, Motion::Prescribed(_)));
+        // Ids of renumbered particles are a permutation of 1..=len, so the next free
+        // one is still len + 1.
+        self.id.push(self.id.len() as u64 + 1);
+    }
+
+    /// Reorder every array so that the particle at index `k` is the one that was at
+    /// `order[k]`; `order` must be a permutation of `0..len`.
+    pub fn permute(&mut self, order: &[usize]) {
+        fn apply<T: Copy>(v: &mut Vec<T>, order: &[usize]) {
+            *v = order.iter().map(|&k| v[k]).collect();
+        }
+        debug_assert_eq!(order.len(), self.len());
+        apply(&mut self.position, order);
+        apply(&mut self.velocity, order);
+        apply(&mut self.omega, order);
+        apply(&mut self.force, order);
+        apply(&mut self.torque, order);
+        apply(&mut self.radius, order);
+        apply(&mut self.mass, order);
+        apply(&mut self.inertia, order);
+        apply(&mut self.material, order);
+        apply(&mut self.prescribed, order);
+        apply(&mut self.id, order);
     }
 
     /// Room for `additional` more particles, or an error instead of the abort an
@@ -89,7 +117,8 @@ impl Particles {
         self.mass.try_reserve_exact(additional)?;
         self.inertia.try_reserve_exact(additional)?;
         self.material.try_reserve_exact(additional)?;
-        self.prescribed.try_reserve_exact(additional)
+        self.prescribed.try_reserve_exact(additional)?;
+        self.id.try_reserve_exact(additional)
     }
 
     /// From now on particle `i` moves at velocity `v` whatever the force.

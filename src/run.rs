@@ -40,7 +40,7 @@ fn record_trajectory(sim: &Simulation, out: &mut String) {
         crate::compare::trajectory_row(
             out,
             sim.step,
-            i as u64 + 1,
+            p.id[i],
             p.radius[i],
             &p.position[i],
             &p.velocity[i],

@@ -320,7 +320,8 @@ impl Simulation {
         let fraction = self.limits.max_step_fraction;
         if moved2 > (fraction * self.smallest_radius).powi(2) {
             return Err(self.unstable(format!(
-                "particle {i} moved {:.3e} m in one step (speed {:.3e} m/s), more than {fraction} of the smallest radius {:.3e} m (stability.max_step_fraction): it could pass through a contact unseen; the step is too large for this speed",
+                "particle {} moved {:.3e} m in one step (speed {:.3e} m/s), more than {fraction} of the smallest radius {:.3e} m (stability.max_step_fraction): it could pass through a contact unseen; the step is too large for this speed",
+                self.particles.id[i],
                 moved2.sqrt(),
                 self.particles.velocity[i].norm(),
                 self.smallest_radius
@@ -361,7 +362,8 @@ impl Simulation {
             && let Some(i) = integrate::first_non_finite(&self.particles)
         {
             return Err(self.unstable(format!(
-                "particle {i} has a non-finite position, velocity or spin"
+                "particle {} has a non-finite position, velocity or spin",
+                self.particles.id[i]
             )));
         }
         // Trapezoidal work of prescribed bodies, exact for gravity.
@@ -638,7 +640,8 @@ impl Simulation {
                 // meets the overlap limit first unless it is at least (R_i + R_j)/R_min ≥ 2.
                 self.near = near;
                 return Err(self.unstable(format!(
-                    "contact {i}-{j}: the centres coincide (overlap {overlap:.4e} m), so the contact normal is undefined"
+                    "contact {}-{}: the centres coincide (overlap {overlap:.4e} m), so the contact normal is undefined",
+                    self.particles.id[i], self.particles.id[j]
                 )));
             }
             let normal = d / dist;
@@ -668,7 +671,10 @@ impl Simulation {
                 Ok(forces) => forces,
                 Err(what) => {
                     self.near = near;
-                    return Err(self.unstable(format!("contact {i}-{j}: {what}")));
+                    return Err(self.unstable(format!(
+                        "contact {}-{}: {what}",
+                        self.particles.id[i], self.particles.id[j]
+                    )));
                 }
             };
             force[i] += total;
@@ -725,10 +731,11 @@ impl Simulation {
                     let (total, f) = match resolve(law, &g, ratio, max_fraction, pair, state, dt) {
                         Ok(forces) => forces,
                         Err(what) => {
-                            return Err(self.unstable(format!(
-                                "contact {i}-wall '{}' (facet {facet}): {what}",
-                                wall.name
-                            )));
+                            let what = format!(
+                                "contact {}-wall '{}' (facet {facet}): {what}",
+                                p.id[i], wall.name
+                            );
+                            return Err(self.unstable(what));
                         }
                     };
                     p.force[i] += total;
@@ -896,8 +903,9 @@ impl Simulation {
                 .unwrap_or(0);
             return Err(self.unstable(format!(
                 "mechanical energy grew by {gained:.4e} J, {:.3e} of the energy scale {scale:.4e} J, without external work \
-                 (fastest: particle {fastest} at {:.4e} m/s); the time step is likely too large",
+                 (fastest: particle {} at {:.4e} m/s); the time step is likely too large",
                 gained / scale,
+                p.id[fastest],
                 p.velocity[fastest].norm()
             )));
         }

@@ -76,7 +76,13 @@ fn run_writes_summary_series_and_vtk_with_provenance() {
             panic!("not inline")
         };
         assert_eq!(piece.num_points(), 2);
-        assert_eq!(piece.data.point.len(), 4);
+        let names: Vec<String> = piece
+            .data
+            .point
+            .iter()
+            .map(|a| a.name().to_string())
+            .collect();
+        assert_eq!(names, ["id", "radius", "material", "velocity", "omega"]);
     }
     // No temporary files are left behind.
     assert!(
@@ -108,9 +114,9 @@ fn ten_times_the_critical_step_stops_with_exit_3_and_a_diagnostic() {
     assert!(stderr.contains("warning: time_step.fixed"), "{stderr}");
     assert!(stderr.contains("unstable at step"), "{stderr}");
     assert!(
-        stderr.contains("contact 0-wall 'floor'")
-            || stderr.contains("contact 0-1")
-            || stderr.contains("particle 0 moved"),
+        stderr.contains("contact 1-wall 'floor'")
+            || stderr.contains("contact 1-2")
+            || stderr.contains("particle 1 moved"),
         "{stderr}"
     );
     assert!(

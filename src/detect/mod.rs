@@ -7,6 +7,7 @@
 pub mod brute;
 pub mod cells;
 mod grid;
+pub mod locality;
 pub mod multigrid;
 
 use crate::contact::states::StateStore;

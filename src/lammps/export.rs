@@ -219,7 +219,7 @@ pub fn export(
         let _ = writeln!(
             data,
             "{} {} {} {} {} {} {}",
-            i + 1,
+            p.id[i],
             p.material[i] + 1,
             g(2.0 * p.radius[i]),
             g(density),
@@ -234,7 +234,7 @@ pub fn export(
         let _ = writeln!(
             data,
             "{} {} {} {} {} {} {}",
-            i + 1,
+            p.id[i],
             g(v.x),
             g(v.y),
             g(v.z),

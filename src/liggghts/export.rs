@@ -561,7 +561,7 @@ pub fn export(
         let _ = writeln!(
             data,
             "{} {} {} {} {} {} {}",
-            i + 1,
+            p.id[i],
             p.material[i] + 1,
             g(2.0 * p.radius[i]),
             g(density(i)),
@@ -576,7 +576,7 @@ pub fn export(
         let _ = writeln!(
             data,
             "{} {} {} {} {} {} {}",
-            i + 1,
+            p.id[i],
             g(v.x),
             g(v.y),
             g(v.z),

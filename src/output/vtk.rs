@@ -16,6 +16,8 @@ pub fn frame(sim: &Simulation) -> Vtk {
     let vertices: Vec<u32> = (0..n as u32).flat_map(|i| [1, i]).collect();
     let data = Attributes {
         point: vec![
+            Attribute::scalars("id", 1)
+                .with_data(p.id.iter().map(|&k| k as f64).collect::<Vec<f64>>()),
             Attribute::scalars("radius", 1).with_data(p.radius.clone()),
             Attribute::scalars("material", 1)
                 .with_data(p.material.iter().map(|&m| m as f64).collect::<Vec<f64>>()),

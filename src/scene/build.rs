@@ -4,7 +4,7 @@
 use super::schema::*;
 use crate::boundary::Boundary;
 use crate::contact::ContactLaw;
-use crate::detect::{Detector, NeighborList};
+use crate::detect::{Detector, NeighborList, locality};
 use crate::error::{Result, TampError};
 use crate::generate::pour::Source;
 use crate::generate::rsi::{InsertionBox, Placed};
@@ -52,8 +52,8 @@ fn check_range(scene: &Scene, sim: &Simulation, steps: u64) -> Result<()> {
             return Err(TampError::input(
                 format!("materials[{k}].density"),
                 format!(
-                    "gives particle {i} (radius {:e} m) a mass of {m:e} kg and a moment of inertia of {inertia:e} kg m²: outside the range of a double",
-                    p.radius[i]
+                    "gives particle {} (radius {:e} m) a mass of {m:e} kg and a moment of inertia of {inertia:e} kg m²: outside the range of a double",
+                    p.id[i], p.radius[i]
                 ),
             ));
         }
@@ -104,9 +104,11 @@ fn check_speeds(scene: &Scene, sim: &Simulation) -> Result<Vec<String>> {
     else {
         return Ok(Vec::new());
     };
-    let path = match (i < scene.particles.len(), p.prescribed[i]) {
-        (true, false) => format!("particles[{i}].velocity"),
-        (true, true) => format!("particles[{i}].prescribed_velocity"),
+    // Paths and messages name the particle as the scene does, whatever its index.
+    let (k, id) = (p.id[i] as usize - 1, p.id[i]);
+    let path = match (k < scene.particles.len(), p.prescribed[i]) {
+        (true, false) => format!("particles[{k}].velocity"),
+        (true, true) => format!("particles[{k}].prescribed_velocity"),
         (false, _) => "insert".to_string(),
     };
     let smallest = sim.smallest_radius();
@@ -115,7 +117,7 @@ fn check_speeds(scene: &Scene, sim: &Simulation) -> Result<Vec<String>> {
         return Err(TampError::input(
             path,
             format!(
-                "{speed:e} m/s moves particle {i} {:.3e} m in one step of {:.3e} s, more than {fraction} of the smallest radius {smallest:e} m (stability.max_step_fraction), so contacts would be stepped over: raise time_step.characteristic_velocity to this speed or give a smaller time_step.fixed",
+                "{speed:e} m/s moves particle {id} {:.3e} m in one step of {:.3e} s, more than {fraction} of the smallest radius {smallest:e} m (stability.max_step_fraction), so contacts would be stepped over: raise time_step.characteristic_velocity to this speed or give a smaller time_step.fixed",
                 speed * sim.dt,
                 sim.dt
             ),
@@ -126,7 +128,7 @@ fn check_speeds(scene: &Scene, sim: &Simulation) -> Result<Vec<String>> {
         && speed > v
     {
         warnings.push(format!(
-            "{path}: particle {i} starts at {speed:e} m/s, faster than time_step.characteristic_velocity = {v:e} m/s, the impact speed the step was sized for"
+            "{path}: particle {id} starts at {speed:e} m/s, faster than time_step.characteristic_velocity = {v:e} m/s, the impact speed the step was sized for"
         ));
     }
     Ok(warnings)
@@ -327,6 +329,11 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
         DetectorSpec::Cells => Detector::Cells,
         DetectorSpec::Multigrid => Detector::Multigrid,
     };
+    if scene.broad_phase.sort {
+        let r_max = particles.radius.iter().cloned().fold(0.0, f64::max);
+        let edge = 2.0 * r_max + scene.broad_phase.skin_fraction * r_min;
+        particles.permute(&locality::cell_order(&particles.position, edge));
+    }
     let neighbors = NeighborList::new(
         detector,
         scene.broad_phase.skin_fraction * r_min,

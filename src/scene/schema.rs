@@ -322,6 +322,12 @@ pub struct BroadPhaseSpec {
     /// Verlet skin as a fraction of the smallest radius.
     #[serde(default = "default_skin")]
     pub skin_fraction: f64,
+    /// Renumber the particles by the cell they lie in once they are all placed, for
+    /// memory locality (as LAMMPS `atom_modify sort`). Off by default: it changes the
+    /// order in which contact forces are summed, so a chaotic run's results change at
+    /// round-off and then beyond.
+    #[serde(default)]
+    pub sort: bool,
 }
 
 impl Default for BroadPhaseSpec {
@@ -329,6 +335,7 @@ impl Default for BroadPhaseSpec {
         BroadPhaseSpec {
             kind: default_detector(),
             skin_fraction: default_skin(),
+            sort: false,
         }
     }
 }
