@@ -80,6 +80,7 @@ fn law(
         damping,
         tangential,
         cohesion,
+        lever_arm: Default::default(),
     }
 }
 

@@ -11,6 +11,7 @@
 //! tamp has; a clearly negative D means the integration is adding energy (unstable).
 
 use crate::boundary::{Boundary, shape::ShapeContact};
+use crate::contact::lever_arm::{Lammps, LeverArm, LeverArms, MidOverlap};
 use crate::contact::model::{
     CohesionModel, Composed, DampingModel, LawVisitor, NormalModel, StateOf, TangentialModel,
 };
@@ -26,6 +27,7 @@ use crate::material::PairProperties;
 use crate::material::{Material, PairTable, effective_mass, effective_radius};
 use crate::particles::{Motion, Particles, Vec3};
 use crate::timestep::critical_time_step;
+use std::marker::PhantomData;
 
 /// Effective mass of a pair; a prescribed particle moves whatever the force, so it
 /// counts as infinitely heavy, like a wall.
@@ -112,16 +114,16 @@ fn carry_facet_states<S: Copy + Default>(states: &mut Vec<(u32, S)>, found: &[Sh
     }
 }
 
-/// `Simulation::compute_forces` for the scene's laws as types.
-struct ForceLoop<'a, const ROT: bool>(&'a mut Simulation);
+/// `Simulation::compute_forces` for the scene's laws and lever-arm convention as types.
+struct ForceLoop<'a, A: LeverArms, const ROT: bool>(&'a mut Simulation, PhantomData<A>);
 
-impl<const ROT: bool> LawVisitor for ForceLoop<'_, ROT> {
+impl<A: LeverArms, const ROT: bool> LawVisitor for ForceLoop<'_, A, ROT> {
     type Output = Result<()>;
     fn visit<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel>(
         self,
         law: Composed<N, D, T, C>,
     ) -> Result<()> {
-        self.0.compute_forces_with::<N, D, T, C, ROT>(&law)
+        self.0.compute_forces_with::<N, D, T, C, A, ROT>(&law)
     }
 }
 
@@ -531,16 +533,20 @@ impl Simulation {
 
     fn compute_forces(&mut self) -> Result<()> {
         let law = self.law;
-        if self.rotation {
-            law.visit(ForceLoop::<true>(self))
-        } else {
-            law.visit(ForceLoop::<false>(self))
+        // Without spins no lever arm enters the forces: one variant serves both.
+        match (self.rotation, law.lever_arm) {
+            (true, LeverArm::MidOverlap) => {
+                law.visit(ForceLoop::<MidOverlap, true>(self, PhantomData))
+            }
+            (true, LeverArm::Lammps) => law.visit(ForceLoop::<Lammps, true>(self, PhantomData)),
+            (false, _) => law.visit(ForceLoop::<MidOverlap, false>(self, PhantomData)),
         }
     }
 
     /// Contact, wall and body forces at the current positions, for the scene's laws
-    /// as types. `ROT`: spins enter contact velocities and torques are accumulated.
-    fn compute_forces_with<N, D, T, C, const ROT: bool>(
+    /// as types. `ROT`: spins enter contact velocities and torques are accumulated,
+    /// with the lever arms of the convention `A`.
+    fn compute_forces_with<N, D, T, C, A: LeverArms, const ROT: bool>(
         &mut self,
         law: &Composed<N, D, T, C>,
     ) -> Result<()>
@@ -645,14 +651,11 @@ impl Simulation {
                 )));
             }
             let normal = d / dist;
-            // Contact point in the middle of the overlap: the two lever arms add up to
-            // the centre distance, so contact torques conserve angular momentum.
-            let lever_i = radius[i] - 0.5 * overlap;
-            let lever_j = radius[j] - 0.5 * overlap;
+            let (arm_i, arm_j) = (A::pair(radius[i], overlap), A::pair(radius[j], overlap));
             let mut relative_velocity = velocity[i] - velocity[j];
             if ROT {
-                relative_velocity -=
-                    omega[i].cross(&normal) * lever_i + omega[j].cross(&normal) * lever_j;
+                relative_velocity -= omega[i].cross(&normal) * arm_i.velocity
+                    + omega[j].cross(&normal) * arm_j.velocity;
             }
             let g = ContactGeometry {
                 normal,
@@ -681,8 +684,8 @@ impl Simulation {
             force[j] -= total;
             if torques {
                 let t = -normal.cross(&f.tangential);
-                torque[i] += t * lever_i;
-                torque[j] += t * lever_j;
+                torque[i] += t * arm_i.torque;
+                torque[j] += t * arm_j.torque;
             }
         }
         self.near = near;
@@ -710,10 +713,10 @@ impl Simulation {
                 {
                     let ratio = overlap / p.radius[i];
                     worst = worst.max(ratio);
-                    let lever = p.radius[i] - 0.5 * overlap;
+                    let arm = A::wall(p.radius[i], overlap);
                     let mut relative_velocity = p.velocity[i] - wall.velocity;
                     if ROT {
-                        relative_velocity -= p.omega[i].cross(&normal) * lever;
+                        relative_velocity -= p.omega[i].cross(&normal) * arm.velocity;
                     }
                     let g = ContactGeometry {
                         normal,
@@ -741,7 +744,7 @@ impl Simulation {
                     p.force[i] += total;
                     on_wall -= total;
                     if torques {
-                        p.torque[i] += -normal.cross(&f.tangential) * lever;
+                        p.torque[i] += -normal.cross(&f.tangential) * arm.torque;
                     }
                 }
             }

@@ -277,6 +277,37 @@ fn export_liggghts_writes_a_deck_with_the_same_particles() {
 }
 
 #[test]
+fn each_exporter_refuses_the_other_peers_lever_arms_naming_the_field() {
+    // The oblique wall scene with friction and spins: LIGGGHTS's lever arm is R − δ/2
+    // ("mid_overlap"), LAMMPS's the full radius ("lammps"), contact/lever_arm.rs.
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/verification/liggghts_oblique_wall_impact.scene.json"
+    );
+    let mut scene: Value = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    for (command, arms, peer) in [
+        ("export-liggghts", "lammps", "LIGGGHTS 3.8"),
+        ("export-lammps", "mid_overlap", "LAMMPS"),
+    ] {
+        scene["contact"]["lever_arm"] = json!(arms);
+        let (_dir, path, out) = scene_in_tempdir(&scene);
+        let o = tamp(&[
+            command,
+            path.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{command}: {err}");
+        assert!(
+            err.contains(&format!("contact.lever_arm: cannot export to {peer}")),
+            "{command}: {err}"
+        );
+        assert!(!out.join("in.tamp").exists());
+    }
+}
+
+#[test]
 fn compare_exits_1_beyond_tolerance_and_0_within() {
     let dir = tempfile::tempdir().unwrap();
     let write = |name: &str, text: &str| {

@@ -23,6 +23,7 @@ fn every_law() -> Vec<ContactLaw> {
                 damping: None,
                 tangential: t,
                 cohesion: None,
+                lever_arm: Default::default(),
             });
         }
     }
@@ -284,6 +285,7 @@ fn newtons_third_law_holds_in_a_simulation() {
                 friction_pairs: Vec::new(),
             }),
             cohesion: None,
+            lever_arm: Default::default(),
         };
         let mut sim = scene::build(&s).unwrap().sim;
         for _ in 0..50 {
@@ -315,6 +317,7 @@ fn frictionless_tangential_laws_keep_the_normal_memory() {
             damping: None,
             tangential: Some(t),
             cohesion: None,
+            lever_arm: Default::default(),
         };
         let v = Vec3::new(1e-3, 0.0, 0.0);
         let path: Vec<_> = [1e-6, 2e-6, 1.5e-6]

@@ -32,6 +32,7 @@
 
 pub mod damping;
 pub mod lammps;
+pub mod lever_arm;
 pub mod model;
 pub mod normal;
 pub mod registry;
@@ -92,6 +93,8 @@ pub struct ContactLaw {
     pub damping: Option<Damping>,
     pub tangential: Option<TangentialLaw>,
     pub cohesion: Option<Cohesion>,
+    /// Where the contact acts on spinning spheres (`contact.lever_arm`).
+    pub lever_arm: lever_arm::LeverArm,
 }
 
 impl ContactLaw {
@@ -116,6 +119,7 @@ impl ContactLaw {
             damping,
             tangential,
             cohesion,
+            lever_arm: lever_arm::LeverArm::default(),
         }
     }
 

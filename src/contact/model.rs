@@ -330,12 +330,12 @@ pub trait TangentialModel: Copy + Debug + PartialEq {
     fn check(&self, _path: &str, _roles: Roles, _errors: &mut Errors) {}
 
     /// Its `tangential` model in LAMMPS's `pair granular` (`tamp export-lammps`): the
-    /// words after `tangential`, with μ written as `{mu}`, or why LAMMPS has none. No
-    /// law has one yet: LAMMPS's `linear_history` and `mindlin*` have not been checked
-    /// against tamp's spring laws formula by formula (issue 28).
+    /// words after `tangential`, with μ written as `{mu}`, or why LAMMPS has none. Only
+    /// `lammps_mindlin` has one: tamp's other spring laws cap the force at μ·max(F_n, 0)
+    /// where LAMMPS takes μ|F_n| (docs/lammps.md).
     fn lammps(&self) -> Result<String, NoLammpsModel> {
         Err(NoLammpsModel(format!(
-            "'{}' is not mapped to a LAMMPS tangential model (linear_history, mindlin, mindlin_rescale, mindlin/force have not been checked against it formula by formula)",
+            "'{}' is none of LAMMPS's tangential models (its Coulomb limit or history differs from linear_history's and mindlin*'s); 'lammps_mindlin' reproduces LAMMPS's mindlin models",
             self.name()
         )))
     }

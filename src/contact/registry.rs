@@ -157,6 +157,7 @@ pub fn tangential_examples() -> Vec<TangentialExample> {
         MindlinNoSlip::examples(),
         storakers::Storakers::examples(),
         LiggghtsHistory::examples(),
+        lammps_mindlin::LammpsMindlin::examples(),
     ]
     .concat()
 }

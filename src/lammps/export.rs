@@ -12,17 +12,24 @@
 //!   (`mix_stiffnessE`: 1/E* = (1 − ν_i²)/E_i + (1 − ν_j²)/E_j).
 //! - Each role's law says what it is in LAMMPS (contact/lammps.rs, `lammps()` on the
 //!   normal, damping and tangential laws); this file only asks, and refuses the field
-//!   of a law that has no LAMMPS model. No tangential law has one yet; a scene without
-//!   friction writes `tangential linear_nohistory 0 0`, a force of exactly zero.
+//!   of a law that has no LAMMPS model (of the tangential laws only `lammps_mindlin`
+//!   has one); a scene without friction writes `tangential linear_nohistory 0 0`, a
+//!   force of exactly zero. With spins and friction the scene must take LAMMPS's lever
+//!   arms (`contact.lever_arm` = `lammps`).
 //! - `limit_damping` is not written: off, as tamp's damping (the force may pull).
-//! - Walls, cohesion, growth and scheduled insertion are refused (walls: not yet
-//!   exported, issue 28).
+//! - Fixed planes normal to an axis are `fix wall/gran granular` with the pair model and
+//!   the wall material's E and ν (`xplane lo NULL` or `NULL hi`); LAMMPS gives the wall
+//!   and the sphere that one material, so particles of another one are refused. Other
+//!   walls, cohesion, growth and scheduled insertion are refused.
 //! - Dumps at `%.17g`, sorted by id: every `dump_every` steps to `dump.lammps`, the
 //!   final state to `final.lammps`; `tamp compare` and `import-liggghts-dump` read them.
 
 use crate::contact::lammps::LammpsNormal;
+use crate::contact::lever_arm::LeverArm;
 use crate::error::{Result, TampError};
 use crate::liggghts::export::{DUMP_COLUMNS, Exported, frame_every, load_with_seed, neighbor_skin};
+use crate::particles::Vec3;
+use crate::scene::walls::{MotionSpec, ShapeSpec, WallSpec};
 use crate::scene::{self, Scene};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -137,13 +144,85 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
             );
         }
     }
-    for k in 0..scene.walls.len() {
+    for (k, w) in scene.walls.iter().enumerate() {
+        if let Err(why) = plane_wall(w) {
+            refuse(format!("walls[{k}]"), why);
+        }
+        if !matches!(w.motion, MotionSpec::Fixed) {
+            refuse(
+                format!("walls[{k}].motion"),
+                "only fixed walls are exported to LAMMPS",
+            );
+        }
+        // fix wall/gran has one material, used for the wall and the sphere alike
+        // (E* = E/(2(1 − ν²)), mix_stiffnessE_wall): the same as tamp only where every
+        // particle's material is the wall's.
+        let wall = scene.materials.iter().find(|m| m.name == w.material);
+        let same = |m: &&crate::scene::schema::MaterialSpec| {
+            wall.is_some_and(|wm| {
+                m.youngs_modulus == wm.youngs_modulus && m.poisson_ratio == wm.poisson_ratio
+            })
+        };
+        let used = |name: &str| {
+            scene.particles.iter().any(|p| p.material == name)
+                || scene.insert.iter().any(|i| i.material == name)
+        };
+        if !scene
+            .materials
+            .iter()
+            .filter(|m| used(&m.name))
+            .all(|m| same(&m))
+        {
+            refuse(
+                format!("walls[{k}].material"),
+                "LAMMPS's fix wall/gran takes one E and ν for the wall and the sphere; export scenes whose particles are of the wall's elastic material",
+            );
+        }
+    }
+    if let Some(t) = &scene.contact.tangential
+        && !t.friction_pairs.is_empty()
+    {
         refuse(
-            format!("walls[{k}]"),
-            "walls are not exported to LAMMPS yet (fix wall/gran, issue 28)",
+            "contact.tangential.friction_pairs".into(),
+            "not exported yet: the deck writes the one friction coefficient to every pair_coeff",
+        );
+    }
+    // The lever arms matter only when spins and a tangential force act.
+    let spins_and_friction = scene.rotation.is_some() && scene.contact.tangential.is_some();
+    if spins_and_friction && scene.contact.lever_arm != LeverArm::Lammps {
+        refuse(
+            "contact.lever_arm".into(),
+            "LAMMPS's pair granular and fix wall/gran take the full radii for the contact-point velocity (and for a wall's torque); set \"lever_arm\": \"lammps\" for the same physics",
         );
     }
     out
+}
+
+/// μ of the scene's tangential law (friction pairs are refused), 0 without one.
+fn mu_of(scene: &Scene) -> f64 {
+    scene
+        .contact
+        .tangential
+        .as_ref()
+        .map_or(0.0, |t| t.friction)
+}
+
+/// The `fix wall/gran` geometry of a wall: an axis-aligned plane is `<axis>plane lo
+/// NULL` (normal +axis: the particles above `lo`) or `<axis>plane NULL hi` (normal
+/// −axis). Other shapes are refused.
+fn plane_wall(w: &WallSpec) -> std::result::Result<String, &'static str> {
+    let ShapeSpec::Plane { point, normal } = &w.shape else {
+        return Err("only plane walls are exported to LAMMPS (fix wall/gran xplane/yplane/zplane)");
+    };
+    let n = Vec3::from(*normal);
+    let Some(a) = (0..3).find(|&a| n[a].abs() == n.norm() && n.norm() > 0.0) else {
+        return Err("fix wall/gran planes are normal to x, y or z");
+    };
+    Ok(if n[a] > 0.0 {
+        format!("{}plane {} NULL", AXES[a], g(point[a]))
+    } else {
+        format!("{}plane NULL {}", AXES[a], g(point[a]))
+    })
 }
 
 fn refuse_all(list: Vec<(String, String)>) -> TampError {
@@ -272,7 +351,8 @@ pub fn export(
     for (k, m) in sim.materials.iter().enumerate() {
         let line = model
             .replace("{E}", &g(m.youngs_modulus.unwrap_or(0.0)))
-            .replace("{nu}", &g(m.poisson_ratio.unwrap_or(0.0)));
+            .replace("{nu}", &g(m.poisson_ratio.unwrap_or(0.0)))
+            .replace("{mu}", &g(mu_of(scene)));
         let _ = writeln!(deck, "pair_coeff   {} {} {line}", k + 1, k + 1);
     }
     let _ = writeln!(deck, "timestep     {}", g(sim.dt));
@@ -289,6 +369,19 @@ pub fn export(
                 g(d.z)
             );
         }
+    }
+    // Walls take the pair's model with the wall material's E and ν.
+    for (k, w) in scene.walls.iter().enumerate() {
+        let m = &scene.materials[sim.walls[k].material];
+        let line = model
+            .replace("{E}", &g(m.youngs_modulus.unwrap_or(0.0)))
+            .replace("{nu}", &g(m.poisson_ratio.unwrap_or(0.0)))
+            .replace("{mu}", &g(mu_of(scene)));
+        let geometry = plane_wall(w).expect("refusals checked the wall");
+        let _ = writeln!(
+            deck,
+            "fix          wall{k} all wall/gran granular {line} {geometry}"
+        );
     }
     deck.push_str("fix          integr all nve/sphere\n");
     let format = std::iter::once("%d %d")
@@ -380,10 +473,13 @@ mod tests {
     fn refusals_name_every_field_and_nothing_is_written() {
         let s = two_spheres(
             r#"{"normal": {"law": "hertz"}, "tangential": {"law": "cundall_strack", "stiffness": 1e3, "friction": 0.3}}"#,
-            r#", "rotation": {}, "walls": [{"name": "floor", "material": "steel", "shape": {"kind": "plane", "point": [0, 0, -0.01], "normal": [0, 0, 1]}}]"#,
+            r#", "rotation": {}, "walls": [{"name": "floor", "material": "steel", "shape": {"kind": "plane", "point": [0, 0, -0.01], "normal": [0, 1, 1]}}]"#,
         );
         let paths: Vec<String> = refusals(&s).into_iter().map(|(p, _)| p).collect();
-        assert_eq!(paths, ["contact.tangential.law", "walls[0]"]);
+        assert_eq!(
+            paths,
+            ["contact.tangential.law", "walls[0]", "contact.lever_arm"]
+        );
         let dir = std::env::temp_dir().join(format!("tamp-lammps-refused-{}", std::process::id()));
         let err = export(&s, "sha", &dir, None).unwrap_err().to_string();
         assert!(
@@ -391,5 +487,36 @@ mod tests {
             "{err}"
         );
         assert!(!dir.exists());
+    }
+
+    #[test]
+    fn axis_aligned_planes_are_fix_wall_gran_planes_with_the_pair_model() {
+        let s = two_spheres(
+            r#"{"normal": {"law": "hertz"}, "tangential": {"law": "lammps_mindlin", "variant": "mindlin_rescale_force", "friction": 0.3}, "lever_arm": "lammps"}"#,
+            r#", "rotation": {}, "walls": [{"material": "steel", "shape": {"kind": "plane", "point": [0, 0, -0.01], "normal": [0, 0, 1]}},
+                                           {"material": "steel", "shape": {"kind": "plane", "point": [0.02, 0, 0], "normal": [-1, 0, 0]}}]"#,
+        );
+        assert!(refusals(&s).is_empty(), "{:?}", refusals(&s));
+        assert_eq!(plane_wall(&s.walls[0]).unwrap(), "zplane -1e-2 NULL");
+        assert_eq!(plane_wall(&s.walls[1]).unwrap(), "xplane NULL 2e-2");
+        assert_eq!(
+            pair_model(&s).unwrap(),
+            "hertz/material {E} 0e0 {nu} damping velocity tangential mindlin_rescale/force -1 0 {mu}"
+        );
+    }
+
+    #[test]
+    fn a_wall_of_another_elastic_material_than_the_particles_is_refused() {
+        let s = scene::parse(
+            r#"{"name": "t", "materials": [{"name": "steel", "density": 7800, "youngs_modulus": 2e11, "poisson_ratio": 0.3},
+                                          {"name": "glass", "density": 2500, "youngs_modulus": 7e10, "poisson_ratio": 0.2}],
+              "contact": {"normal": {"law": "hertz"}},
+              "particles": [{"position": [0, 0, 0.0011], "radius": 0.001, "material": "steel"}],
+              "walls": [{"material": "glass", "shape": {"kind": "plane", "point": [0, 0, 0], "normal": [0, 0, 1]}}],
+              "time_step": {"fixed": 1e-9}, "run": {"steps": 10}}"#,
+        )
+        .unwrap();
+        let paths: Vec<String> = refusals(&s).into_iter().map(|(p, _)| p).collect();
+        assert_eq!(paths, ["walls[0].material"]);
     }
 }

@@ -31,6 +31,7 @@ use crate::boundary::shape::{Revolved, Shape, Triangle};
 use crate::contact::damping::liggghts::LiggghtsModel;
 use crate::contact::damping::liggghts::{SQRT_FIVE_SIXTHS, restitution_from_beta};
 use crate::contact::damping::{CriticalFraction, Damping, LiggghtsRestitution};
+use crate::contact::lever_arm::LeverArm;
 use crate::contact::model::{LiggghtsContact, LiggghtsScene, LiggghtsValues};
 use crate::contact::tangential::TangentialLaw;
 use crate::error::{Result, TampError};
@@ -135,6 +136,15 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
         }
     }
     if let Some(t) = &scene.contact.tangential {
+        if scene.contact.lever_arm != LeverArm::MidOverlap {
+            refuse(
+                "contact.lever_arm",
+                &format!(
+                    "LIGGGHTS 3.8 takes R − δ/2 for the contact-point velocity and the torque, pairs and walls ('mid_overlap'); got '{}'",
+                    scene.contact.lever_arm.name()
+                ),
+            );
+        }
         if !matches!(t.law, TangentialLaw::LiggghtsHistory(_)) {
             refuse(
                 "contact.tangential.law",

@@ -5,6 +5,7 @@ pub use super::die_compaction::DieCompactionSpec;
 pub use super::walls::WallSpec;
 use crate::contact::ContactLaw;
 use crate::contact::damping::Damping;
+use crate::contact::lever_arm::LeverArm;
 use crate::contact::normal::NormalLaw;
 use crate::contact::tangential::TangentialLaw;
 use crate::contact::van_der_waals::Cohesion;
@@ -107,17 +108,24 @@ pub struct ContactSpec {
     pub tangential: Option<FrictionSpec>,
     #[serde(default)]
     pub cohesion: Option<Cohesion>,
+    /// Where a contact acts on spinning spheres: `mid_overlap` (default) or `lammps`
+    /// (contact/lever_arm.rs).
+    #[serde(default)]
+    pub lever_arm: LeverArm,
 }
 
 impl ContactSpec {
     /// The law the force loop runs (friction coefficients go to the pair table).
     pub fn law(&self) -> ContactLaw {
-        ContactLaw::new(
-            self.normal,
-            self.damping,
-            self.tangential.as_ref().map(|t| t.law),
-            self.cohesion,
-        )
+        ContactLaw {
+            lever_arm: self.lever_arm,
+            ..ContactLaw::new(
+                self.normal,
+                self.damping,
+                self.tangential.as_ref().map(|t| t.law),
+                self.cohesion,
+            )
+        }
     }
 }
 

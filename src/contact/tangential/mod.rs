@@ -7,6 +7,7 @@ pub mod coulomb;
 pub mod cundall_strack;
 pub mod haff_werner;
 pub mod incremental;
+pub mod lammps_mindlin;
 pub mod liggghts_history;
 pub mod mindlin_deresiewicz;
 pub mod mindlin_no_slip;
@@ -47,6 +48,9 @@ pub enum TangentialLaw {
     Storakers(storakers::Storakers),
     /// LIGGGHTS 3.8 `tangential history`, built from the scene's normal law and damping.
     LiggghtsHistory(LiggghtsHistory),
+    /// LAMMPS 22 Jul 2025 `tangential mindlin`, `mindlin/force`, `mindlin_rescale`,
+    /// `mindlin_rescale/force`.
+    LammpsMindlin(lammps_mindlin::LammpsMindlin),
 }
 
 /// `each_tangential!(law, t => expr)`: `expr` with `t` bound to the law's own type,
@@ -63,6 +67,7 @@ macro_rules! each_tangential {
             $crate::contact::tangential::TangentialLaw::MindlinNoSlip($t) => $body,
             $crate::contact::tangential::TangentialLaw::Storakers($t) => $body,
             $crate::contact::tangential::TangentialLaw::LiggghtsHistory($t) => $body,
+            $crate::contact::tangential::TangentialLaw::LammpsMindlin($t) => $body,
         }
     };
 }

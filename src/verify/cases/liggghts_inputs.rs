@@ -5,6 +5,7 @@
 use crate::contact::tangential::TangentialLaw;
 use crate::error::{Result, TampError};
 use crate::scene::Scene;
+use crate::scene::walls::{MotionSpec, ShapeSpec};
 
 /// Collects "what: scene …, peer run …" for inputs that differ by more than 1e-12.
 #[derive(Default)]
@@ -96,13 +97,45 @@ impl Mismatches {
                 "contact.tangential: LIGGGHTS ran tangential history, the scene needs law 'liggghts_history' with one friction".into(),
             );
         }
+        self.check_spins_without_gravity(scene);
+    }
+
+    /// Solid-sphere spins (both peers' fix nve/sphere) and no gravity.
+    pub fn check_spins_without_gravity(&mut self, scene: &Scene) {
         if scene.rotation.as_ref().map(|r| r.inertia_scale) != Some(1.0) {
             self.0.push(
-                "rotation: LIGGGHTS integrates spins with I = 0.4 m R^2 (inertia_scale 1)".into(),
+                "rotation: the peer integrates spins with I = 0.4 m R^2 (inertia_scale 1)".into(),
             );
         }
         if scene.gravity.is_some() {
-            self.0.push("gravity: LIGGGHTS ran without gravity".into());
+            self.0.push("gravity: the peer ran without gravity".into());
+        }
+    }
+
+    /// One sphere of `radius` at (0, 0, radius + initial_gap) above one fixed plane
+    /// z = 0 (normal +z) of its own material.
+    pub fn check_sphere_on_floor(&mut self, scene: &Scene, radius: f64, initial_gap: f64) {
+        let [p] = scene.particles.as_slice() else {
+            self.0.push("particles: the peer ran one sphere".into());
+            return;
+        };
+        self.check("particles[0].radius", p.radius, radius);
+        self.check("particles[0].position.x", p.position[0], 0.0);
+        self.check("particles[0].position.y", p.position[1], 0.0);
+        self.check(
+            "particles[0].position.z",
+            p.position[2],
+            radius + initial_gap,
+        );
+        let plane_ok = matches!(scene.walls.as_slice(), [w] if w.material == p.material
+            && matches!(w.motion, MotionSpec::Fixed)
+            && matches!(&w.shape, ShapeSpec::Plane { point, normal }
+                if *point == [0.0; 3] && *normal == [0.0, 0.0, 1.0]));
+        if !plane_ok {
+            self.0.push(
+                "walls: the peer ran one fixed plane z = 0 (normal +z) of the sphere's material"
+                    .into(),
+            );
         }
     }
 }

@@ -19,10 +19,7 @@ use super::liggghts_inputs::Mismatches;
 use crate::contact::damping::{Damping, LiggghtsRestitution};
 use crate::error::{Result, TampError};
 use crate::output::plot::{Panel, Series, write_svg};
-use crate::scene::{
-    self, Scene,
-    walls::{MotionSpec, ShapeSpec},
-};
+use crate::scene::{self, Scene};
 use crate::verify::{CaseContext, Measured};
 use serde::Deserialize;
 use std::fmt::Write as _;
@@ -72,27 +69,7 @@ fn mismatches(scene: &Scene, row: &Row) -> Mismatches {
     if let Some(t) = &scene.contact.tangential {
         out.check("contact.tangential.friction", t.friction, row.friction);
     }
-    let [p] = scene.particles.as_slice() else {
-        out.0.push("particles: LIGGGHTS ran one sphere".into());
-        return out;
-    };
-    out.check("particles[0].radius", p.radius, row.radius);
-    out.check("particles[0].position.x", p.position[0], 0.0);
-    out.check("particles[0].position.y", p.position[1], 0.0);
-    out.check(
-        "particles[0].position.z",
-        p.position[2],
-        row.radius + row.initial_gap,
-    );
-    let plane_ok = matches!(scene.walls.as_slice(), [w] if w.material == p.material
-        && matches!(w.motion, MotionSpec::Fixed)
-        && matches!(&w.shape, ShapeSpec::Plane { point, normal }
-            if *point == [0.0; 3] && *normal == [0.0, 0.0, 1.0]));
-    if !plane_ok {
-        out.0.push(
-            "walls: LIGGGHTS ran one fixed plane z = 0 (normal +z) of the sphere's material".into(),
-        );
-    }
+    out.check_sphere_on_floor(scene, row.radius, row.initial_gap);
     // The recorded speeds must be the angle's components (they are what both codes use).
     let angle = row.tangential_speed.atan2(row.normal_speed).to_degrees();
     out.check("incidence angle (deg)", angle, row.angle_deg);
@@ -124,33 +101,48 @@ fn rigid_body(v_t: f64, v_n: f64, mu: f64, e: f64) -> (f64, f64) {
     }
 }
 
+/// The sphere of `scene` launched at (v_t, 0, −v_n) and run `steps` steps: its rebound
+/// (v_x, v_z, ω_y R), refused if it still touches the wall (`run` names the run).
+pub(super) fn rebound(
+    scene: &Scene,
+    [v_t, v_n]: [f64; 2],
+    steps: u64,
+    run: &str,
+) -> Result<(f64, f64, f64)> {
+    let mut s = scene.clone();
+    s.particles[0].velocity = Some([v_t, 0.0, -v_n]);
+    let mut sim = scene::build(&s)?.sim;
+    for _ in 0..steps {
+        sim.step()?;
+    }
+    if sim.contact_count() != 0 {
+        return Err(TampError::Other(format!(
+            "{run}: the sphere still touches the wall after {steps} steps"
+        )));
+    }
+    let p = &sim.particles;
+    Ok((p.velocity[0].x, p.velocity[0].z, p.omega[0].y * p.radius[0]))
+}
+
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let base = ctx.scene()?;
     let rows: Vec<Row> = ctx.liggghts_results()?;
     let mut rebounds = Vec::new();
     for row in &rows {
         mismatches(&base, row).refuse_any(&format!("{}°", row.angle_deg))?;
-        let mut s = base.clone();
-        s.particles[0].velocity = Some([row.tangential_speed, 0.0, -row.normal_speed]);
-        let mut sim = scene::build(&s)?.sim;
-        for _ in 0..row.steps {
-            sim.step()?;
-        }
-        if sim.contact_count() != 0 {
-            return Err(TampError::Other(format!(
-                "{}°: the sphere still touches the wall after {} steps",
-                row.angle_deg, row.steps
-            )));
-        }
-        let p = &sim.particles;
-        let r = p.radius[0];
+        let (vx, vz, omega_r) = rebound(
+            &base,
+            [row.tangential_speed, row.normal_speed],
+            row.steps,
+            &format!("{}°", row.angle_deg),
+        )?;
         rebounds.push(Rebound {
             angle: row.angle_deg,
             v_t: row.tangential_speed,
             v_n: row.normal_speed,
-            tangential: (p.velocity[0].x, row.vx),
-            spin: (p.omega[0].y * r, row.omega_y * row.radius),
-            normal: (p.velocity[0].z, row.vz),
+            tangential: (vx, row.vx),
+            spin: (omega_r, row.omega_y * row.radius),
+            normal: (vz, row.vz),
         });
     }
     let (mu, e) = (rows[0].friction, rows[0].restitution_in);

@@ -13,6 +13,7 @@ mod hertz_rigid_wall_impact;
 mod hertz_yield_onset;
 mod hollomon_constants;
 mod kuwabara_kono_restitution;
+mod lammps_oblique_wall_impact;
 mod lammps_two_sphere;
 mod liggghts_inputs;
 mod liggghts_oblique_wall_impact;
@@ -96,6 +97,10 @@ pub const CASES: &[(&str, CaseFn)] = &[
         liggghts_oblique_wall_impact::run,
     ),
     ("lammps_two_sphere_hertz", lammps_two_sphere::run),
+    (
+        "lammps_oblique_wall_impact_mindlin",
+        lammps_oblique_wall_impact::run,
+    ),
 ];
 
 pub fn find(name: &str) -> Option<CaseFn> {

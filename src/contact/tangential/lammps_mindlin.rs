@@ -1,0 +1,291 @@
+//! LAMMPS's `pair granular` Mindlin tangential models (scene law `lammps_mindlin`),
+//! reproduced operation for operation from LAMMPS 22 Jul 2025 (update 4),
+//! src/GRANULAR/gran_sub_mod_tangential.cpp `GranSubModTangentialMindlin::calculate_forces`,
+//! with the stiffness `k = -1` (8G* from the materials: `mix_stiffnessG`,
+//! `mix_stiffnessG_wall`) and no tangential damping (x_γ,t = 0). tamp's notation:
+//! `normal` n from the partner to particle i, v_t the tangential velocity of i's contact
+//! point relative to the partner's (spins included), F_n the total normal force (elastic
+//! + damping). Per step:
+//!
+//!   a = √(R* δ),  k_a = 8 G* a,  F_s = μ |F_n|            (Fncrit = |F_n,total|)
+//!   rescale variants, if a < a_prev:  h ← h · a / a_prev   (unloading)
+//!   if |h·n| (·k_a for the displacement variants) > 1e-10 F_s:
+//!       h ← (h − (h·n) n) · |h| / |h − (h·n) n|            (projected, length kept)
+//!   displacement variants (`mindlin`, `mindlin_rescale`):  h ← h + v_t Δt,  F_t = −k_a h
+//!   force variants (`mindlin/force`, `mindlin_rescale/force`): h ← h − k_a v_t Δt,  F_t = h
+//!   rescale variants: a_prev ← a
+//!   if |F_t| > F_s and |h| ≠ 0:  F_t ← F_t F_s/|F_t|,  h ← F_t (force) or −F_t/k_a
+//!   if |F_t| > F_s and |h| = 0:  F_t ← 0
+//!
+//! So `mindlin` is a linear spring of stiffness 8G*a on the accumulated displacement
+//! (a total-spring law: the force follows a when the overlap changes), `mindlin/force`
+//! the incremental no-slip law of Mindlin (tamp's `mindlin_no_slip` structure, but with
+//! Coulomb's limit on |F_n| where that law takes max(F_n, 0), and the history turned
+//! only above the 1e-10 threshold). `*_rescale` shrink the history with the contact
+//! radius on unloading (Walton 1993's device against a spring outliving its contact).
+//! The history starts at zero when a contact forms and is dropped when it ends, as in
+//! tamp. Neither micro-slip nor a tangential dashpot: not Mindlin–Deresiewicz's full
+//! law (`mindlin_deresiewicz`). The lever arms are the scene's (`contact.lever_arm`;
+//! `lammps` for LAMMPS's). docs/lammps.md has the measured agreement.
+
+use super::{TangentialInput, TangentialLaw, TangentialModel};
+use crate::contact::lammps::NoLammpsModel;
+use crate::contact::model::{ContactState, Needs};
+use crate::contact::registry::{self, TangentialExample};
+use crate::particles::Vec3;
+
+/// gran_sub_mod_tangential.cpp's EPSILON: the history is turned into the contact
+/// plane only when its normal component exceeds this fraction of F_s.
+const TURN_THRESHOLD: f64 = 1e-10;
+
+/// Which of LAMMPS's four Mindlin models.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Deserialize, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Variant {
+    /// `mindlin`: history is the tangential displacement, F_t = −8G*a h.
+    Mindlin,
+    /// `mindlin/force`: history is the force, ΔF_t = −8G*a v_t Δt.
+    MindlinForce,
+    /// `mindlin_rescale`: `mindlin`, history scaled by a/a_prev on unloading.
+    MindlinRescale,
+    /// `mindlin_rescale/force`: `mindlin/force`, history scaled by a/a_prev on unloading.
+    MindlinRescaleForce,
+}
+
+impl Variant {
+    /// The LAMMPS keyword after `tangential`.
+    pub fn keyword(self) -> &'static str {
+        match self {
+            Variant::Mindlin => "mindlin",
+            Variant::MindlinForce => "mindlin/force",
+            Variant::MindlinRescale => "mindlin_rescale",
+            Variant::MindlinRescaleForce => "mindlin_rescale/force",
+        }
+    }
+
+    /// The scene's name of the variant.
+    pub fn name(self) -> &'static str {
+        match self {
+            Variant::Mindlin => "mindlin",
+            Variant::MindlinForce => "mindlin_force",
+            Variant::MindlinRescale => "mindlin_rescale",
+            Variant::MindlinRescaleForce => "mindlin_rescale_force",
+        }
+    }
+
+    pub const ALL: [Variant; 4] = [
+        Variant::Mindlin,
+        Variant::MindlinForce,
+        Variant::MindlinRescale,
+        Variant::MindlinRescaleForce,
+    ];
+
+    fn force(self) -> bool {
+        matches!(self, Variant::MindlinForce | Variant::MindlinRescaleForce)
+    }
+
+    fn rescale(self) -> bool {
+        matches!(self, Variant::MindlinRescale | Variant::MindlinRescaleForce)
+    }
+}
+
+/// `{"law": "lammps_mindlin", "variant": ..., "friction": μ}`.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct LammpsMindlin {
+    pub variant: Variant,
+}
+
+/// The history h (a displacement in m, or a force in N for the force variants) and,
+/// for the rescale variants, the contact radius a of the last update (LAMMPS's
+/// history[3]), m.
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Deserialize, serde::Serialize)]
+pub struct MindlinHistory {
+    pub history: Vec3,
+    pub contact_radius: f64,
+}
+
+impl ContactState for MindlinHistory {
+    fn tangential(&self) -> Vec3 {
+        self.history
+    }
+}
+
+impl LammpsMindlin {
+    /// 8G*√(R*δ), LAMMPS's k_scaled = k · contact_radius.
+    fn scaled_stiffness(input: &TangentialInput) -> f64 {
+        8.0 * input.effective_shear_modulus * (input.overlap * input.effective_radius).sqrt()
+    }
+}
+
+impl TangentialModel for LammpsMindlin {
+    type State = MindlinHistory;
+
+    fn name(&self) -> &'static str {
+        "lammps_mindlin"
+    }
+
+    /// From rest, one step: sticking F = −8G*a v_t Δt (both structures give it);
+    /// sliding: Coulomb's −μ|F_n| v̂_t.
+    fn examples() -> Vec<TangentialExample> {
+        Variant::ALL
+            .iter()
+            .flat_map(|&variant| {
+                let law = TangentialLaw::LammpsMindlin(LammpsMindlin { variant });
+                registry::spring_examples(law, registry::mindlin_stiffness())
+            })
+            .collect()
+    }
+
+    fn needs(&self) -> Needs {
+        Needs {
+            elastic: Some(" (G* of LAMMPS's k = 8G*)"),
+            ..Needs::default()
+        }
+    }
+
+    fn lammps(&self) -> Result<String, NoLammpsModel> {
+        Ok(format!("{} -1 0 {{mu}}", self.variant.keyword()))
+    }
+
+    #[inline]
+    fn force(&self, input: &TangentialInput, state: &mut MindlinHistory) -> Vec3 {
+        let force_history = self.variant.force();
+        let a = (input.overlap * input.effective_radius).sqrt();
+        let k_scaled = 8.0 * input.effective_shear_modulus * a;
+        let limit = input.normal_force.abs() * input.friction;
+        let h = &mut state.history;
+        if self.variant.rescale() && a < state.contact_radius {
+            *h *= a / state.contact_radius;
+        }
+        let n = &input.normal;
+        let along = h.dot(n);
+        let turn = if force_history {
+            along.abs() > TURN_THRESHOLD * limit
+        } else {
+            along.abs() * k_scaled > TURN_THRESHOLD * limit
+        };
+        if turn {
+            let length = h.norm();
+            *h -= n * along;
+            let projected = h.norm();
+            *h *= if projected > 0.0 {
+                length / projected
+            } else {
+                0.0
+            };
+        }
+        if force_history {
+            *h += input.tangential_velocity * (-k_scaled * input.dt);
+        } else {
+            *h += input.tangential_velocity * input.dt;
+        }
+        if self.variant.rescale() {
+            state.contact_radius = a;
+        }
+        let mut f = if force_history { *h } else { *h * -k_scaled };
+        let magnitude = f.norm();
+        if magnitude > limit {
+            if h.norm() != 0.0 {
+                f *= limit / magnitude;
+                *h = if force_history {
+                    f
+                } else {
+                    f * (-1.0 / k_scaled)
+                };
+            } else {
+                f = Vec3::zeros();
+            }
+        }
+        f
+    }
+
+    fn stiffness(&self, input: &TangentialInput) -> f64 {
+        Self::scaled_stiffness(input)
+    }
+
+    fn energy(&self, input: &TangentialInput, state: &MindlinHistory) -> f64 {
+        let k = Self::scaled_stiffness(input);
+        if k == 0.0 {
+            return 0.0;
+        }
+        let h = state.history;
+        if self.variant.force() {
+            0.5 * h.norm_squared() / k
+        } else {
+            0.5 * k * h.norm_squared()
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn input(overlap: f64, v: Vec3, normal_force: f64) -> TangentialInput {
+        TangentialInput {
+            overlap,
+            tangential_velocity: v,
+            normal_force,
+            ..registry::sticking_input()
+        }
+    }
+
+    #[test]
+    fn the_displacement_spring_follows_the_contact_radius_the_force_one_does_not() {
+        // Load one step at δ, then hold still at δ/4 (a halves): `mindlin`'s force
+        // halves with a, `mindlin/force` keeps its force.
+        let v = Vec3::new(1e-3, 0.0, 0.0);
+        for (variant, ratio) in [(Variant::Mindlin, 0.5), (Variant::MindlinForce, 1.0)] {
+            let law = LammpsMindlin { variant };
+            let mut s = MindlinHistory::default();
+            let f1 = law.force(&input(4e-6, v, 10.0), &mut s);
+            let f2 = law.force(&input(1e-6, Vec3::zeros(), 10.0), &mut s);
+            assert!((f2.x / f1.x - ratio).abs() < 1e-14, "{variant:?}");
+        }
+    }
+
+    #[test]
+    fn rescale_shrinks_the_history_with_the_contact_radius_on_unloading() {
+        // `mindlin_rescale/force` at δ/4 after δ: the stored force is halved (a/a_prev).
+        let law = LammpsMindlin {
+            variant: Variant::MindlinRescaleForce,
+        };
+        let v = Vec3::new(1e-3, 0.0, 0.0);
+        let mut s = MindlinHistory::default();
+        let f1 = law.force(&input(4e-6, v, 10.0), &mut s);
+        let f2 = law.force(&input(1e-6, Vec3::zeros(), 10.0), &mut s);
+        assert!((f2.x / f1.x - 0.5).abs() < 1e-14);
+    }
+
+    #[test]
+    fn coulomb_limit_takes_the_magnitude_of_a_pulling_normal_force() {
+        // F_n = −3 N (the damping pulls): LAMMPS still allows μ·3 N.
+        let law = LammpsMindlin {
+            variant: Variant::MindlinForce,
+        };
+        let i = TangentialInput {
+            normal_force: -3.0,
+            ..registry::sliding_input()
+        };
+        let f = law.force(&i, &mut MindlinHistory::default());
+        assert!((f.norm() - i.friction * 3.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn each_variant_names_its_lammps_keyword() {
+        let words: Vec<String> = Variant::ALL
+            .iter()
+            .map(|&variant| LammpsMindlin { variant }.lammps().unwrap())
+            .collect();
+        assert_eq!(
+            words,
+            [
+                "mindlin -1 0 {mu}",
+                "mindlin/force -1 0 {mu}",
+                "mindlin_rescale -1 0 {mu}",
+                "mindlin_rescale/force -1 0 {mu}"
+            ]
+        );
+    }
+}
