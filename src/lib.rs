@@ -1,6 +1,7 @@
 //! tamp: a verification-first discrete element method reference implementation for
 //! powder packing and cold die compaction. See README.md and docs/architecture.md.
 
+pub mod accuracy;
 pub mod boundary;
 pub mod checkpoint;
 pub mod compare;

@@ -168,6 +168,13 @@ enum Study {
         #[arg(long, default_value_t = 0.2)]
         min_wall: f64,
     },
+    /// Single head-on impacts of each law with an impact closed form over a range of
+    /// Δt/t_c: the error model of time_step.accuracy (docs/accuracy-cost.md).
+    AccuracyCalibration {
+        /// Directory of accuracy-cost.md (its calibration section) and accuracy-cost/accuracy_calibration.csv.
+        #[arg(long, default_value = "study")]
+        out: PathBuf,
+    },
     /// Bisect the largest stable α of each contact law in a loaded FCC lattice.
     StableAlpha {
         /// Directory of accuracy-cost.md (its stable-α section) and accuracy-cost/stable_alpha.csv.
@@ -333,6 +340,9 @@ fn main() -> ExitCode {
                 min_wall_s: min_wall,
             })
         }
+        Command::Study {
+            study: Study::AccuracyCalibration { out },
+        } => tamp::study::accuracy_calibration::run(&out),
         Command::Study {
             study: Study::StableAlpha { out },
         } => tamp::study::stable_alpha::run(&out),

@@ -99,6 +99,9 @@ pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool, resume: bool) -
     for w in &built.warnings {
         eprintln!("warning: {w}");
     }
+    for n in &built.notes {
+        eprintln!("{n}");
+    }
     let mut sim = built.sim;
     let keep: &[&str] = if resume { &[CHECKPOINT] } else { &[] };
     output::claim_dir(out_dir, scene_path, OUTPUTS, keep)?;

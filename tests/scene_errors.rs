@@ -110,9 +110,41 @@ fn unknown_material_and_law_are_named() {
 
 #[test]
 fn hertz_without_characteristic_velocity_or_fixed_step_is_rejected() {
+    // Nothing moves (no gravity, no velocity), so no characteristic velocity is implied.
     let mut s = base();
     s["time_step"] = json!({"alpha": 0.2});
+    s.as_object_mut().unwrap().remove("gravity");
     expect_input_error(s, &["time_step.characteristic_velocity: is required"]);
+}
+
+#[test]
+fn accuracy_is_checked_and_exclusive() {
+    let mut s = base();
+    s["time_step"] = json!({"accuracy": 0.5});
+    expect_input_error(s, &["time_step.accuracy: must be in (0, 0.1]"]);
+    let mut s = base();
+    s["time_step"] = json!({"accuracy": 1e-3, "fixed": 1e-9});
+    expect_input_error(
+        s,
+        &["time_step.accuracy: cannot be combined with time_step.fixed"],
+    );
+}
+
+#[test]
+fn hertz_accuracy_without_characteristic_velocity_states_its_step() {
+    let mut s = base();
+    s["time_step"] = json!({"accuracy": 1e-4});
+    s["contact"].as_object_mut().unwrap().remove("damping");
+    let (code, stderr) = run_text(&s.to_string());
+    assert_eq!(code, 0, "{stderr}");
+    for said in [
+        "accuracy 1e-4",
+        "steps per contact",
+        "predicted cost",
+        "characteristic velocity",
+    ] {
+        assert!(stderr.contains(said), "{said}: {stderr}");
+    }
 }
 
 #[test]

@@ -151,6 +151,9 @@ fn stage_scene(
     let mut s = base.clone();
     s.name = format!("{} — {stage} stage", base.name);
     s.die_compaction = None;
+    // The stages step by α (the press re-estimates it from the contacts), never by
+    // the accuracy default of a scene that states no step.
+    s.time_step.alpha = Some(base.time_step.alpha());
     s.contact = contact.clone();
     s.particles = particles;
     s.walls = walls;
@@ -346,7 +349,7 @@ pub fn prepare(scene: &Scene, quiet: bool) -> Result<Specimen> {
         dc.fill.max_duration,
     )?;
     fill.time_step.characteristic_velocity = Some((2.0 * g.norm() * column_height).sqrt());
-    fill.time_step.alpha = dc.fill.alpha.unwrap_or(scene.time_step.alpha);
+    fill.time_step.alpha = Some(dc.fill.alpha.unwrap_or(scene.time_step.alpha()));
     let built = scene::build(&fill)?;
     let mut sim = built.sim;
     let p = &sim.particles;
@@ -487,7 +490,7 @@ pub fn press(
     let (die, floor, punch) = (0, 1, 2);
     let area = PI * (0.5 * dc.die_diameter).powi(2);
     let die_radius = 0.5 * dc.die_diameter;
-    let alpha = scene.time_step.alpha;
+    let alpha = scene.time_step.alpha();
     let fixed = scene.time_step.fixed;
     let ramp = dc.press.ramp_time;
     let records = dc.press.records;

@@ -2,6 +2,7 @@
 //! are built; random insertion uses the scene's seed.
 
 use super::schema::*;
+use crate::accuracy::step::{COST_PER_PARTICLE_STEP, DEFAULT_ACCURACY, STABILITY_ALPHA};
 use crate::boundary::Boundary;
 use crate::contact::ContactLaw;
 use crate::detect::{Detector, NeighborList, locality};
@@ -24,6 +25,9 @@ pub struct BuiltScene {
     pub dt_estimate: Option<f64>,
     pub steps: u64,
     pub warnings: Vec<String>,
+    /// How the step was chosen, when tamp chose it from an accuracy or an implied
+    /// characteristic velocity: printed to stderr by `tamp run`.
+    pub notes: Vec<String>,
 }
 
 pub(super) fn v3(a: &[f64; 3]) -> Vec3 {
@@ -378,33 +382,81 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
         sim.set_growth(growth, target_radius);
     }
     let ts = &scene.time_step;
-    let dt_estimate = sim
-        .critical_time_step(ts.characteristic_velocity)
-        .map(|dt| ts.alpha * dt);
     let mut warnings = Vec::new();
-    let dt = match (ts.fixed, dt_estimate) {
-        (Some(fixed), Some(est)) => {
-            if fixed > est {
-                warnings.push(format!(
-                    "time_step.fixed = {fixed:e} s exceeds alpha * critical time step = {est:e} s (Rojek eq 26); the run may be unstable"
+    let mut notes = Vec::new();
+    let model = crate::accuracy::model::for_law(&sim.law);
+    let accuracy = match (ts.accuracy, ts.stated(), model) {
+        (Some(a), _, _) => Some(a),
+        (None, false, Some(_)) => Some(DEFAULT_ACCURACY),
+        (None, false, None) => {
+            notes.push(format!(
+                "time step: the scene states none and its contact law has no error model (docs/accuracy-cost.md), so alpha = {DEFAULT_ALPHA} (Rojek eq 26)"
+            ));
+            None
+        }
+        (None, true, _) => None,
+    };
+    // The characteristic velocity: the scene's, else the one its motions imply —
+    // always for an accuracy, otherwise only where the step needs one and has none.
+    let implied = || {
+        let v = crate::accuracy::velocity::implied(&sim);
+        (v.speed > 0.0).then(|| {
+            (
+                v.speed,
+                format!("characteristic velocity {:.4e} m/s: {}", v.speed, v.source),
+            )
+        })
+    };
+    let (dt_estimate, dt, chosen) = if let Some(a) = accuracy {
+        let (v, said) = match ts.characteristic_velocity {
+            Some(v) => (
+                v,
+                format!("characteristic velocity {v:e} m/s (the scene's)"),
+            ),
+            None => implied().unwrap_or((0.0, "no characteristic velocity: nothing moves".into())),
+        };
+        let critical = sim.critical_time_step((v > 0.0).then_some(v));
+        let choice = crate::accuracy::step::choose(&sim, a, v, critical)
+            .map_err(|rule| TampError::input("time_step.accuracy", rule))?;
+        let dt_estimate = critical.map(|c| ts.alpha() * c);
+        (dt_estimate, choice.dt, Some((a, choice, said)))
+    } else {
+        let mut dt_estimate = sim
+            .critical_time_step(ts.characteristic_velocity)
+            .map(|dt| ts.alpha() * dt);
+        if dt_estimate.is_none()
+            && ts.fixed.is_none()
+            && ts.characteristic_velocity.is_none()
+            && let Some((v, said)) = implied()
+        {
+            dt_estimate = sim.critical_time_step(Some(v)).map(|dt| ts.alpha() * dt);
+            notes.push(format!("time step: {said}"));
+        }
+        let dt = match (ts.fixed, dt_estimate) {
+            (Some(fixed), Some(est)) => {
+                if fixed > est {
+                    warnings.push(format!(
+                        "time_step.fixed = {fixed:e} s exceeds alpha * critical time step = {est:e} s (Rojek eq 26); the run may be unstable"
+                    ));
+                }
+                fixed
+            }
+            (Some(fixed), None) => fixed,
+            (None, Some(est)) => est,
+            (None, None) if ts.characteristic_velocity.is_some() => {
+                return Err(TampError::input(
+                    "materials",
+                    "give no finite critical time step (Rojek eqs 26–29): check every youngs_modulus and density, or give time_step.fixed",
                 ));
             }
-            fixed
-        }
-        (Some(fixed), None) => fixed,
-        (None, Some(est)) => est,
-        (None, None) if ts.characteristic_velocity.is_some() => {
-            return Err(TampError::input(
-                "materials",
-                "give no finite critical time step (Rojek eqs 26–29): check every youngs_modulus and density, or give time_step.fixed",
-            ));
-        }
-        (None, None) => {
-            return Err(TampError::input(
-                "time_step.characteristic_velocity",
-                "is required when time_step.fixed is absent and the normal law's stiffness depends on the overlap",
-            ));
-        }
+            (None, None) => {
+                return Err(TampError::input(
+                    "time_step.characteristic_velocity",
+                    "is required when time_step.fixed is absent, the normal law's stiffness depends on the overlap and nothing in the scene moves",
+                ));
+            }
+        };
+        (dt_estimate, dt, None)
     };
     sim.dt = dt;
     let steps = match (scene.run.steps, scene.run.duration) {
@@ -412,6 +464,24 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
         (None, Some(d)) => (d / dt).ceil() as u64,
         (None, None) => unreachable!("validated"),
     };
+    if let Some((a, choice, said)) = chosen {
+        let bodies = sim.particles.len() + sim.sources.iter().map(|s| s.remaining).sum::<usize>();
+        notes.push(format!(
+            "time step: accuracy {a:e}{} ({} error model): dt = {:.4e} s, {:.1} steps per contact (shortest contact {:.4e} s; {said}){}; predicted cost {steps} steps, about {:.2e} s of wall time ({bodies} particles at {:.1e} s per particle-step)",
+            if ts.accuracy.is_none() { " (the default: the scene states no step)" } else { "" },
+            choice.model.law,
+            choice.dt,
+            choice.steps_per_contact(),
+            choice.contact_duration,
+            if choice.stability_bound {
+                format!(", bounded by stability at alpha = {STABILITY_ALPHA} (the accuracy alone allows a larger step)")
+            } else {
+                String::new()
+            },
+            steps as f64 * bodies.max(1) as f64 * COST_PER_PARTICLE_STEP,
+            COST_PER_PARTICLE_STEP,
+        ));
+    }
     check_range(scene, &sim, steps)?;
     super::memory::check(scene, Some(steps))?;
     warnings.extend(check_speeds(scene, &sim)?);
@@ -420,6 +490,7 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
         dt_estimate,
         steps,
         warnings,
+        notes,
     })
 }
 

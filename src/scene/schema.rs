@@ -293,9 +293,12 @@ fn one() -> f64 {
 #[derive(Clone, Debug, Default, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct TimeStepSpec {
-    /// Safety factor α of Rojek eq 26.
-    #[serde(default = "default_alpha")]
-    pub alpha: f64,
+    /// Safety factor α of Rojek eq 26 (`alpha()`: 0.2 when absent).
+    #[serde(default)]
+    pub alpha: Option<f64>,
+    /// The relative error of the impact quantities asked for (src/accuracy/).
+    #[serde(default)]
+    pub accuracy: Option<f64>,
     /// Impact speed that sets the stiffness of nonlinear laws before contacts exist, m/s.
     #[serde(default)]
     pub characteristic_velocity: Option<f64>,
@@ -304,9 +307,20 @@ pub struct TimeStepSpec {
     pub fixed: Option<f64>,
 }
 
-fn default_alpha() -> f64 {
-    0.2
+impl TimeStepSpec {
+    /// The safety factor α: the scene's, or the default 0.2.
+    pub fn alpha(&self) -> f64 {
+        self.alpha.unwrap_or(DEFAULT_ALPHA)
+    }
+
+    /// Whether the scene states how its step is chosen (α, a fixed step or an
+    /// accuracy); a scene that does not gets `accuracy::step::DEFAULT_ACCURACY`.
+    pub fn stated(&self) -> bool {
+        self.alpha.is_some() || self.fixed.is_some() || self.accuracy.is_some()
+    }
 }
+
+pub const DEFAULT_ALPHA: f64 = 0.2;
 
 #[derive(Clone, Debug, Default, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]

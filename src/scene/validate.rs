@@ -116,6 +116,12 @@ fn validate_die_compaction(scene: &Scene, dc: &DieCompactionSpec) -> Result<()> 
             "is required by die_compaction: the die is filled by settling under it",
         );
     }
+    if scene.time_step.accuracy.is_some() {
+        e.push(
+            "time_step.accuracy",
+            "is not available in a die_compaction scene (its press stage re-estimates the step from the contacts with time_step.alpha); give time_step.alpha",
+        );
+    }
     let names: HashSet<&str> = scene.materials.iter().map(|m| m.name.as_str()).collect();
     dc.validate(&|name| names.contains(name), &mut e);
     if let Some(m) = scene
@@ -459,11 +465,26 @@ fn validate_plain(scene: &Scene) -> Result<()> {
         e.positive("rotation.inertia_scale", r.inertia_scale);
     }
     let ts = &scene.time_step;
-    if !(ts.alpha > 0.0 && ts.alpha <= 1.0) {
-        e.push(
-            "time_step.alpha",
-            format!("must be in (0, 1], got {}", ts.alpha),
-        );
+    if let Some(alpha) = ts.alpha
+        && !(alpha > 0.0 && alpha <= 1.0)
+    {
+        e.push("time_step.alpha", format!("must be in (0, 1], got {alpha}"));
+    }
+    if let Some(a) = ts.accuracy {
+        if !(a > 0.0 && a <= 0.1) {
+            e.push(
+                "time_step.accuracy",
+                format!("must be in (0, 0.1] (a relative error; the error model is calibrated from 1e-1 down), got {a}"),
+            );
+        }
+        for (field, given) in [("alpha", ts.alpha.is_some()), ("fixed", ts.fixed.is_some())] {
+            if given {
+                e.push(
+                    "time_step.accuracy",
+                    format!("cannot be combined with time_step.{field}: the accuracy chooses the step; give one of them"),
+                );
+            }
+        }
     }
     if let Some(v) = ts.characteristic_velocity {
         e.positive("time_step.characteristic_velocity", v);

@@ -154,7 +154,7 @@ fn sweep_case(spec: &CaseSpec, dir: &Path, scratch: &Path, opts: &Options) -> Re
         let dt = built.as_ref().map(|b| b.sim.dt);
         let alpha = built.as_ref().and_then(|b| {
             b.dt_estimate
-                .map(|est| b.sim.dt / (est / scene.time_step.alpha))
+                .map(|est| b.sim.dt / (est / scene.time_step.alpha()))
         });
         drop(built);
         let (result, wall_s, repeats) = timed(spec, dir, scratch, variant, opts.min_wall_s);

@@ -63,7 +63,7 @@ pub fn run(scene_path: &Path, out: &Path) -> Result<u8> {
     let mut runs = Vec::new();
     for (ramp, alpha, axis) in SETTINGS {
         let mut s = scene.clone();
-        s.time_step.alpha = alpha;
+        s.time_step.alpha = Some(alpha);
         if let Some(dc) = s.die_compaction.as_mut() {
             dc.press.ramp_time = ramp;
         }

@@ -2,6 +2,7 @@
 //! does accuracy cost, and where does the integration stop being stable". They
 //! write CSV data and a page (docs/accuracy-cost.md when run with `--out docs`).
 
+pub mod accuracy_calibration;
 pub mod accuracy_cost;
 pub mod die_compaction;
 pub mod page;

@@ -324,8 +324,11 @@ pub fn write(out: &Path) -> Result<()> {
     let mut by_case: BTreeMap<String, Vec<Row>> = BTreeMap::new();
     let mut stable: Vec<StableRow> = Vec::new();
     let mut die: Vec<super::die_compaction::DieRow> = Vec::new();
+    let mut calibration: Vec<super::accuracy_calibration::CalibrationRow> = Vec::new();
     for f in &files {
-        if f.file_stem().is_some_and(|s| s == "stable_alpha") {
+        if f.file_stem().is_some_and(|s| s == "accuracy_calibration") {
+            calibration = read_csv(f)?;
+        } else if f.file_stem().is_some_and(|s| s == "stable_alpha") {
             stable = read_csv(f)?;
         } else if f.file_stem().is_some_and(|s| s == "die_compaction") {
             die = read_csv(f)?;
@@ -364,6 +367,9 @@ pub fn write(out: &Path) -> Result<()> {
         crate::VERSION,
         crate::GIT_COMMIT
     );
+    if !calibration.is_empty() {
+        page.push_str(&super::accuracy_calibration::section(&calibration));
+    }
     if !stable.is_empty() {
         page.push_str(&super::stable_alpha::section(&stable));
     }

@@ -309,7 +309,7 @@ fn scene_json(law: &Law, velocities: &[([f64; 3], [f64; 3])]) -> Value {
 /// when it stops.
 fn stable_at(law: &Law, velocities: &[([f64; 3], [f64; 3])], alpha: f64) -> Result<bool> {
     let mut s = scene::parse(&scene_json(law, velocities).to_string())?;
-    s.time_step.alpha = alpha;
+    s.time_step.alpha = Some(alpha);
     let mut built = scene::build(&s)?;
     let sim = &mut built.sim;
     let e0 = sim.mechanical_energy();
@@ -346,7 +346,7 @@ fn vibration(law: &Law) -> Result<Vec<([f64; 3], [f64; 3])>> {
     let dt_cr = built
         .dt_estimate
         .ok_or_else(|| TampError::Other(format!("{}: no critical step estimate", law.label)))?
-        / s.time_step.alpha;
+        / s.time_step.alpha();
     let v0 = 0.01 * OVERLAP * 2.0 / dt_cr;
     let mut rng = ChaCha8Rng::seed_from_u64(8);
     let mut draw =

@@ -137,7 +137,7 @@ impl Variant {
         if s != 1.0 {
             match &mut scene.time_step.fixed {
                 Some(dt) => *dt *= s,
-                None => scene.time_step.alpha *= s,
+                None => scene.time_step.alpha = Some(scene.time_step.alpha() * s),
             }
             if let Some(steps) = &mut scene.run.steps {
                 *steps = ((*steps as f64 / s).round() as u64).max(1);

@@ -1,6 +1,7 @@
 //! The case registry: scene name → function. Adding a case = its JSON file in
 //! `verification/` + one file here + one line in `CASES`.
 
+mod accuracy_on_demand;
 mod affine_yield_2d;
 mod ballistic_deposition_2d;
 mod binary_packing;
@@ -40,6 +41,7 @@ use super::CaseFn;
 
 pub const CASES: &[(&str, CaseFn)] = &[
     ("linear_restitution", linear_restitution::run),
+    ("accuracy_on_demand", accuracy_on_demand::run),
     ("hertz_collision_time", hertz_collision_time::run),
     ("hertz_rigid_wall_impact", hertz_rigid_wall_impact::run),
     ("hertz_yield_onset", hertz_yield_onset::run),

@@ -15,6 +15,9 @@ pub struct Collision {
     /// Largest sampled overlap (after each step, no refinement), m: LIGGGHTS dumps
     /// are reduced the same way.
     pub max_sampled_overlap: f64,
+    /// Largest contact force on the first body, refined like the overlap, N (the
+    /// probed bodies must feel no other force: no gravity, no third body).
+    pub max_force: f64,
     /// Normal relative speed after / before.
     pub restitution: f64,
 }
@@ -51,6 +54,7 @@ pub fn binary_collision(
         &format!("particles {i} and {j}"),
         |s| s.overlap(i, j),
         |s| -(s.particles.velocity[i] - s.particles.velocity[j]).dot(&n),
+        |s| s.particles.force[i].norm(),
     )
 }
 
@@ -69,6 +73,7 @@ pub fn plane_collision(
         &format!("particle {i} and the plane"),
         |s| s.particles.radius[i] - (s.particles.position[i] - point).dot(&normal),
         |s| -s.particles.velocity[i].dot(&normal),
+        |s| s.particles.force[i].norm(),
     )
 }
 
@@ -79,12 +84,14 @@ fn collision(
     bodies: &str,
     overlap: impl Fn(&Simulation) -> f64,
     approach: impl Fn(&Simulation) -> f64,
+    force: impl Fn(&Simulation) -> f64,
 ) -> Result<Collision> {
     let v_before = approach(sim);
     let dt = sim.dt;
     let mut prev = overlap(sim);
     let (mut start, mut end) = (None, None);
     let mut samples: Vec<f64> = Vec::new();
+    let mut forces: Vec<f64> = Vec::new();
     for _ in 0..max_steps {
         sim.step()?;
         let now = overlap(sim);
@@ -93,6 +100,7 @@ fn collision(
         }
         if start.is_some() {
             samples.push(now);
+            forces.push(force(sim));
         }
         if start.is_some() && prev > 0.0 && now <= 0.0 {
             end = Some(sim.time - dt + dt * prev / (prev - now));
@@ -105,13 +113,28 @@ fn collision(
             "{bodies} did not complete a collision in {max_steps} steps"
         )));
     };
+    let (k, max_overlap) = refined_peak(&samples);
+    // The last sample is after separation (no force): it stays out of the peak.
+    let (_, max_force) = refined_peak(&forces[..forces.len().saturating_sub(1).max(1)]);
+    Ok(Collision {
+        duration: end - start,
+        max_overlap,
+        max_sampled_overlap: samples[k],
+        max_force,
+        restitution: -approach(sim) / v_before,
+    })
+}
+
+/// The largest sample and its index; the value is refined by the parabola through it
+/// and its two neighbours when it is an interior maximum.
+fn refined_peak(samples: &[f64]) -> (usize, f64) {
     let k = samples
         .iter()
         .enumerate()
         .max_by(|a, b| a.1.total_cmp(b.1))
         .map(|(k, _)| k)
         .unwrap_or(0);
-    let max_overlap = if k > 0 && k + 1 < samples.len() {
+    let peak = if k > 0 && k + 1 < samples.len() {
         let (a, b, c) = (samples[k - 1], samples[k], samples[k + 1]);
         let curvature = a - 2.0 * b + c;
         if curvature < 0.0 {
@@ -122,12 +145,7 @@ fn collision(
     } else {
         samples[k]
     };
-    Ok(Collision {
-        duration: end - start,
-        max_overlap,
-        max_sampled_overlap: samples[k],
-        restitution: -approach(sim) / v_before,
-    })
+    (k, peak)
 }
 
 /// One state of a displacement-driven compression.

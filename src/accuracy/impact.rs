@@ -1,0 +1,200 @@
+//! Closed forms of one head-on impact, for the laws whose source gives them. They
+//! are what the accuracy setting's error model is calibrated and checked against
+//! (`tamp study accuracy-calibration`, the case `accuracy_on_demand`), so they are
+//! written from the laws' sources, not from tamp's integration:
+//!
+//! - linear spring (Zhong 2009 model I, eqs 7–9): t_c = π/ω, e = exp(−β t_c) and
+//!   δ_max of δ(t) = (v/ω) e^{−βt} sin ωt, ω = √(k/m* − β²), β = γ_n/(2m*);
+//!   F(t) = k δ + γ_n dδ/dt, largest at first touch (γ_n v) or where dF/dt = 0;
+//! - Hertz (Johnson 1985 §11.4): δ_max = (15 m* v²/(16 E* √R*))^{2/5},
+//!   t_c = 3.21807 (m*/k̃)^{2/5} v^{−1/5}, F_max = 4/3 E* √R* δ_max^{3/2}, e = 1;
+//! - Walton–Braun (Zhong eq 16): δ_max = v √(m*/k₁), F_max = k₁ δ_max,
+//!   e = √(k₁/k₂); the force lasts a quarter period on each branch,
+//!   (π/2)(√(m*/k₁) + √(m*/k₂)), and ends at the permanent set δ₀ = δ_max (1 − k₁/k₂),
+//!   which the bodies then leave at e v: the overlap lasts δ₀/(e v) longer.
+//!
+//! The contact duration is the time the overlap is positive (what the probe measures).
+
+use crate::contact::ContactLaw;
+use crate::contact::damping::{Damping, critical_damping};
+use crate::contact::normal::hertz::{hertz_contact_duration, hertz_force, hertz_max_overlap};
+use crate::contact::normal::linear::LinearCollision;
+use crate::contact::normal::{Linear, NormalLaw, WaltonBraun};
+use crate::material::PairProperties;
+use std::f64::consts::PI;
+
+/// The impact quantities the accuracy setting promises.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Impact {
+    /// From first touch to separation, s.
+    pub duration: f64,
+    pub max_overlap: f64,
+    pub max_force: f64,
+    /// Normal rebound speed over approach speed.
+    pub restitution: f64,
+}
+
+/// The names of `Impact`'s quantities, in the order of `Impact::values`.
+pub const QUANTITIES: [&str; 4] = [
+    "max_overlap",
+    "max_force",
+    "contact_duration",
+    "rebound_velocity",
+];
+
+impl Impact {
+    pub fn values(&self) -> [f64; 4] {
+        [
+            self.max_overlap,
+            self.max_force,
+            self.duration,
+            self.restitution,
+        ]
+    }
+
+    /// |measured − exact| / exact, quantity by quantity (the rebound velocity's
+    /// relative error is the restitution's).
+    pub fn relative_errors(&self, exact: &Impact) -> [f64; 4] {
+        let (m, e) = (self.values(), exact.values());
+        std::array::from_fn(|q| ((m[q] - e[q]) / e[q]).abs())
+    }
+}
+
+/// The closed form of a head-on impact at approach speed `v` for bodies of effective
+/// mass `m` and radius `r` (`None`: the law, or its combination with damping or
+/// cohesion, has none here).
+pub fn closed_form(
+    law: &ContactLaw,
+    m: f64,
+    r: f64,
+    pair: &PairProperties,
+    v: f64,
+) -> Option<Impact> {
+    if law.cohesion.is_some() {
+        return None;
+    }
+    match (law.normal, law.damping) {
+        (NormalLaw::Linear(Linear { stiffness: k }), damping) => {
+            let gamma = match damping {
+                None => 0.0,
+                Some(Damping::Constant(c)) => c.gamma_n,
+                Some(Damping::CriticalFraction(c)) => c.xi * critical_damping(m, k),
+                Some(_) => return None,
+            };
+            let c = LinearCollision::new(k, m, gamma);
+            if c.beta >= c.omega0 || c.beta.is_nan() {
+                return None; // overdamped: no rebound
+            }
+            Some(Impact {
+                duration: c.contact_duration(),
+                max_overlap: c.max_overlap(v),
+                max_force: linear_max_force(&c, k, gamma, v),
+                restitution: c.restitution(),
+            })
+        }
+        (NormalLaw::Hertz(_), None) => {
+            let e = pair.effective_modulus?;
+            let max_overlap = hertz_max_overlap(m, v, r, e);
+            Some(Impact {
+                duration: hertz_contact_duration(m, v, r, e),
+                max_overlap,
+                max_force: hertz_force(max_overlap, r, e),
+                restitution: 1.0,
+            })
+        }
+        (
+            NormalLaw::WaltonBraun(WaltonBraun {
+                loading_stiffness: k1,
+                unloading_stiffness: k2,
+            }),
+            None,
+        ) => {
+            let max_overlap = v * (m / k1).sqrt();
+            let restitution = (k1 / k2).sqrt();
+            let set = max_overlap * (1.0 - k1 / k2);
+            Some(Impact {
+                duration: PI / 2.0 * ((m / k1).sqrt() + (m / k2).sqrt()) + set / (restitution * v),
+                max_overlap,
+                max_force: k1 * max_overlap,
+                restitution,
+            })
+        }
+        _ => None,
+    }
+}
+
+/// Largest of F(t) = k δ + γ dδ/dt over the contact: at first touch (γ v) when F
+/// falls from there, else at the root of dF/dt = k δ' + γ δ'' in the first half
+/// period, found by bisection.
+fn linear_max_force(c: &LinearCollision, k: f64, gamma: f64, v: f64) -> f64 {
+    let (w, b) = (c.damped_frequency(), c.beta);
+    // δ' = v e^{−βt}(cos ωt − (β/ω) sin ωt); δ'' = v e^{−βt}(−2β cos ωt + (β²−ω²)/ω sin ωt).
+    let d1 = |t: f64| v * (-b * t).exp() * ((w * t).cos() - b / w * (w * t).sin());
+    let d2 = |t: f64| {
+        v * (-b * t).exp() * (-2.0 * b * (w * t).cos() + (b * b - w * w) / w * (w * t).sin())
+    };
+    let d0 = |t: f64| v / w * (-b * t).exp() * (w * t).sin();
+    let force = |t: f64| k * d0(t) + gamma * d1(t);
+    let slope = |t: f64| k * d1(t) + gamma * d2(t);
+    let at_touch = gamma * v;
+    if slope(0.0) <= 0.0 {
+        return at_touch;
+    }
+    // dF/dt > 0 at touch and < 0 at the quarter period of the undamped part.
+    let (mut lo, mut hi) = (0.0, PI / w);
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if slope(mid) > 0.0 { lo = mid } else { hi = mid }
+    }
+    force(0.5 * (lo + hi)).max(at_touch)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+
+    fn law(normal: NormalLaw, damping: Option<Damping>) -> ContactLaw {
+        ContactLaw::new(normal, damping, None, None)
+    }
+
+    fn pair() -> PairProperties {
+        crate::contact::registry::pair()
+    }
+
+    #[test]
+    fn undamped_linear_force_peaks_at_k_times_max_overlap() {
+        let l = law(NormalLaw::Linear(Linear { stiffness: 4.0 }), None);
+        let i = closed_form(&l, 1.0, 1.0, &pair(), 3.0).unwrap();
+        // ω = 2: δ_max = v/ω = 1.5, F_max = 6, t_c = π/2.
+        assert_relative_eq!(i.max_overlap, 1.5, max_relative = 1e-15);
+        assert_relative_eq!(i.max_force, 6.0, max_relative = 1e-12);
+        assert_relative_eq!(i.duration, PI / 2.0, max_relative = 1e-15);
+        assert_eq!(i.restitution, 1.0);
+    }
+
+    /// The damped peak force against the peak of F(t) sampled finely.
+    #[test]
+    fn damped_linear_force_peak_matches_sampling() {
+        use crate::contact::damping::Constant;
+        for gamma in [0.1, 1.0, 3.0] {
+            let (k, m, v) = (4.0, 1.0, 3.0);
+            let l = law(
+                NormalLaw::Linear(Linear { stiffness: k }),
+                Some(Damping::Constant(Constant { gamma_n: gamma })),
+            );
+            let i = closed_form(&l, m, 1.0, &pair(), v).unwrap();
+            let c = LinearCollision::new(k, m, gamma);
+            let (w, b) = (c.damped_frequency(), c.beta);
+            let sampled = (0..=200_000)
+                .map(|n| {
+                    let t = n as f64 / 200_000.0 * PI / w;
+                    let d = v / w * (-b * t).exp() * (w * t).sin();
+                    let dd = v * (-b * t).exp() * ((w * t).cos() - b / w * (w * t).sin());
+                    k * d + gamma * dd
+                })
+                .fold(f64::MIN, f64::max);
+            assert_relative_eq!(i.max_force, sampled, max_relative = 1e-9);
+        }
+    }
+}

@@ -1,0 +1,75 @@
+//! The error model of the accuracy setting: for each law with an impact closed form,
+//! the relative error of each impact quantity after one head-on impact integrated
+//! with step Δt,
+//!
+//!   error ≈ C (Δt/t_c)^p,   t_c the closed-form contact duration,
+//!
+//! with p and C measured by `tamp study accuracy-calibration` (the table and the
+//! command that wrote it: docs/accuracy-cost.md). C is the envelope over the
+//! calibration's runs (the largest error/(Δt/t_c)^p over its steps and the places
+//! first touch falls in a step), so the model bounds the error it was fitted to
+//! rather than averaging it. p ≈ 2 where the force is smooth at first touch (velocity
+//! Verlet is second order); p ≈ 1 where it jumps (a dashpot's γ v at first touch).
+
+use crate::contact::ContactLaw;
+use crate::contact::damping::Damping;
+use crate::contact::normal::NormalLaw;
+
+/// The largest Δt/t_c the model gives: the calibration's coarser steps are not yet
+/// on the power law.
+pub const LARGEST_RATIO: f64 = 0.125;
+
+/// One law's error for one quantity.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ErrorTerm {
+    pub quantity: &'static str,
+    pub c: f64,
+    pub p: f64,
+}
+
+impl ErrorTerm {
+    /// The step over the contact duration at which this term equals `accuracy`.
+    pub fn step_ratio(&self, accuracy: f64) -> f64 {
+        (accuracy / self.c).powf(1.0 / self.p)
+    }
+}
+
+/// The calibrated model of one law (with its damping, if any).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ErrorModel {
+    /// How `tamp study accuracy-calibration` names it.
+    pub law: &'static str,
+    pub terms: [ErrorTerm; 4],
+}
+
+impl ErrorModel {
+    /// The largest Δt/t_c at which every quantity is within `accuracy`.
+    pub fn step_ratio(&self, accuracy: f64) -> f64 {
+        self.terms
+            .iter()
+            .map(|t| t.step_ratio(accuracy))
+            .fold(LARGEST_RATIO, f64::min)
+    }
+
+    /// The predicted error of each quantity at Δt/t_c = `ratio`.
+    pub fn predicted(&self, ratio: f64) -> [f64; 4] {
+        self.terms.map(|t| t.c * ratio.powf(t.p))
+    }
+}
+
+/// The model of the scene's law; `None` where the calibration has none (laws with
+/// no impact closed form, Hertz with a dashpot, cohesion). Friction does not enter:
+/// it does not change a head-on impact.
+pub fn for_law(law: &ContactLaw) -> Option<&'static ErrorModel> {
+    let name = match (law.normal, law.damping, law.cohesion) {
+        (_, _, Some(_)) => return None,
+        (NormalLaw::Linear(_), None, None) => "linear",
+        (NormalLaw::Linear(_), Some(Damping::Constant(_) | Damping::CriticalFraction(_)), None) => {
+            "linear_damped"
+        }
+        (NormalLaw::Hertz(_), None, None) => "hertz",
+        (NormalLaw::WaltonBraun(_), None, None) => "walton_braun",
+        _ => return None,
+    };
+    super::calibration::MODELS.iter().find(|m| m.law == name)
+}

@@ -1,0 +1,132 @@
+//! The step that delivers a requested accuracy: Δt = (Δt/t_c)_a · min t_c, with
+//! (Δt/t_c)_a from the law's error model (`model`) and t_c the closed-form duration
+//! (`impact`) of the shortest impact the scene can have at its characteristic
+//! velocity: each body against an identical one (m* = m/2, R* = R/2; the shortest
+//! of its pairs, since t_c grows with m*) and against each wall (m* = m, R* = R),
+//! bodies still to be poured at their smallest radius.
+//! The step never exceeds the default α = 0.2 times the critical step (Rojek eq 26):
+//! at a loose accuracy, stability and not accuracy sets it.
+
+use super::calibration::DAMPED_RESTITUTION_MIN;
+use super::impact::closed_form;
+use super::model::{ErrorModel, for_law};
+use crate::material::PairProperties;
+use crate::simulation::Simulation;
+
+/// The accuracy of a scene that states no time step.
+pub const DEFAULT_ACCURACY: f64 = 1e-3;
+
+/// The safety factor the step never exceeds (the default `time_step.alpha`).
+pub const STABILITY_ALPHA: f64 = crate::scene::schema::DEFAULT_ALPHA;
+
+/// Wall time of one particle-step of a small collision scene on the machine that
+/// measured it (docs/accuracy-cost.md: "Cost of a step"), s: the prediction of a
+/// run's wall time is steps × particles × this.
+pub const COST_PER_PARTICLE_STEP: f64 = 7.2e-8;
+
+/// What the accuracy setting chose.
+#[derive(Clone, Copy, Debug)]
+pub struct Choice {
+    pub dt: f64,
+    /// The shortest closed-form contact duration, s.
+    pub contact_duration: f64,
+    pub model: &'static ErrorModel,
+    /// True when α = 0.2 times the critical step is smaller than the accuracy's step.
+    pub stability_bound: bool,
+}
+
+impl Choice {
+    pub fn steps_per_contact(&self) -> f64 {
+        self.contact_duration / self.dt
+    }
+}
+
+/// The step for `accuracy` at impact speed `speed`; `critical` is the critical step
+/// estimate (Rojek eq 28) at that speed. Err: why no step can be chosen.
+pub fn choose(
+    sim: &Simulation,
+    accuracy: f64,
+    speed: f64,
+    critical: Option<f64>,
+) -> Result<Choice, String> {
+    let law = &sim.law;
+    let model = for_law(law).ok_or_else(|| {
+        format!(
+            "the contact law ({}{}{}) has no error model: only linear (with or without constant or critical_fraction damping), hertz and walton_braun without damping or cohesion are calibrated (docs/accuracy-cost.md); give time_step.alpha or time_step.fixed",
+            law.normal.name(),
+            law.damping.map_or(String::new(), |d| format!(" + {} damping", d.name())),
+            law.cohesion.map_or("", |_| " + cohesion"),
+        )
+    })?;
+    if law.normal.stiffness_depends_on_speed() && (speed.is_nan() || speed <= 0.0) {
+        return Err(format!(
+            "the {} law's contact duration depends on the impact speed, and nothing in the scene moves: give time_step.characteristic_velocity",
+            law.normal.name()
+        ));
+    }
+    let p = &sim.particles;
+    let mut bodies: Vec<(f64, f64, usize)> = Vec::new();
+    for i in 0..p.len() {
+        let b = (p.mass[i], p.radius[i], p.material[i]);
+        if !bodies.contains(&b) {
+            bodies.push(b);
+        }
+    }
+    for s in sim.sources.iter().filter(|s| s.remaining > 0) {
+        let r = s.radius.min_radius();
+        let m = sim.materials[s.material].particle_density() * 4.0 / 3.0
+            * std::f64::consts::PI
+            * r.powi(3);
+        bodies.push((m, r, s.material));
+    }
+    let duration = |m: f64, r: f64, pair: &PairProperties| {
+        closed_form(law, m, r, pair, speed).map(|i| {
+            if model.law == "linear_damped" && i.restitution < DAMPED_RESTITUTION_MIN {
+                Err(format!(
+                    "the damping gives a restitution of {:.3} to a body of radius {r:e} m, below {DAMPED_RESTITUTION_MIN}, the strongest damping the error model is calibrated for (docs/accuracy-cost.md); give time_step.alpha or time_step.fixed",
+                    i.restitution
+                ))
+            } else {
+                Ok(i.duration)
+            }
+        })
+    };
+    // A lone particle meets only walls.
+    let pairs = p.len() + sim.sources.iter().map(|s| s.remaining).sum::<usize>() > 1;
+    let mut shortest = f64::INFINITY;
+    for &(m, r, material) in &bodies {
+        let mut candidates = Vec::new();
+        if pairs {
+            candidates.push(duration(
+                0.5 * m,
+                0.5 * r,
+                sim.pair_table.get(material, material),
+            ));
+        }
+        for w in &sim.walls {
+            candidates.push(duration(m, r, sim.pair_table.get(material, w.material)));
+        }
+        for t in candidates {
+            match t.transpose()? {
+                Some(t) if t > 0.0 && t.is_finite() => shortest = shortest.min(t),
+                _ => {
+                    return Err(format!(
+                        "the {} law gives no finite contact duration for a body of radius {r:e} m and mass {m:e} kg at {speed:e} m/s: check the materials' youngs_modulus, poisson_ratio and density",
+                        law.normal.name()
+                    ));
+                }
+            }
+        }
+    }
+    if !shortest.is_finite() {
+        return Err("the scene has no particle to size the step for".into());
+    }
+    let by_accuracy = model.step_ratio(accuracy) * shortest;
+    let by_stability = critical.map_or(f64::INFINITY, |c| STABILITY_ALPHA * c);
+    Ok(Choice {
+        dt: by_accuracy.min(by_stability),
+        contact_duration: shortest,
+        model,
+        stability_bound: by_stability < by_accuracy,
+    })
+}

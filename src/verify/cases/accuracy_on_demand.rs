@@ -1,0 +1,160 @@
+//! `time_step.accuracy` keeps its promise on impacts its calibration did not use
+//! (src/accuracy/calibration.rs used equal 1 mm steel spheres at 1 m/s): other
+//! materials, radii, speeds, a rigid and an elastic wall, critical-fraction damping,
+//! a stiffer Walton–Braun unloading, and a sliding oblique impact with Coulomb
+//! friction. Each runs with `{"accuracy": a}` and no characteristic velocity (tamp
+//! implies it from the motion) for a = 1e-2, 1e-3, 1e-4, from three places of first
+//! touch within a step; the relative error of each impact quantity against the
+//! law's closed form (src/accuracy/impact.rs) must be at most a. The sliding impact
+//! is also held to the rigid-body sliding limit Δv_t = μ (1 + e) v_n (Brach 1991;
+//! see sliding_oblique_impact), e = 1 for elastic Hertz.
+
+use super::probe::plane_collision;
+use crate::accuracy::impact::QUANTITIES;
+use crate::accuracy::trial::{Partner, Trial};
+use crate::contact::normal::linear::LinearCollision;
+use crate::error::Result;
+use crate::particles::Vec3;
+use crate::scene;
+use crate::verify::{CaseContext, Measured};
+use serde_json::{Value, json};
+
+const ACCURACIES: [(f64, &str); 3] = [(1e-2, "1e-2"), (1e-3, "1e-3"), (1e-4, "1e-4")];
+const TOUCH_PHASES: [f64; 3] = [1.1, 1.4, 1.8];
+/// Sliding impact: μ and the velocity (v_t, 0, −v_n), v_t > 3.5 μ (1 + e) v_n.
+const FRICTION: f64 = 0.2;
+const SLIDING: [f64; 3] = [1.0, 0.0, -0.2];
+
+fn material(name: &str, density: f64, e: f64, nu: f64) -> Value {
+    json!({"name": name, "density": density, "youngs_modulus": e, "poisson_ratio": nu})
+}
+
+fn trials() -> Vec<Trial> {
+    let glass = material("glass", 2500.0, 6.3e10, 0.2);
+    let aluminium = material("aluminium", 2700.0, 7.0e10, 0.33);
+    let steel = material("steel", 7800.0, 2.0e11, 0.3);
+    let rigid = json!({"name": "rigid", "rigid": true});
+    let copper = material("copper", 8960.0, 1.2e11, 0.34);
+    let glass_mass = 2500.0 * 4.0 / 3.0 * std::f64::consts::PI * 2e-3f64.powi(3);
+    vec![
+        Trial {
+            name: "hertz glass 2 mm on glass 3 mm, 5 m/s",
+            materials: json!([glass]),
+            contact: json!({"normal": {"law": "hertz"}}),
+            radius: 2e-3,
+            partner: Partner::Sphere(3e-3),
+            speed: 5.0,
+        },
+        Trial {
+            name: "hertz aluminium 0.5 mm on a steel wall, 0.3 m/s",
+            materials: json!([aluminium, steel]),
+            contact: json!({"normal": {"law": "hertz"}}),
+            radius: 5e-4,
+            partner: Partner::Wall,
+            speed: 0.3,
+        },
+        Trial {
+            name: "hertz copper 20 um on a rigid wall, 2 m/s",
+            materials: json!([copper, rigid]),
+            contact: json!({"normal": {"law": "hertz"}}),
+            radius: 2e-5,
+            partner: Partner::Wall,
+            speed: 2.0,
+        },
+        Trial {
+            name: "linear glass 2 mm on 1 mm, 2 m/s",
+            materials: json!([glass]),
+            contact: json!({"normal": {"law": "linear", "stiffness": 5e4}}),
+            radius: 2e-3,
+            partner: Partner::Sphere(1e-3),
+            speed: 2.0,
+        },
+        Trial {
+            name: "linear, critical_fraction 0.3, glass 2 mm on a steel wall, 0.5 m/s",
+            materials: json!([glass, steel]),
+            contact: json!({"normal": {"law": "linear", "stiffness": 2e5},
+                            "damping": {"kind": "critical_fraction", "xi": 0.3}}),
+            radius: 2e-3,
+            partner: Partner::Wall,
+            speed: 0.5,
+        },
+        Trial {
+            name: "linear, constant damping e = 0.3, glass 2 mm pair, 0.1 m/s",
+            materials: json!([glass]),
+            contact: json!({"normal": {"law": "linear", "stiffness": 2e5},
+                            "damping": {"kind": "constant", "gamma_n":
+                                LinearCollision::gamma_for_restitution(2e5, 0.5 * glass_mass, 0.3)}}),
+            radius: 2e-3,
+            partner: Partner::Sphere(2e-3),
+            speed: 0.1,
+        },
+        Trial {
+            name: "walton_braun k2 = 4 k1, glass 2 mm on a rigid wall, 1 m/s",
+            materials: json!([glass, rigid]),
+            contact: json!({"normal": {"law": "walton_braun", "loading_stiffness": 1e5,
+                                       "unloading_stiffness": 4e5}}),
+            radius: 2e-3,
+            partner: Partner::Wall,
+            speed: 1.0,
+        },
+        sliding(),
+    ]
+}
+
+/// The sliding impact's head-on part: Hertz steel 1 mm on a steel wall with
+/// Coulomb friction and rotation (friction does not change the normal impact).
+fn sliding() -> Trial {
+    Trial {
+        name: "hertz + coulomb steel 1 mm sliding on a steel wall, v_n = 0.2 m/s",
+        materials: json!([material("steel", 7800.0, 2.0e11, 0.3)]),
+        contact: json!({"normal": {"law": "hertz"},
+                        "tangential": {"law": "coulomb", "friction": FRICTION}}),
+        radius: 1e-3,
+        partner: Partner::Wall,
+        speed: -SLIDING[2],
+    }
+}
+
+pub fn run(_ctx: &CaseContext) -> Result<Vec<Measured>> {
+    let mut out = Vec::new();
+    for (a, label) in ACCURACIES {
+        let mut worst = [0.0f64; 4];
+        for t in trials() {
+            for phase in TOUCH_PHASES {
+                let o = t.run(json!({"accuracy": a}), phase)?;
+                for (w, e) in worst.iter_mut().zip(o.measured.relative_errors(&o.exact)) {
+                    *w = w.max(e);
+                }
+            }
+        }
+        for (q, w) in QUANTITIES.iter().zip(worst) {
+            out.push(Measured::new(&format!("{q}_error_at_{label}"), w, 0.0));
+        }
+        out.push(Measured::new(
+            &format!("sliding_impulse_error_at_{label}"),
+            sliding_impulse_error(a)?,
+            0.0,
+        ));
+    }
+    Ok(out)
+}
+
+/// The sliding impact run obliquely: |Δv_t − μ (1 + e) v_n| / (μ (1 + e) v_n), e = 1.
+fn sliding_impulse_error(accuracy: f64) -> Result<f64> {
+    let t = sliding();
+    let mut worst = 0.0f64;
+    for phase in TOUCH_PHASES {
+        let mut s = t.scene(json!({"accuracy": accuracy}), t.radius * 1e-3);
+        let dt = scene::build(&scene::parse(&s.to_string())?)?.sim.dt;
+        s = t.scene(json!({"accuracy": accuracy}), phase * t.speed * dt);
+        s["particles"][0]["velocity"] = json!(SLIDING);
+        s["rotation"] = json!({});
+        let mut sim = scene::build(&scene::parse(&s.to_string())?)?.sim;
+        let v0 = sim.particles.velocity[0];
+        plane_collision(&mut sim, 0, Vec3::zeros(), Vec3::z(), 10_000_000)?;
+        let limit = FRICTION * 2.0 * -v0.z;
+        let dv = v0.x - sim.particles.velocity[0].x;
+        worst = worst.max(((dv - limit) / limit).abs());
+    }
+    Ok(worst)
+}
