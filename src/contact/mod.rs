@@ -34,6 +34,7 @@ pub mod damping;
 pub mod lammps;
 pub mod model;
 pub mod normal;
+pub mod record;
 pub mod registry;
 pub mod states;
 pub mod tangential;
