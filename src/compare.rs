@@ -523,6 +523,9 @@ pub fn quantities_csv(quantities: &[(String, f64)]) -> String {
 
 /// Header of `trajectory.csv`.
 pub const TRAJECTORY_HEADER: &str = "step,id,radius,x,y,z,vx,vy,vz,omegax,omegay,omegaz";
+/// The columns `output.forces` appends: the particle's total force (contacts, walls and
+/// gravity) and torque at that step. `tamp compare` reads columns by name and ignores them.
+pub const TRAJECTORY_FORCE_COLUMNS: &str = ",fx,fy,fz,tx,ty,tz";
 
 /// One `trajectory.csv` row; full precision (Rust's shortest round-trip form).
 pub fn trajectory_row(out: &mut String, step: u64, id: u64, r: f64, x: &Vec3, v: &Vec3, w: &Vec3) {

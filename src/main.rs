@@ -39,7 +39,7 @@ enum Command {
         #[arg(long)]
         resume: bool,
     },
-    /// Run verification cases and write the report (REPORT/verification.md and .json).
+    /// Run verification cases and write the report (REPORT/verification.md, .html and .json).
     Verify {
         /// quick: about 10 min on 2 cores (CI). full: the papers' scale, many hours
         /// (the NiAl die compaction alone about 2.8 h, each full 2D compaction about

@@ -4,6 +4,7 @@
 //! uninterrupted run writes, byte for byte (see `checkpoint`).
 
 use crate::checkpoint::{self, Checkpoint, SimState};
+use crate::contact::record::ContactRecord;
 use crate::error::{Result, TampError};
 use crate::output::progress::Progress;
 use crate::output::{
@@ -16,6 +17,7 @@ use crate::simulation::Simulation;
 use crate::until::Until;
 use serde::{Deserialize, Serialize};
 use std::borrow::Cow;
+use std::fmt::Write;
 use std::path::Path;
 
 /// What a resumed run needs besides the simulation to write the same files as an
@@ -33,8 +35,9 @@ struct RunState<'a> {
     settled_since: Option<f64>,
 }
 
-/// Append one trajectory.csv row per particle at the current step.
-fn record_trajectory(sim: &Simulation, out: &mut String) {
+/// Append one trajectory.csv row per particle at the current step; `forces` adds the
+/// force and torque columns.
+fn record_trajectory(sim: &Simulation, out: &mut String, forces: bool) {
     let p = &sim.particles;
     for i in 0..p.len() {
         crate::compare::trajectory_row(
@@ -46,12 +49,36 @@ fn record_trajectory(sim: &Simulation, out: &mut String) {
             &p.velocity[i],
             &p.omega[i],
         );
+        if forces {
+            let (f, t) = (p.force[i], p.torque[i]);
+            out.pop(); // the row's newline
+            let _ = writeln!(
+                out,
+                ",{:e},{:e},{:e},{:e},{:e},{:e}",
+                f.x, f.y, f.z, t.x, t.y, t.z
+            );
+        }
     }
 }
 
-fn write_frame(vtk_dir: &Path, index: usize, sim: &Simulation) -> Result<()> {
+fn write_frame(vtk_dir: &Path, index: usize, sim: &Simulation, forces: bool) -> Result<()> {
     let path = vtk_dir.join(format!("frame_{index:06}.vtk"));
-    output::write_atomic(&path, output::vtk::to_ascii(sim)?.as_bytes())
+    output::write_atomic(&path, output::vtk::to_ascii(sim, forces)?.as_bytes())
+}
+
+/// The contact network of the step just taken, as CSV and VTK lines, numbered by
+/// step / contacts_every (so a resumed run rewrites the same names).
+fn write_contacts(
+    dir: &Path,
+    every: u64,
+    sim: &Simulation,
+    records: &[ContactRecord],
+) -> Result<()> {
+    let name = format!("contacts_{:06}", sim.step / every);
+    let csv = output::contacts::to_csv(sim, records);
+    output::write_atomic(&dir.join(format!("{name}.csv")), csv.as_bytes())?;
+    let vtk = output::contacts::to_vtk(sim, records)?;
+    output::write_atomic(&dir.join(format!("{name}.vtk")), vtk.as_bytes())
 }
 
 /// The files a run writes in its `--out` (VTK frames aside, `vtk/`).
@@ -115,6 +142,12 @@ pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool, resume: bool) -
     if vtk_every > 0 {
         output::create_dir(&vtk_dir)?;
     }
+    let forces = scene.output.forces;
+    let contacts_every = scene.output.contacts_every;
+    let contacts_dir = out_dir.join("contacts");
+    if contacts_every > 0 {
+        output::create_dir(&contacts_dir)?;
+    }
     let checkpoint_path = out_dir.join(CHECKPOINT);
     let mut series = Series::new(&scene.output.series, &sim);
     let mut trajectory = String::new();
@@ -154,15 +187,22 @@ pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool, resume: bool) -
         series.record(&sim)?;
         if trajectory_every > 0 {
             trajectory.push_str(crate::compare::TRAJECTORY_HEADER);
+            if forces {
+                trajectory.push_str(crate::compare::TRAJECTORY_FORCE_COLUMNS);
+            }
             trajectory.push('\n');
-            record_trajectory(&sim, &mut trajectory);
+            record_trajectory(&sim, &mut trajectory, forces);
         }
         if vtk_every > 0 {
             // Frames of an earlier run must not mix with this one's. A resumed run
             // keeps them: they are its own, and it rewrites those past the checkpoint.
             output::vtk::remove_frames(&vtk_dir)?;
-            write_frame(&vtk_dir, frames, &sim)?;
+            write_frame(&vtk_dir, frames, &sim, forces)?;
             frames += 1;
+        }
+        if contacts_every > 0 {
+            // Likewise the contact files (a resumed run rewrites those past the checkpoint).
+            output::vtk::remove_numbered(&contacts_dir, "contacts_", &[".csv", ".vtk"])?;
         }
     }
 
@@ -170,7 +210,12 @@ pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool, resume: bool) -
     progress.set(sim.step);
     let mut settled = false;
     while sim.step < built.steps && !settled {
-        sim.step()?;
+        if contacts_every > 0 && (sim.step + 1) % contacts_every == 0 {
+            let records = sim.step_recording_contacts()?;
+            write_contacts(&contacts_dir, contacts_every, &sim, &records)?;
+        } else {
+            sim.step()?;
+        }
         if let Some(u) = &mut until {
             settled = u.settled(&sim);
         }
@@ -179,10 +224,10 @@ pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool, resume: bool) -
             series.record(&sim)?;
         }
         if trajectory_every > 0 && (sim.step % trajectory_every == 0 || last) {
-            record_trajectory(&sim, &mut trajectory);
+            record_trajectory(&sim, &mut trajectory, forces);
         }
         if vtk_every > 0 && sim.step % vtk_every == 0 {
-            write_frame(&vtk_dir, frames, &sim)?;
+            write_frame(&vtk_dir, frames, &sim, forces)?;
             frames += 1;
         }
         let signal = crate::interrupt::received();

@@ -11,10 +11,11 @@
 //! tamp has; a clearly negative D means the integration is adding energy (unstable).
 
 use crate::boundary::{Boundary, shape::ShapeContact};
-use crate::contact::lever_arm::{Lammps, LeverArm, LeverArms, MidOverlap};
+use crate::contact::lever_arm::{Arms, Lammps, LeverArm, LeverArms, MidOverlap};
 use crate::contact::model::{
     CohesionModel, Composed, DampingModel, LawVisitor, NormalModel, StateOf, TangentialModel,
 };
+use crate::contact::record::{ContactRecord, Partner};
 use crate::contact::states::{ContactStates, StateStore};
 use crate::contact::{ContactForce, ContactGeometry, ContactLaw};
 use crate::detect::NeighborList;
@@ -107,11 +108,83 @@ fn carry_facet_states<S: Copy + Default>(states: &mut Vec<(u32, S)>, found: &[Sh
         states.len() == found.len() && states.iter().zip(found).all(|((f, _), c)| *f == c.facet);
     if !same {
         let previous = std::mem::take(states);
-        states.extend(found.iter().map(|c| {
-            let kept = previous.iter().find(|(f, _)| *f == c.facet);
-            (c.facet, kept.map_or_else(S::default, |(_, s)| *s))
-        }));
+        states.extend(
+            found
+                .iter()
+                .map(|c| (c.facet, carried_state(&previous, c.facet))),
+        );
     }
+}
+
+/// The state facet `facet` had last step among one particle's contacts with one wall,
+/// or a fresh one.
+#[inline(always)]
+fn carried_state<S: Copy + Default>(previous: &[(u32, S)], facet: u32) -> S {
+    let kept = previous.iter().find(|(f, _)| *f == facet);
+    kept.map_or_else(S::default, |(_, s)| *s)
+}
+
+/// The particle arrays a contact's geometry reads, as slices of one length.
+struct Bodies<'a> {
+    velocity: &'a [Vec3],
+    omega: &'a [Vec3],
+    radius: &'a [f64],
+    mass: &'a [f64],
+    prescribed: &'a [bool],
+}
+
+/// The geometry of the pair contact i–j at separation d = x_i − x_j (nearest image,
+/// |d| = `dist` > 0, overlap δ = R_i + R_j − |d|), and the lever arms of i and j in
+/// the convention `A`. `ROT`: spins enter the contact velocity.
+#[inline(always)]
+fn pair_geometry<A: LeverArms, const ROT: bool>(
+    b: &Bodies,
+    i: usize,
+    j: usize,
+    d: Vec3,
+    dist: f64,
+    overlap: f64,
+) -> (ContactGeometry, Arms, Arms) {
+    let normal = d / dist;
+    let (arm_i, arm_j) = (A::pair(b.radius[i], overlap), A::pair(b.radius[j], overlap));
+    let mut relative_velocity = b.velocity[i] - b.velocity[j];
+    if ROT {
+        relative_velocity -=
+            b.omega[i].cross(&normal) * arm_i.velocity + b.omega[j].cross(&normal) * arm_j.velocity;
+    }
+    let g = ContactGeometry {
+        normal,
+        overlap,
+        effective_radius: effective_radius(b.radius[i], b.radius[j]),
+        effective_mass: contact_mass(b.mass, b.prescribed, i, j),
+        relative_velocity,
+    };
+    (g, arm_i, arm_j)
+}
+
+/// The geometry of particle i's contact `c` with a wall moving at `wall_velocity`,
+/// and i's lever arms in the convention `A`.
+#[inline(always)]
+fn wall_geometry<A: LeverArms, const ROT: bool>(
+    p: &Particles,
+    i: usize,
+    c: &ShapeContact,
+    wall_velocity: &Vec3,
+) -> (ContactGeometry, Arms) {
+    let (overlap, normal) = (c.overlap, c.normal);
+    let arm = A::wall(p.radius[i], overlap);
+    let mut relative_velocity = p.velocity[i] - wall_velocity;
+    if ROT {
+        relative_velocity -= p.omega[i].cross(&normal) * arm.velocity;
+    }
+    let g = ContactGeometry {
+        normal,
+        overlap,
+        effective_radius: p.radius[i],
+        effective_mass: p.mass[i],
+        relative_velocity,
+    };
+    (g, arm)
 }
 
 /// `Simulation::compute_forces` for the scene's laws and lever-arm convention as types.
@@ -143,6 +216,19 @@ impl LawVisitor for NewStates {
             self.particles,
             self.boundaries,
         ))
+    }
+}
+
+/// `Simulation::contact_records` for the scene's laws as types.
+struct Records<'a, A: LeverArms, const ROT: bool>(&'a Simulation, PhantomData<A>);
+
+impl<A: LeverArms, const ROT: bool> LawVisitor for Records<'_, A, ROT> {
+    type Output = Vec<ContactRecord>;
+    fn visit<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel>(
+        self,
+        law: Composed<N, D, T, C>,
+    ) -> Vec<ContactRecord> {
+        self.0.contact_records_with::<N, D, T, C, A, ROT>(&law)
     }
 }
 
@@ -303,6 +389,21 @@ impl Simulation {
     }
 
     pub fn step(&mut self) -> Result<()> {
+        self.advance(None)
+    }
+
+    /// One step, and the contacts whose forces it applied (pairs and walls). They come
+    /// from `contact_records`, a read-only pass over the contacts made just before the
+    /// step's force loop, so the force loop itself records nothing and a scene that
+    /// asks for no contacts pays nothing for them.
+    pub fn step_recording_contacts(&mut self) -> Result<Vec<ContactRecord>> {
+        let mut records = Vec::new();
+        self.advance(Some(&mut records))?;
+        Ok(records)
+    }
+
+    /// `step`; with `records`, also the contacts of the step (`step_recording_contacts`).
+    fn advance(&mut self, records: Option<&mut Vec<ContactRecord>>) -> Result<()> {
         let dt = self.dt;
         let growing = self.is_growing();
         let gravity = self.active_gravity();
@@ -345,6 +446,9 @@ impl Simulation {
             &self.particles.radius,
             &mut *self.states,
         );
+        if let Some(records) = records {
+            *records = self.contact_records();
+        }
         self.compute_forces()?;
         self.stepping = false;
         // Half kick, the finiteness check and the prescribed particles' power, in
@@ -605,6 +709,13 @@ impl Simulation {
             &prescribed[..n],
         );
         let (force, torque) = (&mut force[..n], &mut torque[..]);
+        let bodies = Bodies {
+            velocity,
+            omega,
+            radius,
+            mass,
+            prescribed,
+        };
         let pairs = &self.neighbors.pairs[..];
         let pair_states: &mut [StateOf<N, T>] = if kept {
             &mut states.pairs[..pairs.len()]
@@ -650,20 +761,8 @@ impl Simulation {
                     self.particles.id[i], self.particles.id[j]
                 )));
             }
-            let normal = d / dist;
-            let (arm_i, arm_j) = (A::pair(radius[i], overlap), A::pair(radius[j], overlap));
-            let mut relative_velocity = velocity[i] - velocity[j];
-            if ROT {
-                relative_velocity -= omega[i].cross(&normal) * arm_i.velocity
-                    + omega[j].cross(&normal) * arm_j.velocity;
-            }
-            let g = ContactGeometry {
-                normal,
-                overlap,
-                effective_radius: effective_radius(radius[i], radius[j]),
-                effective_mass: contact_mass(mass, prescribed, i, j),
-                relative_velocity,
-            };
+            let (g, arm_i, arm_j) = pair_geometry::<A, ROT>(&bodies, i, j, d, dist, overlap);
+            let normal = g.normal;
             let pair = self.pair_table.get(material[i], material[j]);
             let state = if kept {
                 &mut pair_states[k]
@@ -702,29 +801,11 @@ impl Simulation {
                     // step's contacts by facet.
                     carry_facet_states(&mut states.walls[w][i], &found);
                 }
-                for (
-                    c,
-                    &ShapeContact {
-                        facet,
-                        overlap,
-                        normal,
-                    },
-                ) in found.iter().enumerate()
-                {
-                    let ratio = overlap / p.radius[i];
+                for (c, contact) in found.iter().enumerate() {
+                    let (facet, normal) = (contact.facet, contact.normal);
+                    let ratio = contact.overlap / p.radius[i];
                     worst = worst.max(ratio);
-                    let arm = A::wall(p.radius[i], overlap);
-                    let mut relative_velocity = p.velocity[i] - wall.velocity;
-                    if ROT {
-                        relative_velocity -= p.omega[i].cross(&normal) * arm.velocity;
-                    }
-                    let g = ContactGeometry {
-                        normal,
-                        overlap,
-                        effective_radius: p.radius[i],
-                        effective_mass: p.mass[i],
-                        relative_velocity,
-                    };
+                    let (g, arm) = wall_geometry::<A, ROT>(p, i, contact, &wall.velocity);
                     let pair = self.pair_table.get(p.material[i], wall.material);
                     let state = if kept {
                         &mut states.walls[w][i][c].1
@@ -753,6 +834,114 @@ impl Simulation {
         self.scratch = found;
         self.max_overlap_ratio = worst;
         Ok(())
+    }
+
+    /// The contacts the force loop is about to evaluate, with the forces it will apply:
+    /// every pair within reach of the law and every wall contact, each evaluated by the
+    /// same geometry and law code as in `compute_forces_with`, on a copy of its stored
+    /// state, so nothing is advanced. Contacts the force loop will refuse (overlap
+    /// limit, non-finite force) are left out: that loop reports them.
+    fn contact_records(&self) -> Vec<ContactRecord> {
+        let law = self.law;
+        match (self.rotation, law.lever_arm) {
+            (true, LeverArm::MidOverlap) => {
+                law.visit(Records::<MidOverlap, true>(self, PhantomData))
+            }
+            (true, LeverArm::Lammps) => law.visit(Records::<Lammps, true>(self, PhantomData)),
+            (false, _) => law.visit(Records::<MidOverlap, false>(self, PhantomData)),
+        }
+    }
+
+    fn contact_records_with<N, D, T, C, A: LeverArms, const ROT: bool>(
+        &self,
+        law: &Composed<N, D, T, C>,
+    ) -> Vec<ContactRecord>
+    where
+        N: NormalModel,
+        D: DampingModel,
+        T: TangentialModel,
+        C: CohesionModel,
+    {
+        let kept = ContactStates::<StateOf<N, T>>::KEPT;
+        let states = self.states_as::<StateOf<N, T>>();
+        let p = &self.particles;
+        let n = p.len();
+        let bodies = Bodies {
+            velocity: &p.velocity[..n],
+            omega: &p.omega[..n],
+            radius: &p.radius[..n],
+            mass: &p.mass[..n],
+            prescribed: &p.prescribed[..n],
+        };
+        let (dt, max_fraction) = (self.dt, self.limits.max_overlap_fraction);
+        let law_reach = law.cohesion.reach();
+        let image = self.neighbors.space.minimum_image();
+        let mut out = Vec::new();
+        for (k, &(i, j)) in self.neighbors.pairs.iter().enumerate() {
+            let (i, j) = (i as usize, j as usize);
+            let d = image.displacement(&p.position[i], &p.position[j]);
+            let reach = p.radius[i] + p.radius[j];
+            let dist2 = d.norm_squared();
+            if dist2 >= (reach + law_reach).powi(2) || dist2 == 0.0 {
+                continue;
+            }
+            let dist = dist2.sqrt();
+            let overlap = reach - dist;
+            let ratio = overlap / p.radius[i].min(p.radius[j]);
+            let (g, arm_i, _) = pair_geometry::<A, ROT>(&bodies, i, j, d, dist, overlap);
+            let pair = self.pair_table.get(p.material[i], p.material[j]);
+            let mut state = if kept {
+                states.pairs[k]
+            } else {
+                Default::default()
+            };
+            if let Ok((_, f)) = resolve(law, &g, ratio, max_fraction, pair, &mut state, dt) {
+                out.push(ContactRecord {
+                    i,
+                    partner: Partner::Particle(j),
+                    centre: p.position[i],
+                    other_end: p.position[i] - d,
+                    point: p.position[i] - g.normal * arm_i.torque,
+                    normal: g.normal,
+                    normal_force: f.normal,
+                    tangential_force: f.tangential,
+                    overlap,
+                });
+            }
+        }
+        let mut found = Vec::new();
+        for (w, wall) in self.walls.iter().enumerate() {
+            for i in 0..n {
+                found.clear();
+                wall.contacts(&p.position[i], p.radius[i], law_reach, &mut found);
+                for contact in &found {
+                    let ratio = contact.overlap / p.radius[i];
+                    let (g, arm) = wall_geometry::<A, ROT>(p, i, contact, &wall.velocity);
+                    let pair = self.pair_table.get(p.material[i], wall.material);
+                    let mut state = if kept {
+                        carried_state(&states.walls[w][i], contact.facet)
+                    } else {
+                        Default::default()
+                    };
+                    if let Ok((_, f)) = resolve(law, &g, ratio, max_fraction, pair, &mut state, dt)
+                    {
+                        let point = p.position[i] - g.normal * arm.torque;
+                        out.push(ContactRecord {
+                            i,
+                            partner: Partner::Wall(w),
+                            centre: p.position[i],
+                            other_end: point,
+                            point,
+                            normal: g.normal,
+                            normal_force: f.normal,
+                            tangential_force: f.tangential,
+                            overlap: contact.overlap,
+                        });
+                    }
+                }
+            }
+        }
+        out
     }
 
     /// Power the prescribed bodies put into the particles at the current state, W.

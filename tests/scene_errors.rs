@@ -622,3 +622,20 @@ fn a_die_compaction_of_rigid_particles_is_named() {
         ],
     );
 }
+
+#[test]
+fn bad_contact_outputs_are_named() {
+    for (field, value, rule) in [
+        ("contacts_every", json!(-1), "invalid value: integer `-1`"),
+        (
+            "contacts_every",
+            json!(2.5),
+            "invalid type: floating point `2.5`",
+        ),
+        ("forces", json!("yes"), "invalid type: string \"yes\""),
+    ] {
+        let mut s = base();
+        s["output"] = json!({ field: value });
+        expect_input_error(s, &[&format!("output.{field}"), rule]);
+    }
+}

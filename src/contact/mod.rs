@@ -35,6 +35,7 @@ pub mod lammps;
 pub mod lever_arm;
 pub mod model;
 pub mod normal;
+pub mod record;
 pub mod registry;
 pub mod states;
 pub mod tangential;

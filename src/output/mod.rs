@@ -2,6 +2,7 @@
 //! directory and renamed, so a reader never sees a half-written file and an
 //! interrupted run never clobbers a previous result.
 
+pub mod contacts;
 pub mod plot;
 pub mod progress;
 pub mod series;

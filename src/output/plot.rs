@@ -185,12 +185,13 @@ pub fn write_svg(path: &Path, panels: &[Panel]) -> Result<()> {
 
 /// Line segments drawn to scale (equal units on both axes) over the box
 /// [x0, x1] × [y0, y1], with the box outlined: a contact network, one segment per
-/// contact between the centres it joins (Redanz & Fleck 2001 Fig 3).
+/// contact between the centres it joins (Redanz & Fleck 2001 Fig 3), each with its
+/// line width in pixels (a force chain: width by force).
 pub fn write_segments_svg(
     path: &Path,
     title: &str,
     (x0, x1, y0, y1): (f64, f64, f64, f64),
-    segments: &[[(f64, f64); 2]],
+    segments: &[([(f64, f64); 2], u32)],
 ) -> Result<()> {
     let mut svg = String::new();
     {
@@ -224,7 +225,7 @@ pub fn write_segments_svg(
             .draw_series(
                 segments
                     .iter()
-                    .map(|s| PathElement::new(vec![s[0], s[1]], BLUE.stroke_width(1))),
+                    .map(|(s, w)| PathElement::new(vec![s[0], s[1]], BLUE.stroke_width(*w))),
             )
             .map_err(draw_err)?;
         root.present().map_err(draw_err)?;

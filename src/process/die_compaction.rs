@@ -28,6 +28,7 @@
 //!    the forces on punch, floor and die wall are recorded.
 
 use crate::checkpoint::SimState;
+use crate::contact::record::ContactRecord;
 use crate::error::{Result, TampError};
 use crate::generate::rsi::{InsertionBox, Placed};
 use crate::measure::{Region, packing::packing_fraction};
@@ -99,6 +100,11 @@ pub struct Pressing {
     /// Particles whose centre left the die (radially, below the floor or above the
     /// punch face) at some step of the pressing.
     pub escaped: Vec<usize>,
+    /// The contacts of the last step, at the full pressure (the force chains). Not
+    /// checkpointed: a resumed pressing records them again at its last step; empty for
+    /// a pressing read back from a file.
+    #[serde(skip)]
+    pub last_contacts: Vec<ContactRecord>,
 }
 
 /// Where a pressing is, for a restart checkpoint: the records so far and the
@@ -533,6 +539,7 @@ pub fn press(
                 records: Vec::with_capacity(records + 1),
                 steps: 0,
                 escaped: Vec::new(),
+                last_contacts: Vec::new(),
             };
             record(&sim, &mut out)?;
             out
@@ -586,7 +593,13 @@ pub fn press(
         }
         let dt = sim.dt;
         sim.dt = dt.min(due - sim.time);
-        sim.step()?;
+        // The step that lands on the last record time: keep its contacts (a read-only
+        // pass, so the pressing is the same with or without it).
+        if next == records && sim.dt == due - sim.time {
+            out.last_contacts = sim.step_recording_contacts()?;
+        } else {
+            sim.step()?;
+        }
         sim.dt = dt;
         let height = specimen.h0 + sim.walls[punch].displacement.z;
         let p = &sim.particles;

@@ -443,4 +443,12 @@ pub struct OutputSpec {
     /// Steps between restart checkpoints (`checkpoint.json`); 0 writes none.
     #[serde(default)]
     pub checkpoint_every: u64,
+    /// Each particle's force and torque: columns of trajectory.csv, point data of
+    /// VTK frames.
+    #[serde(default)]
+    pub forces: bool,
+    /// Steps between contact-network files (`contacts/contacts_NNNNNN.csv` and
+    /// `.vtk`: pairs and wall contacts with point, normal, forces, overlap); 0 writes none.
+    #[serde(default)]
+    pub contacts_every: u64,
 }

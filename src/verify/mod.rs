@@ -530,6 +530,10 @@ pub fn run_cases(
         &report_dir.join("verification.md"),
         report::markdown(&report).as_bytes(),
     )?;
+    crate::output::write_atomic(
+        &report_dir.join("verification.html"),
+        report::html(&report).as_bytes(),
+    )?;
     let failed = report.cases.iter().filter(|c| !c.status.is_ok()).count();
     let deviating = report
         .cases

@@ -168,12 +168,12 @@ fn write_artefacts(ctx: &CaseContext, samples: &[Sample]) -> Result<()> {
         let _ = writeln!(csv, "{:.12},{:.12},{:.12}", c.x, c.y, r);
     }
     crate::output::write_atomic(&ctx.report_dir.join(format!("{name}.csv")), csv.as_bytes())?;
-    let segments: Vec<[(f64, f64); 2]> = shown
+    let segments: Vec<([(f64, f64); 2], u32)> = shown
         .pairs
         .iter()
         .map(|&(i, j)| {
             let (u, v) = (p.centres[i], p.centres[j]);
-            [(u.x, u.y), (v.x, v.y)]
+            ([(u.x, u.y), (v.x, v.y)], 1)
         })
         .collect();
     write_segments_svg(

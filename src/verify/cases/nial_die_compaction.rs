@@ -292,6 +292,67 @@ fn mpa(points: &[PressRecord], column: fn(&PressRecord) -> f64) -> Vec<(f64, f64
         .collect()
 }
 
+/// The force chains at the full pressure (Zhong 2009 §5 lists them among a DEM
+/// system's views): the contacts of the pressing's last step whose contact point lies
+/// in a slab through the die's axis, |y| < the specimen's mean particle radius, drawn
+/// to scale in the x–z plane from centre to centre (to the contact point for the
+/// walls), each line 1–8 px wide in proportion to its normal force.
+fn write_force_chains(
+    ctx: &CaseContext,
+    scene: &Scene,
+    specimen: &Specimen,
+    pressing: &Pressing,
+) -> Result<()> {
+    let last = pressing
+        .records
+        .last()
+        .ok_or_else(|| TampError::Other("a pressing without records".into()))?;
+    let die_radius = scene
+        .die_compaction
+        .as_ref()
+        .map(|dc| 0.5 * dc.die_diameter)
+        .ok_or_else(|| TampError::Other("the NiAl scene needs die_compaction".into()))?;
+    let n = specimen.particles.len().max(1) as f64;
+    let half_width = specimen.particles.iter().map(|p| p.radius).sum::<f64>() / n;
+    let slice: Vec<_> = pressing
+        .last_contacts
+        .iter()
+        .filter(|c| c.point.y.abs() < half_width)
+        .collect();
+    let largest = slice
+        .iter()
+        .map(|c| c.normal_force.abs())
+        .fold(0.0, f64::max);
+    let um = 1e6;
+    let segments: Vec<([(f64, f64); 2], u32)> = slice
+        .iter()
+        .map(|c| {
+            let width = 1.0 + 7.0 * c.normal_force.abs() / largest.max(f64::MIN_POSITIVE);
+            (
+                [
+                    (c.centre.x * um, c.centre.z * um),
+                    (c.other_end.x * um, c.other_end.z * um),
+                ],
+                width.round() as u32,
+            )
+        })
+        .collect();
+    crate::output::plot::write_segments_svg(
+        &ctx.report_dir
+            .join(format!("{}_force_chains.svg", ctx.spec.name)),
+        &format!(
+            "Force chains at {:.0} MPa: {} contacts with |y| < {:.2} µm (of {}), x–z in µm, width by normal force (largest {:.2e} N)",
+            last.pressure / 1e6,
+            slice.len(),
+            half_width * um,
+            pressing.last_contacts.len(),
+            largest
+        ),
+        (-die_radius * um, die_radius * um, 0.0, last.height * um),
+        &segments,
+    )
+}
+
 fn poured_point() -> Series {
     Series::points(
         "experiment: poured density, Rojek Table 1 (the curve of Fig 5 is not available)",
@@ -339,6 +400,7 @@ pub fn small(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let specimen_stronger = die_compaction::prepare(&stronger, true)?;
 
     write_curves_csv(ctx, &["hertz"], std::slice::from_ref(&pressing))?;
+    write_force_chains(ctx, &scene, &specimen, &pressing)?;
     let name = &ctx.spec.name;
     write_svg(
         &ctx.report_dir.join(format!("{name}.svg")),
