@@ -13,7 +13,7 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 out=$(mkdir -p "${1:-$here}" && cd "${1:-$here}" && pwd)
 tamp=${TAMP:-tamp}
-scene=$here/../../../verification/liggghts_die_compaction_small.scene.json
+scene=${SCENE:-$here/../../../verification/liggghts_die_compaction_small.scene.json}
 rows=$out/.results.csv.tmp
 echo "seed,record,time,height,h0,dt,steps_per_record,tamp_pressure,punch_pressure,floor_pressure,density_specimen,density_rve" > "$rows"
 for seed in ${SEEDS:-1}; do
@@ -51,7 +51,7 @@ for k, row in enumerate(die):
     print(f"{seed},{k},{k * st['interval']!r},{heights[k]!r},{st['h0']!r},{st['dt']!r},{n},{pressures[k]!r},"
           f"{fp / area!r},{-ff / area!r},{row[3]},{row[4]}")
 PY
-  rm -f "$d/dump.liggghts" "$d/particles.data" "$d/measured/trajectory.csv"
+  rm -f "$d/dump.liggghts" "$d/particles.data" "$d/measured/trajectory.csv" "$d/screen.txt"
 done
 mv "$rows" "$out/results.csv"
 cat "$out/results.csv"
