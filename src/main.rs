@@ -109,6 +109,10 @@ enum Command {
         /// (default: the last frame only).
         #[arg(long)]
         average_from: Option<u64>,
+        /// The stroke.json of a die-compaction export: also write die.csv, the
+        /// specimen and RVE densities of every record's frame.
+        #[arg(long, value_name = "FILE")]
+        die_stroke: Option<PathBuf>,
     },
     /// Compare run A with the reference run B (layout: docs/compare.md); exit 1
     /// beyond tolerance.
@@ -302,8 +306,17 @@ fn main() -> ExitCode {
             floor,
             gravity,
             average_from,
+            die_stroke,
         } => {
-            tamp::liggghts::import::run_cli(&file, &out, floor, gravity, average_from).map(|q| {
+            tamp::liggghts::import::run_cli(
+                &file,
+                &out,
+                floor,
+                gravity,
+                average_from,
+                die_stroke.as_deref(),
+            )
+            .map(|q| {
                 for (name, value) in q {
                     println!("{name} = {value:e}");
                 }

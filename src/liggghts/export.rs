@@ -60,9 +60,9 @@ pub struct Exported {
 }
 
 /// The contact model line and its material properties.
-struct ContactModel {
-    pair_style: String,
-    properties: Vec<String>,
+pub(super) struct ContactModel {
+    pub(super) pair_style: String,
+    pub(super) properties: Vec<String>,
 }
 
 /// LIGGGHTS's restitution for the scene's damping, or why there is none.
@@ -271,7 +271,7 @@ pub(crate) fn frame_every(scene: &Scene, steps: u64) -> u64 {
     }
 }
 
-fn refuse_all(list: Vec<(String, String)>) -> TampError {
+pub(super) fn refuse_all(list: Vec<(String, String)>) -> TampError {
     crate::error::cannot_export("LIGGGHTS 3.8", list)
 }
 
@@ -283,6 +283,11 @@ pub fn export_file(
     seed: Option<u64>,
 ) -> Result<Exported> {
     let (scene, sha) = load_with_seed(scene_path, seed)?;
+    if scene.die_compaction.is_some() {
+        // Its particles exist only after tamp's fill and flatten: the pressing is
+        // what is exported, replaying tamp's stroke.
+        return super::die_compaction::export_pressing(&scene, &sha, out_dir);
+    }
     export(&scene, &sha, out_dir, dump_every)
 }
 
@@ -294,7 +299,7 @@ fn axis_of(v: &Vec3) -> Option<usize> {
 const AXES: [&str; 3] = ["x", "y", "z"];
 
 /// `%.17g`-equivalent: Rust's shortest round-trip form.
-fn g(x: f64) -> String {
+pub(super) fn g(x: f64) -> String {
     format!("{x:e}")
 }
 
@@ -346,7 +351,10 @@ fn deck_scene<'a>(
 }
 
 /// The contact model of the deck (after `refusals` came back empty).
-fn contact_model(scene: &Scene, sim: &crate::simulation::Simulation) -> Result<ContactModel> {
+pub(super) fn contact_model(
+    scene: &Scene,
+    sim: &crate::simulation::Simulation,
+) -> Result<ContactModel> {
     let mut properties = Vec::new();
     let per_type = |f: &dyn Fn(&crate::material::Material) -> f64| -> String {
         sim.materials
@@ -443,7 +451,7 @@ fn contact_kinds(sim: &crate::simulation::Simulation) -> Vec<LiggghtsContact> {
     kinds
 }
 
-fn stl(name: &str, triangles: &[[Vec3; 3]]) -> String {
+pub(super) fn stl(name: &str, triangles: &[[Vec3; 3]]) -> String {
     let mut s = format!("solid {name}\n");
     for t in triangles {
         let n = (t[1] - t[0]).cross(&(t[2] - t[0])).normalize();
@@ -491,7 +499,7 @@ fn revolved_triangles(shape: &Revolved) -> Vec<[Vec3; 3]> {
 }
 
 /// A square of half-width `half` in the plane through `point` with normal `normal`.
-fn plane_triangles(point: &Vec3, normal: &Vec3, half: f64) -> Vec<[Vec3; 3]> {
+pub(super) fn plane_triangles(point: &Vec3, normal: &Vec3, half: f64) -> Vec<[Vec3; 3]> {
     let (u, w) = perpendicular_basis(normal);
     let c = |a: f64, b: f64| point + u * (a * half) + w * (b * half);
     vec![
@@ -524,45 +532,23 @@ fn extent(sim: &crate::simulation::Simulation, scene: &Scene) -> (Vec3, Vec3) {
     (lo, hi)
 }
 
-/// Write the deck, the data file and the meshes for `scene` into `out_dir`.
-pub fn export(
-    scene: &Scene,
+/// The data file of `read_data`: the box `bounds`, one atom per particle (type
+/// = material + 1, diameter, density, position) and the velocities and spins.
+pub(super) fn particles_data(
+    sim: &crate::simulation::Simulation,
     sha: &str,
-    out_dir: &Path,
-    dump_every: Option<u64>,
-) -> Result<Exported> {
-    let list = refusals(scene);
-    if !list.is_empty() {
-        return Err(refuse_all(list));
-    }
-    let built = scene::build(scene)?;
-    let sim = built.sim;
-    let model = contact_model(scene, &sim)?;
-    crate::output::create_dir(out_dir)?;
-    let mut files = Vec::new();
-    let mut notes = Vec::new();
+    bounds: &[[f64; 2]; 3],
+) -> String {
     let p = &sim.particles;
     let n_types = sim.materials.len();
-
-    // Box: periodic axes exactly; the others shrink-wrap (`m`) around a start box.
-    let (lo, hi) = extent(&sim, scene);
-    let max_r = p.radius.iter().copied().fold(0.0, f64::max);
-    let margin = (hi - lo).max() * 0.05 + 2.0 * max_r;
-    let periodic = scene.periodic.clone().unwrap_or_default().axes();
-    let mut boundary = Vec::new();
     let mut data = format!(
         "LIGGGHTS data file exported by tamp {} ({}) from scene sha256 {sha}\n\n{} atoms\n{n_types} atom types\n\n",
         crate::VERSION,
         crate::GIT_COMMIT,
         p.len()
     );
-    for a in 0..3 {
-        let (l, h, flag) = match periodic[a] {
-            Some([l, h]) => (l, h, "p"),
-            None => (lo[a] - margin, hi[a] + margin, "m"),
-        };
-        boundary.push(flag);
-        let _ = writeln!(data, "{} {} {}lo {}hi", g(l), g(h), AXES[a], AXES[a]);
+    for (a, [l, h]) in bounds.iter().enumerate() {
+        let _ = writeln!(data, "{} {} {}lo {}hi", g(*l), g(*h), AXES[a], AXES[a]);
     }
     data.push_str("\nAtoms\n\n");
     let density = |i: usize| sim.materials[p.material[i]].particle_density();
@@ -595,17 +581,31 @@ pub fn export(
             g(w.z)
         );
     }
-    crate::output::write_atomic(&out_dir.join("particles.data"), data.as_bytes())?;
-    files.push("particles.data".to_string());
+    data
+}
 
+/// The `dump_modify format` of DUMP_COLUMNS: every number to the last bit.
+pub(super) fn dump_format() -> String {
+    std::iter::once("%d %d")
+        .chain(std::iter::repeat_n("%.17g", 14))
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// The deck up to the walls: header, box, particles, contact model, step, gravity.
+pub(super) fn deck_head(
+    scene: &Scene,
+    sha: &str,
+    sim: &crate::simulation::Simulation,
+    boundary: &[&str],
+    model: &ContactModel,
+) -> String {
     let moduli: Vec<f64> = sim
         .materials
         .iter()
         .filter_map(|m| m.youngs_modulus)
         .collect();
-    let skin = neighbor_skin(scene, &p.radius);
-    let every = dump_every.unwrap_or_else(|| frame_every(scene, built.steps));
-
+    let skin = neighbor_skin(scene, &sim.particles.radius);
     let mut deck = String::new();
     let _ = writeln!(
         deck,
@@ -666,6 +666,50 @@ pub fn export(
             );
         }
     }
+
+    deck
+}
+
+/// Write the deck, the data file and the meshes for `scene` into `out_dir`.
+pub fn export(
+    scene: &Scene,
+    sha: &str,
+    out_dir: &Path,
+    dump_every: Option<u64>,
+) -> Result<Exported> {
+    let list = refusals(scene);
+    if !list.is_empty() {
+        return Err(refuse_all(list));
+    }
+    let built = scene::build(scene)?;
+    let sim = built.sim;
+    let model = contact_model(scene, &sim)?;
+    crate::output::create_dir(out_dir)?;
+    let mut files = Vec::new();
+    let mut notes = Vec::new();
+    let p = &sim.particles;
+
+    // Box: periodic axes exactly; the others shrink-wrap (`m`) around a start box.
+    let (lo, hi) = extent(&sim, scene);
+    let max_r = p.radius.iter().copied().fold(0.0, f64::max);
+    let margin = (hi - lo).max() * 0.05 + 2.0 * max_r;
+    let periodic = scene.periodic.clone().unwrap_or_default().axes();
+    let mut boundary = Vec::new();
+    let mut bounds = [[0.0; 2]; 3];
+    for a in 0..3 {
+        let (l, h, flag) = match periodic[a] {
+            Some([l, h]) => (l, h, "p"),
+            None => (lo[a] - margin, hi[a] + margin, "m"),
+        };
+        boundary.push(flag);
+        bounds[a] = [l, h];
+    }
+    let data = particles_data(&sim, sha, &bounds);
+    crate::output::write_atomic(&out_dir.join("particles.data"), data.as_bytes())?;
+    files.push("particles.data".to_string());
+
+    let every = dump_every.unwrap_or_else(|| frame_every(scene, built.steps));
+    let mut deck = deck_head(scene, sha, &sim, &boundary, &model);
 
     // Walls.
     // Walls take the pair's contact model (fix wall/gran accepts the same keywords).
@@ -778,10 +822,7 @@ pub fn export(
         );
     }
     deck.push_str("fix          integr all nve/sphere\n");
-    let format = std::iter::once("%d %d")
-        .chain(std::iter::repeat_n("%.17g", 14))
-        .collect::<Vec<_>>()
-        .join(" ");
+    let format = dump_format();
     let _ = writeln!(
         deck,
         "dump         dmp all custom {every} dump.liggghts {DUMP_COLUMNS}\ndump_modify  dmp format \"{format}\" sort id"

@@ -120,8 +120,14 @@ pub fn run_cli(
     floor: Option<f64>,
     gravity: Option<f64>,
     average_from: Option<u64>,
+    die_stroke: Option<&Path>,
 ) -> Result<Vec<(String, f64)>> {
     let frames = dump::read(file)?;
+    if let Some(path) = die_stroke {
+        crate::output::create_dir(out_dir)?;
+        let csv = die_densities(&frames, path)?;
+        crate::output::write_atomic(&out_dir.join("die.csv"), csv.as_bytes())?;
+    }
     let mut trajectory = format!("{TRAJECTORY_HEADER}\n");
     for f in &frames {
         for k in 0..f.id.len() {
@@ -166,4 +172,48 @@ pub fn run_cli(
         quantities_csv(&quantities).as_bytes(),
     )?;
     Ok(quantities)
+}
+
+/// `die.csv` of a replayed pressing (`liggghts::die_compaction`): for the frame of
+/// every record, the punch height of the stroke and tamp's specimen and RVE
+/// densities of LIGGGHTS's particles at that height.
+fn die_densities(frames: &[dump::Frame], path: &Path) -> Result<String> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| crate::error::TampError::io(format!("reading {}", path.display()), e))?;
+    let die: super::die_compaction::DieStroke = serde_json::from_str(&text)
+        .map_err(|e| crate::error::TampError::input(path.display().to_string(), e.to_string()))?;
+    let s = &die.stroke;
+    if frames.len() != s.heights.len() + 1 {
+        return Err(crate::error::TampError::input(
+            "--die-stroke",
+            format!(
+                "the dump has {} frames; the stroke needs one per record, {}",
+                frames.len(),
+                s.heights.len() + 1
+            ),
+        ));
+    }
+    let mut csv = String::from("record,step,height,density_specimen,density_rve\n");
+    for (k, f) in frames.iter().enumerate() {
+        if f.step != k as u64 * s.steps_per_record {
+            return Err(crate::error::TampError::input(
+                "--die-stroke",
+                format!(
+                    "frame {k} is step {}, not record {k}'s step {}",
+                    f.step,
+                    k as u64 * s.steps_per_record
+                ),
+            ));
+        }
+        let height = if k == 0 { s.h0 } else { s.heights[k - 1] };
+        let (specimen, rve) = crate::process::die_compaction::densities_in(
+            &f.position,
+            &f.radius,
+            die.die_diameter,
+            die.rve_diameter,
+            height,
+        )?;
+        csv.push_str(&format!("{k},{},{height:e},{specimen:e},{rve:e}\n", f.step));
+    }
+    Ok(csv)
 }

@@ -4,6 +4,7 @@
 //! both codes share, and where they differ, is in docs/liggghts.md.
 
 pub mod crosscheck;
+pub mod die_compaction;
 pub mod dump;
 pub mod export;
 pub mod import;

@@ -244,16 +244,27 @@ pub fn densities(
     dc: &DieCompactionSpec,
     height: f64,
 ) -> Result<(f64, f64)> {
+    densities_in(positions, radii, dc.die_diameter, dc.rve_diameter, height)
+}
+
+/// `densities` for a die and RVE given by their diameters.
+pub fn densities_in(
+    positions: &[Vec3],
+    radii: &[f64],
+    die_diameter: f64,
+    rve_diameter: f64,
+    height: f64,
+) -> Result<(f64, f64)> {
     let space = Space::open();
     let specimen = Region::Cylinder {
         base: Vec3::zeros(),
         axis: Vec3::z(),
-        radius: 0.5 * dc.die_diameter,
+        radius: 0.5 * die_diameter,
         height,
     };
     let rve = Region::Sphere {
         centre: Vec3::new(0.0, 0.0, 0.5 * height),
-        radius: 0.5 * dc.rve_diameter,
+        radius: 0.5 * rve_diameter,
     };
     Ok((
         packing_fraction(positions, radii, &specimen, &space)?,

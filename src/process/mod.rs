@@ -4,3 +4,4 @@
 
 pub mod die_compaction;
 pub mod die_compaction_run;
+pub mod die_replay;

@@ -16,6 +16,7 @@ mod hollomon_constants;
 mod kuwabara_kono_restitution;
 mod lammps_oblique_wall_impact;
 mod lammps_two_sphere;
+mod liggghts_die_compaction_small;
 mod liggghts_inputs;
 mod liggghts_oblique_wall_impact;
 mod liggghts_settled_packing;
@@ -80,6 +81,10 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("yield_surface_2d_quick", yield_surface_2d::run),
     ("yield_surface_2d", yield_surface_2d::run),
     ("liggghts_settled_packing", liggghts_settled_packing::run),
+    (
+        "liggghts_die_compaction_small",
+        liggghts_die_compaction_small::run,
+    ),
     (
         "liggghts_three_sphere_trajectory",
         liggghts_three_sphere_trajectory::run,

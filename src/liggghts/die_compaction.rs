@@ -1,0 +1,180 @@
+//! `tamp export-liggghts` of a die-compaction file: the pressing stage as a
+//! LIGGGHTS-PUBLIC 3.8 deck that replays the punch stroke tamp pressed.
+//!
+//! tamp fills and flattens the specimen (`process::die_compaction::prepare`) and
+//! presses it under the file's pressure ramp (`press`); the deck starts from the
+//! flattened specimen (positions, radii, velocities, spins in `particles.data`) and
+//! moves the punch along the heights tamp recorded (`process::die_replay`), so the
+//! two codes compress the same bed along the same path and the forces they need to
+//! do it compare. Why the stroke is replayed and not the load: LIGGGHTS 3.8 moves a
+//! mesh only kinematically (`fix move/mesh`) or by `mesh/surface/stress/servo`, a
+//! velocity controller v = −v_max (k_p e + k_i ∫e + k_d ė)/|F_target| with no mass;
+//! it accepts a time-dependent target (`target_val v_name`, an equal-style
+//! variable, never zero), but the punch it drives lags the target by what its gains
+//! give, not by tamp's M a, so the pressures at a record would differ by the
+//! controllers and not by the contact physics.
+//!
+//! The deck:
+//! - the die as the primitive `zcylinder` of the die's radius (infinite in
+//!   LIGGGHTS, tamp's ends above the punch: the same while no particle leaves);
+//! - floor and punch as two-triangle STL squares with `fix mesh/surface/stress`,
+//!   whose force vectors (`f_floor[3]`, `f_punch[3]`) thermo prints at every
+//!   record; the punch moved by `fix move/mesh linear/variable` at the speed of
+//!   the stroke's segment, one `run N` per record;
+//! - a frame of every particle at every record (`dump.liggghts`), from which
+//!   `tamp import-liggghts-dump --die-stroke stroke.json` measures the densities;
+//! - `stroke.json`: the stroke, the die and RVE diameters.
+//!   Everything else (contact model, damping, friction, rotation, refusals) is the
+//!   ordinary export's (`export`).
+
+use super::export::{
+    DUMP_COLUMNS, Exported, contact_model, deck_head, dump_format, g, particles_data,
+    plane_triangles, refusals, refuse_all, stl,
+};
+use crate::error::{Result, TampError};
+use crate::particles::Vec3;
+use crate::process::die_compaction;
+use crate::process::die_replay::{self, Stroke};
+use crate::scene::{self, Scene};
+use serde::{Deserialize, Serialize};
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// What `import-liggghts-dump --die-stroke` needs besides the frames.
+#[derive(Debug, Serialize, Deserialize)]
+pub struct DieStroke {
+    pub stroke: Stroke,
+    pub die_diameter: f64,
+    pub rve_diameter: f64,
+}
+
+/// The scene whose pressing LIGGGHTS can replay: `scene` with the moment of inertia
+/// of a solid sphere (`fix nve/sphere` has no other). tamp's fill, flatten and
+/// pressed stroke keep the scene's own factor; both replays use this one.
+pub fn replayed_scene(scene: &Scene) -> Scene {
+    let mut s = scene.clone();
+    if let Some(r) = s.rotation.as_mut() {
+        r.inertia_scale = 1.0;
+    }
+    s
+}
+
+/// Fill, flatten and press `scene` in tamp, then write the replay deck into `out_dir`.
+pub fn export_pressing(scene: &Scene, sha: &str, out_dir: &Path) -> Result<Exported> {
+    let solid = replayed_scene(scene);
+    let list = refusals(&solid);
+    if !list.is_empty() {
+        return Err(refuse_all(list));
+    }
+    let dc = scene
+        .die_compaction
+        .as_ref()
+        .ok_or_else(|| TampError::input("die_compaction", "is required"))?;
+    let specimen = die_compaction::prepare(scene, false)?;
+    let pressing = die_compaction::press(scene, &specimen, false, None, 0, &mut |_| Ok(()))?;
+    let stroke = Stroke::of(&pressing, specimen.h0)?;
+    let replay = die_replay::replay_scene(&solid, &specimen, &stroke)?;
+    let sim = scene::build(&replay)?.sim;
+    let model = contact_model(&replay, &sim)?;
+    crate::output::create_dir(out_dir)?;
+    crate::output::create_dir(&out_dir.join("meshes"))?;
+
+    // A fixed box around the die, its floor and the punch's start.
+    let radius = 0.5 * dc.die_diameter;
+    let max_r = sim.particles.radius.iter().copied().fold(0.0, f64::max);
+    // LIGGGHTS 3.8 refuses a mesh whose coordinates span less than 1e-4 length
+    // units (multi_node_mesh_parallel_I.h, initalSetup): the squares reach past
+    // the die, where no particle goes.
+    let half = (1.1 * radius).max(1e-4);
+    let side = 1.5 * half + 2.0 * max_r;
+    let bounds = [
+        [-side, side],
+        [-side, side],
+        [-2.0 * max_r, specimen.h0 + 2.0 * max_r],
+    ];
+    let data = particles_data(&sim, sha, &bounds);
+    crate::output::write_atomic(&out_dir.join("particles.data"), data.as_bytes())?;
+    let mut files = vec!["in.tamp".to_string(), "particles.data".to_string()];
+    for (name, z, normal) in [("floor", 0.0, 1.0), ("punch", specimen.h0, -1.0)] {
+        let triangles =
+            plane_triangles(&Vec3::new(0.0, 0.0, z), &Vec3::new(0.0, 0.0, normal), half);
+        let file = format!("meshes/{name}.stl");
+        crate::output::write_atomic(&out_dir.join(&file), stl(name, &triangles).as_bytes())?;
+        files.push(file);
+    }
+    let stroke_file = DieStroke {
+        stroke: stroke.clone(),
+        die_diameter: dc.die_diameter,
+        rve_diameter: dc.rve_diameter,
+    };
+    let json = serde_json::to_vec_pretty(&stroke_file).expect("stroke serialises");
+    crate::output::write_atomic(&out_dir.join("stroke.json"), &json)?;
+    files.push("stroke.json".into());
+
+    let mut deck = deck_head(&replay, sha, &sim, &["f", "f", "f"], &model);
+    let wall_type = sim.walls[0].material + 1;
+    let wall = &model.pair_style;
+    let n = stroke.steps_per_record;
+    let format = dump_format();
+    let _ = writeln!(
+        deck,
+        "fix          die all wall/gran {wall} primitive type {wall_type} zcylinder {} 0 0",
+        g(radius)
+    );
+    for name in ["floor", "punch"] {
+        let _ = writeln!(
+            deck,
+            "fix          {name} all mesh/surface/stress file meshes/{name}.stl type {wall_type}"
+        );
+    }
+    let _ = writeln!(
+        deck,
+        "fix          walls all wall/gran {wall} mesh n_meshes 2 meshes floor punch\n\
+         variable     vx equal 0\nvariable     vy equal 0\nvariable     vz equal 0\n\
+         fix          stroke all move/mesh mesh punch linear/variable v_vx v_vy v_vz\n\
+         fix          integr all nve/sphere\n\
+         dump         dmp all custom {n} dump.liggghts {DUMP_COLUMNS}\n\
+         dump_modify  dmp format \"{format}\" sort id\n\
+         # the particles' force on punch and floor (N) and the punch's displacement (m)\n\
+         thermo_style custom step time f_punch[3] f_floor[3] f_punch[9]\n\
+         thermo_modify norm no lost ignore format float %.17g\n\
+         thermo       {n}"
+    );
+    for k in 0..stroke.heights.len() {
+        let _ = writeln!(
+            deck,
+            "# record {}: tamp pressed {} Pa, punch face at {} m\nvariable     vz equal {}\nrun          {n}",
+            k + 1,
+            g(stroke.pressures[k]),
+            g(stroke.heights[k]),
+            g(stroke.speed(k))
+        );
+    }
+    let mut notes = vec![
+        format!(
+            "the punch replays the stroke tamp pressed under the pressure ramp (h0 = {} m, {} records of {} steps of {} s)",
+            g(specimen.h0),
+            stroke.heights.len(),
+            n,
+            g(stroke.dt)
+        ),
+        "the die is LIGGGHTS's infinite zcylinder primitive; floor and punch are STL squares (run LIGGGHTS with its screen output on: 3.8 crashes reading an STL mesh without a screen)".into(),
+    ];
+    if let Some(r) = scene.rotation.as_ref().filter(|r| r.inertia_scale != 1.0) {
+        notes.push(format!(
+            "tamp filled, flattened and pressed with rotation.inertia_scale {}; LIGGGHTS's fix nve/sphere has the solid sphere's only, so the replay uses 1",
+            r.inertia_scale
+        ));
+    }
+    for note in notes.iter().rev() {
+        deck.insert_str(0, &format!("# note: {note}\n"));
+    }
+    crate::output::write_atomic(&out_dir.join("in.tamp"), deck.as_bytes())?;
+    Ok(Exported {
+        particles: sim.particles.len(),
+        steps: n * stroke.heights.len() as u64,
+        dt: stroke.dt,
+        files,
+        notes,
+    })
+}

@@ -1,0 +1,183 @@
+//! The press stage replayed: the punch follows a recorded stroke instead of a load,
+//! so that a peer code without tamp's pressure-loaded punch can press the same
+//! specimen along the same path and the two codes' punch forces can be compared.
+//!
+//! The stroke is the punch face height H_k of a pressing (`die_compaction::press`)
+//! at its records t_k = k t_ramp / n, and the punch moves between records at the
+//! constant speed (H_k − H_{k−1}) / (t_k − t_{k−1}): piecewise linear in time, exact
+//! at every record. The step is fixed, Δt = (t_k − t_{k−1}) / N with N the least
+//! integer that makes Δt no larger than the smallest step the pressing took (its
+//! stiffest bed), so that a record falls on a step in both codes and the same
+//! motion is written once for LIGGGHTS (`fix move/mesh linear/variable`, one `run N`
+//! per record) and once for tamp (a `displacement` motion whose chord over a step is
+//! the segment's speed, `boundary::motion`).
+//!
+//! At each record the replay measures what a pressing does: the particles' force on
+//! punch and floor over the die's cross-section, and the specimen and RVE densities
+//! at the punch height (`die_compaction::densities`).
+
+use super::die_compaction::{self, Pressing, Specimen};
+use crate::error::{Result, TampError};
+use crate::scene::Scene;
+use crate::scene::walls::MotionSpec;
+use serde::{Deserialize, Serialize};
+use std::f64::consts::PI;
+
+/// Index of the punch among the press stage's walls (die, floor, punch).
+const PUNCH: usize = 2;
+const FLOOR: usize = 1;
+
+/// A recorded punch stroke: the heights at equal record intervals.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct Stroke {
+    /// Height of the punch face before the stroke (the specimen's H₀), m.
+    pub h0: f64,
+    /// Time between records, s.
+    pub interval: f64,
+    /// Steps per record interval, and the fixed step interval / steps_per_record.
+    pub steps_per_record: u64,
+    pub dt: f64,
+    /// Punch face height at records 1, 2, …, n, m.
+    pub heights: Vec<f64>,
+    /// The pressure the recorded pressing applied at those records, Pa.
+    pub pressures: Vec<f64>,
+}
+
+impl Stroke {
+    /// The stroke of a pressing, with the step set by the smallest one it took.
+    pub fn of(pressing: &Pressing, h0: f64) -> Result<Stroke> {
+        let r = &pressing.records;
+        if r.len() < 2 {
+            return Err(TampError::Other(
+                "a stroke needs a pressing with at least two records".into(),
+            ));
+        }
+        let interval = r[1].time - r[0].time;
+        let smallest = r[1..].iter().map(|x| x.dt).fold(f64::INFINITY, f64::min);
+        let steps_per_record = (interval / smallest).ceil() as u64;
+        Ok(Stroke {
+            h0,
+            interval,
+            steps_per_record,
+            dt: interval / steps_per_record as f64,
+            heights: r[1..].iter().map(|x| x.height).collect(),
+            pressures: r[1..].iter().map(|x| x.pressure).collect(),
+        })
+    }
+
+    /// Speed of the punch face along z during record interval k (0-based), m/s.
+    pub fn speed(&self, k: usize) -> f64 {
+        let before = if k == 0 { self.h0 } else { self.heights[k - 1] };
+        (self.heights[k] - before) / self.interval
+    }
+
+    /// The displacement of the punch as an expression of t: Σ_k v_k clamp(t − t_k, 0, T).
+    fn displacement(&self) -> String {
+        let terms: Vec<String> = (0..self.heights.len())
+            .map(|k| {
+                format!(
+                    "{:e} * min(max(t - {:e}, 0.0), {:e})",
+                    self.speed(k),
+                    k as f64 * self.interval,
+                    self.interval
+                )
+            })
+            .collect();
+        terms.join(" + ")
+    }
+}
+
+/// One record of a replay.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct ReplayRecord {
+    pub time: f64,
+    /// Punch face height, m.
+    pub height: f64,
+    /// The particles' force on punch and floor along the pressing direction, over
+    /// the die's cross-section, Pa.
+    pub punch_pressure: f64,
+    pub floor_pressure: f64,
+    pub density_specimen: f64,
+    pub density_rve: f64,
+}
+
+/// The press stage with the punch following `stroke` at its fixed step.
+pub fn replay_scene(scene: &Scene, specimen: &Specimen, stroke: &Stroke) -> Result<Scene> {
+    let mut s = die_compaction::press_scene(scene, specimen)?;
+    s.walls[PUNCH].motion = MotionSpec::Displacement {
+        x: "0.0".into(),
+        y: "0.0".into(),
+        z: stroke.displacement(),
+    };
+    s.time_step.fixed = Some(stroke.dt);
+    s.run.duration = Some(stroke.interval * stroke.heights.len() as f64);
+    crate::scene::validate::validate(&s)?;
+    Ok(s)
+}
+
+/// Replay `stroke` on `specimen` under the scene's press law; one record per stroke
+/// record (the first is the specimen before the stroke).
+pub fn replay(scene: &Scene, specimen: &Specimen, stroke: &Stroke) -> Result<Vec<ReplayRecord>> {
+    let dc = scene
+        .die_compaction
+        .as_ref()
+        .ok_or_else(|| TampError::input("die_compaction", "is required by this process"))?;
+    let area = PI * (0.5 * dc.die_diameter).powi(2);
+    let stage = replay_scene(scene, specimen, stroke)?;
+    let mut sim = crate::scene::build(&stage)?.sim;
+    let mut out = Vec::with_capacity(stroke.heights.len() + 1);
+    let mut record = |sim: &crate::simulation::Simulation| -> Result<()> {
+        let height = specimen.h0 + sim.walls[PUNCH].displacement.z;
+        let (density_specimen, density_rve) =
+            die_compaction::densities(&sim.particles.position, &sim.particles.radius, dc, height)?;
+        out.push(ReplayRecord {
+            time: sim.time,
+            height,
+            punch_pressure: sim.wall_force[PUNCH].z / area,
+            floor_pressure: -sim.wall_force[FLOOR].z / area,
+            density_specimen,
+            density_rve,
+        });
+        Ok(())
+    };
+    record(&sim)?;
+    for _ in &stroke.heights {
+        for _ in 0..stroke.steps_per_record {
+            sim.step()?;
+        }
+        record(&sim)?;
+    }
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::expression::Expression;
+
+    #[test]
+    fn the_displacement_passes_through_every_recorded_height() {
+        let stroke = Stroke {
+            h0: 6.0e-5,
+            interval: 4e-6,
+            steps_per_record: 100,
+            dt: 4e-8,
+            heights: vec![5.9e-5, 5.85e-5, 5.83e-5, 5.829e-5],
+            pressures: vec![1e6, 2e6, 3e6, 4e6],
+        };
+        let u = Expression::parse(&stroke.displacement(), &["t"]).unwrap();
+        for (k, h) in stroke.heights.iter().enumerate() {
+            let t = (k + 1) as f64 * stroke.interval;
+            let at = stroke.h0 + u.eval(&[t]).unwrap();
+            assert!((at - h).abs() < 1e-15 * h, "record {k}: {at:e} vs {h:e}");
+            // Halfway through a segment the punch is halfway between its ends.
+            let before = if k == 0 {
+                stroke.h0
+            } else {
+                stroke.heights[k - 1]
+            };
+            let mid = stroke.h0 + u.eval(&[t - 0.5 * stroke.interval]).unwrap();
+            assert!((mid - 0.5 * (before + h)).abs() < 1e-15 * h);
+        }
+    }
+}

@@ -1,0 +1,173 @@
+//! The die compaction of `nial_die_compaction_small` pressed in LIGGGHTS-PUBLIC
+//! 3.8.0 along the stroke tamp pressed (`liggghts::die_compaction`,
+//! `process::die_replay`).
+//!
+//! For each seed recorded in `reference_data/liggghts/<case>/results.csv`, tamp
+//! fills and flattens the specimen (the one the export carried to LIGGGHTS: its
+//! H₀ must equal the recorded one, else the recording is stale) and replays the
+//! recorded stroke with its own force loop; LIGGGHTS replayed the same stroke from
+//! the same specimen. Both codes then move the punch through the same heights, so
+//! what the comparison tests is the force each needs to get there, and what that
+//! force does to the bed:
+//! - at the punch pressures 10, 25 and 50 MPa, each code's own (interpolated
+//!   between records along its punch-pressure curve; beyond the last record,
+//!   extrapolated from the last two), the specimen and RVE densities and, at
+//!   50 MPa, ΔH/H₀;
+//! - at the last record (the same height in both), the punch and floor pressures
+//!   (force over the die's cross-section).
+//!
+//! Each quantity is tamp's value against LIGGGHTS's, averaged over the seeds. The
+//! report gets both codes' curves (`<case>_curves.csv`).
+
+use crate::error::{Result, TampError};
+use crate::process::die_compaction;
+use crate::process::die_replay::{self, ReplayRecord, Stroke};
+use crate::verify::{CaseContext, Measured};
+use serde::Deserialize;
+use std::fmt::Write as _;
+
+/// One record of LIGGGHTS's replay (regenerate.sh joins the thermo output of the
+/// deck and `import-liggghts-dump --die-stroke`'s die.csv).
+#[derive(Debug, Deserialize)]
+struct Row {
+    seed: u64,
+    record: usize,
+    time: f64,
+    height: f64,
+    h0: f64,
+    dt: f64,
+    steps_per_record: u64,
+    tamp_pressure: f64,
+    punch_pressure: f64,
+    floor_pressure: f64,
+    density_specimen: f64,
+    density_rve: f64,
+}
+
+/// The punch pressures the densities are compared at, Pa.
+const PRESSURES: [f64; 3] = [10e6, 25e6, 50e6];
+
+/// `column` where the punch pressure first reaches p, linear between records;
+/// beyond the last record, extrapolated from the last two.
+fn at_pressure(records: &[ReplayRecord], p: f64, column: fn(&ReplayRecord) -> f64) -> f64 {
+    let between = |a: &ReplayRecord, b: &ReplayRecord| {
+        let s = (p - a.punch_pressure) / (b.punch_pressure - a.punch_pressure);
+        column(a) + s * (column(b) - column(a))
+    };
+    records
+        .windows(2)
+        .find(|w| w[0].punch_pressure <= p && p <= w[1].punch_pressure)
+        .map(|w| between(&w[0], &w[1]))
+        .unwrap_or_else(|| {
+            let n = records.len();
+            between(&records[n - 2], &records[n - 1])
+        })
+}
+
+/// The seven compared quantities of one code's replay, by name.
+fn quantities(records: &[ReplayRecord], h0: f64) -> Vec<(String, f64)> {
+    let mut out = Vec::new();
+    for p in PRESSURES {
+        let mpa = p / 1e6;
+        out.push((
+            format!("density_specimen_{mpa}mpa"),
+            at_pressure(records, p, |r| r.density_specimen),
+        ));
+        out.push((
+            format!("density_rve_{mpa}mpa"),
+            at_pressure(records, p, |r| r.density_rve),
+        ));
+    }
+    let h50 = at_pressure(records, PRESSURES[2], |r| r.height);
+    out.push(("height_reduction_50mpa".into(), (h0 - h50) / h0));
+    let last = records.last().expect("a replay has records");
+    out.push(("punch_pressure_last_record".into(), last.punch_pressure));
+    out.push(("floor_pressure_last_record".into(), last.floor_pressure));
+    out
+}
+
+pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
+    let rows: Vec<Row> = ctx.liggghts_results()?;
+    let base = ctx.scene()?;
+    let mut seeds: Vec<u64> = rows.iter().map(|r| r.seed).collect();
+    seeds.dedup();
+    let mut curves = String::from(
+        "code,seed,record,time,height,punch_pressure,floor_pressure,density_specimen,density_rve\n",
+    );
+    let mut tamp_sum: Vec<(String, f64)> = Vec::new();
+    let mut liggghts_sum: Vec<f64> = Vec::new();
+    for &seed in &seeds {
+        let mut mine: Vec<&Row> = rows.iter().filter(|r| r.seed == seed).collect();
+        mine.sort_by_key(|r| r.record);
+        if mine.len() < 3 || mine.iter().enumerate().any(|(k, r)| r.record != k) {
+            return Err(TampError::Other(format!(
+                "results.csv: seed {seed} needs records 0, 1, 2, … in full"
+            )));
+        }
+        let mut scene = base.clone();
+        scene.seed = seed;
+        let specimen = die_compaction::prepare(&scene, true)?;
+        let h0 = mine[0].h0;
+        if (specimen.h0 - h0).abs() > 1e-12 * h0 {
+            return Err(TampError::Other(format!(
+                "results.csv: seed {seed} was recorded for a specimen of H0 = {h0:e} m; tamp now fills one of {:e} m: re-record (regenerate.sh)",
+                specimen.h0
+            )));
+        }
+        let stroke = Stroke {
+            h0,
+            interval: mine[1].time - mine[0].time,
+            steps_per_record: mine[0].steps_per_record,
+            dt: mine[0].dt,
+            heights: mine[1..].iter().map(|r| r.height).collect(),
+            pressures: mine[1..].iter().map(|r| r.tamp_pressure).collect(),
+        };
+        let solid = crate::liggghts::die_compaction::replayed_scene(&scene);
+        let tamp = die_replay::replay(&solid, &specimen, &stroke)?;
+        let liggghts: Vec<ReplayRecord> = mine
+            .iter()
+            .map(|r| ReplayRecord {
+                time: r.time,
+                height: r.height,
+                punch_pressure: r.punch_pressure,
+                floor_pressure: r.floor_pressure,
+                density_specimen: r.density_specimen,
+                density_rve: r.density_rve,
+            })
+            .collect();
+        for (code, records) in [("tamp", &tamp), ("liggghts", &liggghts)] {
+            for (k, r) in records.iter().enumerate() {
+                let _ = writeln!(
+                    curves,
+                    "{code},{seed},{k},{:e},{:e},{:e},{:e},{:e},{:e}",
+                    r.time,
+                    r.height,
+                    r.punch_pressure,
+                    r.floor_pressure,
+                    r.density_specimen,
+                    r.density_rve
+                );
+            }
+        }
+        let (t, l) = (quantities(&tamp, h0), quantities(&liggghts, h0));
+        if tamp_sum.is_empty() {
+            tamp_sum = t.iter().map(|(n, _)| (n.clone(), 0.0)).collect();
+            liggghts_sum = vec![0.0; l.len()];
+        }
+        for (k, ((_, a), (_, b))) in t.iter().zip(&l).enumerate() {
+            tamp_sum[k].1 += a;
+            liggghts_sum[k] += b;
+        }
+    }
+    crate::output::create_dir(&ctx.report_dir)?;
+    crate::output::write_atomic(
+        &ctx.report_dir.join(format!("{}_curves.csv", ctx.spec.name)),
+        curves.as_bytes(),
+    )?;
+    let n = seeds.len() as f64;
+    Ok(tamp_sum
+        .iter()
+        .zip(&liggghts_sum)
+        .map(|((name, a), b)| Measured::new(name, a / n, b / n))
+        .collect())
+}
