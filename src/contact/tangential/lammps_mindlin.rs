@@ -4,9 +4,10 @@
 //! with the stiffness `k = -1` (8G* from the materials: `mix_stiffnessG`,
 //! `mix_stiffnessG_wall`) and no tangential damping (x_γ,t = 0). tamp's notation:
 //! `normal` n from the partner to particle i, v_t the tangential velocity of i's contact
-//! point relative to the partner's (spins included), F_n the total normal force (elastic
-//! + damping). Per step:
+//! point relative to the partner's (spins included), F_n the total normal force,
+//! elastic plus damping. Per step:
 //!
+//! ```text
 //!   a = √(R* δ),  k_a = 8 G* a,  F_s = μ |F_n|            (Fncrit = |F_n,total|)
 //!   rescale variants, if a < a_prev:  h ← h · a / a_prev   (unloading)
 //!   if |h·n| (·k_a for the displacement variants) > 1e-10 F_s:
@@ -16,6 +17,7 @@
 //!   rescale variants: a_prev ← a
 //!   if |F_t| > F_s and |h| ≠ 0:  F_t ← F_t F_s/|F_t|,  h ← F_t (force) or −F_t/k_a
 //!   if |F_t| > F_s and |h| = 0:  F_t ← 0
+//! ```
 //!
 //! So `mindlin` is a linear spring of stiffness 8G*a on the accumulated displacement
 //! (a total-spring law: the force follows a when the overlap changes), `mindlin/force`
