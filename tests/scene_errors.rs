@@ -131,6 +131,28 @@ fn accuracy_is_checked_and_exclusive() {
 }
 
 #[test]
+fn accuracy_refuses_a_walton_braun_unloading_stiffer_than_calibrated() {
+    let mut s = base();
+    s["contact"] = json!({"normal": {"law": "walton_braun", "loading_stiffness": 1e5,
+                                     "unloading_stiffness": 4e5}});
+    s["time_step"] = json!({"accuracy": 1e-3});
+    expect_input_error(
+        s,
+        &[
+            "time_step.accuracy",
+            "unloading_stiffness is 4.000 times the loading_stiffness, above 2",
+        ],
+    );
+    // Without a stated step the default accuracy gives way to alpha = 0.2.
+    let mut s = base();
+    s["contact"] = json!({"normal": {"law": "walton_braun", "loading_stiffness": 1e5,
+                                     "unloading_stiffness": 4e5}});
+    s["time_step"] = json!({});
+    let built = tamp::scene::build(&tamp::scene::parse(&s.to_string()).unwrap());
+    assert!(built.is_ok(), "{:?}", built.err());
+}
+
+#[test]
 fn hertz_accuracy_without_characteristic_velocity_states_its_step() {
     let mut s = base();
     s["time_step"] = json!({"accuracy": 1e-4});

@@ -7,9 +7,10 @@
 //! The step never exceeds the default α = 0.2 times the critical step (Rojek eq 26):
 //! at a loose accuracy, stability and not accuracy sets it.
 
-use super::calibration::DAMPED_RESTITUTION_MIN;
+use super::calibration::{DAMPED_RESTITUTION_MIN, WALTON_BRAUN_RATIO_MAX};
 use super::impact::closed_form;
 use super::model::{ErrorModel, for_law};
+use crate::contact::normal::{NormalLaw, WaltonBraun};
 use crate::material::PairProperties;
 use crate::simulation::Simulation;
 
@@ -62,6 +63,17 @@ pub fn choose(
         return Err(format!(
             "the {} law's contact duration depends on the impact speed, and nothing in the scene moves: give time_step.characteristic_velocity",
             law.normal.name()
+        ));
+    }
+    if let NormalLaw::WaltonBraun(WaltonBraun {
+        loading_stiffness: k1,
+        unloading_stiffness: k2,
+    }) = law.normal
+        && k2 > WALTON_BRAUN_RATIO_MAX * k1
+    {
+        return Err(format!(
+            "the walton_braun unloading_stiffness is {:.3} times the loading_stiffness, above {WALTON_BRAUN_RATIO_MAX}, the largest ratio the error model is calibrated for (docs/accuracy-cost.md); give time_step.alpha or time_step.fixed",
+            k2 / k1
         ));
     }
     let p = &sim.particles;

@@ -14,14 +14,14 @@ use vtkio::model::{
 
 pub const CONTACTS_HEADER: &str = "step,i,j,wall,x,y,z,nx,ny,nz,normal_force,tx,ty,tz,overlap";
 
-/// One row per contact; `i` and `j` are particle index + 1 (as in trajectory.csv), `j`
+/// One row per contact; `i` and `j` are particle ids (as in trajectory.csv), `j`
 /// is empty for a wall contact and `wall` (the wall's name) for a pair.
 pub fn to_csv(sim: &Simulation, records: &[ContactRecord]) -> String {
     let mut out = String::from(CONTACTS_HEADER);
     out.push('\n');
     for r in records {
         let (j, wall) = match r.partner {
-            Partner::Particle(j) => ((j + 1).to_string(), ""),
+            Partner::Particle(j) => (sim.particles.id[j].to_string(), ""),
             Partner::Wall(w) => (String::new(), sim.walls[w].name.as_str()),
         };
         let (x, n, t) = (r.point, r.normal, r.tangential_force);
@@ -29,7 +29,7 @@ pub fn to_csv(sim: &Simulation, records: &[ContactRecord]) -> String {
             out,
             "{},{},{j},{wall},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e}",
             sim.step,
-            r.i + 1,
+            sim.particles.id[r.i],
             x.x,
             x.y,
             x.z,

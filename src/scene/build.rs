@@ -407,7 +407,10 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
             )
         })
     };
-    let (dt_estimate, dt, chosen) = if let Some(a) = accuracy {
+    // The accuracy's step; a default accuracy the scene's laws or motions cannot
+    // serve gives way to alpha, an explicit one is an input error.
+    let mut by_accuracy = None;
+    if let Some(a) = accuracy {
         let (v, said) = match ts.characteristic_velocity {
             Some(v) => (
                 v,
@@ -416,8 +419,15 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
             None => implied().unwrap_or((0.0, "no characteristic velocity: nothing moves".into())),
         };
         let critical = sim.critical_time_step((v > 0.0).then_some(v));
-        let choice = crate::accuracy::step::choose(&sim, a, v, critical)
-            .map_err(|rule| TampError::input("time_step.accuracy", rule))?;
+        match crate::accuracy::step::choose(&sim, a, v, critical) {
+            Ok(choice) => by_accuracy = Some((a, choice, said, critical)),
+            Err(rule) if ts.accuracy.is_none() => notes.push(format!(
+                "time step: the default accuracy {a:e} does not apply ({rule}), so alpha = {DEFAULT_ALPHA} (Rojek eq 26)"
+            )),
+            Err(rule) => return Err(TampError::input("time_step.accuracy", rule)),
+        }
+    }
+    let (dt_estimate, dt, chosen) = if let Some((a, choice, said, critical)) = by_accuracy {
         let dt_estimate = critical.map(|c| ts.alpha() * c);
         (dt_estimate, choice.dt, Some((a, choice, said)))
     } else {
