@@ -56,6 +56,10 @@ enum Command {
         /// Directory of the report, its plots and its CSVs.
         #[arg(long, default_value = "report")]
         report: PathBuf,
+        /// Cases run side by side (default: one per core). Results do not depend on
+        /// it; the wall times in the report do (cores are shared), so time with 1.
+        #[arg(long)]
+        jobs: Option<usize>,
     },
     /// Write a LIGGGHTS 3.8 deck (in.tamp, particles.data, meshes) for SCENE into DIR.
     ExportLiggghts {
@@ -262,7 +266,14 @@ fn main() -> ExitCode {
             cases,
             json,
             report,
-        } => verify::run_cli(tier, &cases, json.as_deref(), &report),
+            jobs,
+        } => verify::run_cli(
+            tier,
+            &cases,
+            json.as_deref(),
+            &report,
+            jobs.unwrap_or_else(verify::default_jobs),
+        ),
         Command::ExportLammps {
             scene,
             out,

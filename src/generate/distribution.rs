@@ -1,6 +1,6 @@
 //! Particle size distributions, all by number (a sample is one particle's radius).
 //!
-//! | variant     | law of r                                         | sampling                        | E[r³]                                          |
+//! | variant     | law of r                                         | sampling                        | E\[r³\]                                          |
 //! |-------------|--------------------------------------------------|---------------------------------|------------------------------------------------|
 //! | `Mono`      | r = R                                            | constant                        | R³                                             |
 //! | `Uniform`   | uniform on [a, b]                                | inverse transform               | (b⁴ − a⁴) / (4 (b − a))                        |
@@ -16,7 +16,7 @@
 //! A linear CDF segment means a uniform density on that radius interval, hence the
 //! tabulated moment is a sum of uniform-segment moments.
 //!
-//! Mean volume is (4π/3) E[r³]; number-weighted, as a generator needs it to turn a
+//! Mean volume is (4π/3) E\[r³\]; number-weighted, as a generator needs it to turn a
 //! target solid volume into a particle count.
 
 use rand::RngExt;
@@ -310,7 +310,7 @@ impl SizeDistribution {
         self.radius_range().1
     }
 
-    /// Number-weighted mean particle volume (4π/3) E[r³].
+    /// Number-weighted mean particle volume (4π/3) E\[r³\].
     pub fn mean_volume(&self) -> f64 {
         4.0 / 3.0 * std::f64::consts::PI * self.mean_radius_cubed()
     }
@@ -379,7 +379,7 @@ fn log_normal_kept_probability(median: f64, sigma: f64, min: Option<f64>, max: O
     normal_probability(lo, hi)
 }
 
-/// E[r³] for r uniform on [a, b]; the limit a³ when the interval is empty.
+/// E\[r³\] for r uniform on [a, b]; the limit a³ when the interval is empty.
 fn uniform_third_moment(a: f64, b: f64) -> f64 {
     if b > a {
         (b.powi(4) - a.powi(4)) / (4.0 * (b - a))

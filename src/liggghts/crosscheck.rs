@@ -177,7 +177,7 @@ pub fn run_cli(
         ));
     }
     if !live {
-        return verify::run_cases(tier, &names, None, report_dir, None);
+        return verify::run_cases(tier, &names, None, report_dir, None, verify::default_jobs());
     }
     for peer in peers {
         if names.iter().any(|n| peer_of(n) == Some(*peer)) {
@@ -232,7 +232,14 @@ pub fn run_cli(
             "{name}: fresh {peer} results vs recorded: largest relative difference {drift:e} ({verdict}, tolerance {DRIFT_TOLERANCE:e})"
         );
     }
-    let code = verify::run_cases(tier, &names, None, report_dir, Some(&live_root))?;
+    let code = verify::run_cases(
+        tier,
+        &names,
+        None,
+        report_dir,
+        Some(&live_root),
+        verify::default_jobs(),
+    )?;
     if drifted > 0 {
         eprintln!(
             "{drifted} case(s) drifted from the recorded peer results: re-record them (regenerate.sh) and say why"

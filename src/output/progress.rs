@@ -16,6 +16,14 @@ pub fn set_quiet(quiet: bool) {
     QUIET.store(quiet, Ordering::Relaxed);
 }
 
+/// Log lines even on a terminal: set while several runs share stderr (`tamp verify`
+/// running cases side by side), whose bars would overwrite each other.
+static LINES_ONLY: AtomicBool = AtomicBool::new(false);
+
+pub fn set_lines_only(lines_only: bool) {
+    LINES_ONLY.store(lines_only, Ordering::Relaxed);
+}
+
 const LOG_EVERY: Duration = Duration::from_secs(60);
 
 pub struct Progress {
@@ -42,7 +50,7 @@ impl Progress {
             .expect("static template"),
         );
         bar.set_prefix(stage.to_string());
-        let terminal = std::io::stderr().is_terminal();
+        let terminal = std::io::stderr().is_terminal() && !LINES_ONLY.load(Ordering::Relaxed);
         Progress {
             bar,
             stage: stage.to_string(),

@@ -8,6 +8,7 @@
 //! present on one side only is an error of the case, never silently skipped.
 
 pub mod cases;
+pub mod parallel;
 pub mod report;
 
 use crate::error::{Result, TampError};
@@ -66,7 +67,19 @@ pub struct CaseSpec {
     /// Scene file relative to `verification/`.
     #[serde(default)]
     pub scene: Option<String>,
+    /// The scenario of a case whose runs are not one scene (box width, seeds, the
+    /// runs on each deposit): read by the case with `CaseContext::parameters`.
+    #[serde(default)]
+    pub parameters: Option<serde_json::Value>,
     pub quantities: Vec<QuantitySpec>,
+}
+
+impl CaseSpec {
+    /// Whether the case file lists the quantity `name` (a case that can measure
+    /// more than one tier needs measures only what its file asks for).
+    pub fn asks_for(&self, name: &str) -> bool {
+        self.quantities.iter().any(|q| q.name == name)
+    }
 }
 
 /// What a case function returns for one quantity.
@@ -150,6 +163,21 @@ impl Variant {
 }
 
 impl CaseContext<'_> {
+    /// The case file's `parameters`, as the case's own type; an absent or wrong field
+    /// is an input error naming `parameters.<path>` in the case file.
+    pub fn parameters<T: serde::de::DeserializeOwned>(&self) -> Result<T> {
+        let file = format!("verification/{}.json", self.spec.name);
+        let value = self.spec.parameters.clone().ok_or_else(|| {
+            TampError::input(format!("{file}: parameters"), "required by this case")
+        })?;
+        serde_path_to_error::deserialize(value).map_err(|e| {
+            TampError::input(
+                format!("{file}: parameters.{}", e.path()),
+                e.inner().to_string(),
+            )
+        })
+    }
+
     /// `reference_data/` beside the verification directory: results recorded by
     /// other codes (LIGGGHTS), with their decks, logs and provenance.
     pub fn reference_data_dir(&self) -> PathBuf {
@@ -469,8 +497,19 @@ fn case_plots(report_dir: &Path, case: &str, since: std::time::SystemTime) -> Ve
 
 /// `tamp verify`: returns the exit code (0 when every case passes or deviates only
 /// where `docs/` records it, 1 otherwise).
-pub fn run_cli(tier: Tier, names: &[String], json: Option<&Path>, report_dir: &Path) -> Result<u8> {
-    run_cases(tier, names, json, report_dir, None)
+pub fn run_cli(
+    tier: Tier,
+    names: &[String],
+    json: Option<&Path>,
+    report_dir: &Path,
+    jobs: usize,
+) -> Result<u8> {
+    run_cases(tier, names, json, report_dir, None, jobs)
+}
+
+/// The number of cases `tamp verify` runs at once unless told: one per core.
+pub fn default_jobs() -> usize {
+    std::thread::available_parallelism().map_or(1, |n| n.get())
 }
 
 /// `run_cli` with `reference_data/` replaced by `reference_data` when given.
@@ -480,6 +519,7 @@ pub fn run_cases(
     json: Option<&Path>,
     report_dir: &Path,
     reference_data: Option<&Path>,
+    jobs: usize,
 ) -> Result<u8> {
     let dir = verification_dir();
     let specs = load_specs(&dir)?;
@@ -499,12 +539,15 @@ pub fn run_cases(
         })
         .collect();
     crate::output::create_dir(report_dir)?;
-    let mut results = Vec::new();
-    for spec in selected {
-        eprint!("{:<32} ", spec.name);
+    // Each case builds its scenes from its own seeds and writes only files named after
+    // itself, so what it measures does not depend on what runs beside it; only its
+    // wall_s does (cores are shared). Bars would overwrite each other: log lines.
+    crate::output::progress::set_lines_only(jobs > 1);
+    let results = parallel::map(&selected, jobs, |spec| {
         let r = run_case(spec, &dir, report_dir, reference_data, Variant::default());
         eprintln!(
-            "{:?} ({:.2} s){}",
+            "{:<32} {:?} ({:.2} s){}",
+            spec.name,
             r.status,
             r.wall_s,
             r.error
@@ -512,8 +555,9 @@ pub fn run_cases(
                 .map(|e| format!(": {e}"))
                 .unwrap_or_default()
         );
-        results.push(r);
-    }
+        r
+    });
+    crate::output::progress::set_lines_only(false);
     let report = VerificationReport {
         tamp_version: crate::VERSION.to_string(),
         git_commit: crate::GIT_COMMIT.to_string(),
@@ -588,6 +632,44 @@ mod tests {
         // A NaN is a broken measurement, whatever the record says.
         assert_eq!(judged(record, f64::NAN), Status::Fail);
         assert!(Status::KnownDeviation.is_ok() && !Status::UnexpectedPass.is_ok());
+    }
+
+    #[test]
+    fn case_parameters_are_read_as_the_case_s_type_and_a_wrong_one_names_its_path() {
+        #[derive(Deserialize, Debug)]
+        #[serde(deny_unknown_fields)]
+        #[allow(dead_code)]
+        struct Scenario {
+            box_width_radii: f64,
+            seeds: Vec<u64>,
+        }
+        let read = |parameters: &str| {
+            let spec: CaseSpec = serde_json::from_str(&format!(
+                r#"{{"name": "c", "tier": "quick", "description": "d", {parameters}
+                    "quantities": []}}"#
+            ))
+            .unwrap();
+            let ctx = CaseContext {
+                spec: &spec,
+                dir: PathBuf::new(),
+                report_dir: PathBuf::new(),
+                reference_data: None,
+                variant: Variant::default(),
+            };
+            ctx.parameters::<Scenario>().map_err(|e| e.to_string())
+        };
+        let ok = read(r#""parameters": {"box_width_radii": 20, "seeds": [1, 2]},"#).unwrap();
+        assert_eq!((ok.box_width_radii, ok.seeds), (20.0, vec![1, 2]));
+        let bad = read(r#""parameters": {"box_width_radii": 20, "seeds": [1, "two"]},"#);
+        assert!(
+            bad.unwrap_err()
+                .contains("verification/c.json: parameters.seeds[1]")
+        );
+        let absent = read("").unwrap_err();
+        assert!(
+            absent.contains("verification/c.json: parameters"),
+            "{absent}"
+        );
     }
 
     #[test]

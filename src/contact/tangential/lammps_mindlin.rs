@@ -100,7 +100,7 @@ pub struct LammpsMindlin {
 
 /// The history h (a displacement in m, or a force in N for the force variants) and,
 /// for the rescale variants, the contact radius a of the last update (LAMMPS's
-/// history[3]), m.
+/// `history[3]`), m.
 #[derive(Clone, Copy, Debug, Default, PartialEq, serde::Deserialize, serde::Serialize)]
 pub struct MindlinHistory {
     pub history: Vec3,

@@ -25,7 +25,7 @@
 //!
 //! The two frictionless quantities are means over the deposits of seeds 1, 2 and 3
 //! (each die run over the affine run on its own deposit): where a frictionless network
-//! jams is a draw, not a property of the packing law (`MORE_SEEDS_FULL`). The
+//! jams is a draw, not a property of the packing law (the case file's `parameters`). The
 //! other quantities are seed 1's. The plots draw seed 1's runs; the CSV carries
 //! every run.
 //!
@@ -35,7 +35,7 @@
 //! on the box: friction raises the stress (`frictionless_over_sticking_stress` < 1),
 //! sticking is comparable to affine (`sticking_over_affine_stress`), and Z drops by
 //! at most 0.5 from sticking to frictionless (`coordination_drop_frictionless`).
-//! Each is taken over the deposits of seeds 1–16 (`MORE_SEEDS_QUICK`), on which the
+//! Each is taken over the deposits of seeds 1–16 (the case file's `parameters`), on which the
 //! μ = 0, sticking and affine sticking runs are repeated: the ordering as its largest
 //! ratio (it holds on every deposit), the others as means, since a bound on every
 //! network bounds their mean. Seed 1 alone passed all three; over sixteen deposits
@@ -76,19 +76,24 @@ use std::sync::Arc;
 /// The window over which the stress and Z at the target are averaged.
 const WINDOW: f64 = 0.84;
 
-/// A frictionless network jams where its path leads it, so one deposit is one draw:
-/// at W = 80R the hydrostatic onset ranged from D = 0.823 to beyond 0.85 over three
-/// deposits and two tolerances, and at W = 20R the frictionless network of 9 of 24
-/// deposits had not consolidated by D = 0.85 (docs/verification-notes.md). The
-/// quantities that involve it are therefore taken over several deposits: seed 1, whose
-/// six runs are drawn, and these, with the runs the quantities need.
-const MORE_SEEDS_QUICK: std::ops::RangeInclusive<u64> = 2..=16;
-const MORE_SEEDS_FULL: std::ops::RangeInclusive<u64> = 2..=3;
-/// On further deposits: the quick tier's quantities set the frictionless and the
-/// affine runs against the sticking one; at W = 80R a sticking run costs up to 40
-/// minutes, and the full tier averages only the frictionless quantities.
-const MORE_VARIANTS_QUICK: [&str; 3] = ["affine sticking", "mu = 0", "sticking"];
-const MORE_VARIANTS_FULL: [&str; 2] = ["affine", "mu = 0"];
+/// The scenario, from the case file's `parameters`. A frictionless network jams where
+/// its path leads it, so one deposit is one draw: at W = 80R the hydrostatic onset
+/// ranged from D = 0.823 to beyond 0.85 over three deposits and two tolerances, and at
+/// W = 20R the frictionless network of 9 of 24 deposits had not consolidated by
+/// D = 0.85 (docs/verification-notes.md). The quantities that involve it are
+/// therefore taken over several deposits: seed 1's, whose six runs are drawn, and
+/// `further_seeds`', on which only `variants_on_further_seeds` run (the quick tier
+/// sets the frictionless and the affine runs against the sticking one; at W = 80R a
+/// sticking run costs up to 40 minutes, and the full tier averages only the
+/// frictionless quantities).
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Parameters {
+    /// The box width W in mean radii R.
+    box_width_radii: f64,
+    further_seeds: Vec<u64>,
+    variants_on_further_seeds: Vec<String>,
+}
 
 struct Run {
     name: String,
@@ -112,8 +117,8 @@ pub fn closed_die(ctx: &CaseContext) -> Result<Vec<Measured>> {
 }
 
 fn run(ctx: &CaseContext, path: StrainPath) -> Result<Vec<Measured>> {
-    let quick = ctx.spec.name.ends_with("_quick");
-    let width = if quick { 20.0 } else { 80.0 };
+    let parameters: Parameters = ctx.parameters()?;
+    let width = parameters.box_width_radii;
     let variants: [(&'static str, Friction, bool, Constraint); 6] = [
         ("affine", Friction::Frictionless, true, Constraint::Affine),
         (
@@ -132,11 +137,24 @@ fn run(ctx: &CaseContext, path: StrainPath) -> Result<Vec<Measured>> {
             Constraint::Die,
         ),
     ];
-    let (more_seeds, more_variants): (_, &[&str]) = if quick {
-        (MORE_SEEDS_QUICK, &MORE_VARIANTS_QUICK)
-    } else {
-        (MORE_SEEDS_FULL, &MORE_VARIANTS_FULL)
-    };
+    let more_variants: &[&str] = &parameters
+        .variants_on_further_seeds
+        .iter()
+        .map(String::as_str)
+        .collect::<Vec<_>>();
+    if let Some(unknown) = more_variants
+        .iter()
+        .find(|v| !variants.iter().any(|(name, ..)| name == *v))
+    {
+        return Err(crate::error::TampError::input(
+            format!(
+                "verification/{}.json: parameters.variants_on_further_seeds",
+                ctx.spec.name
+            ),
+            format!("'{unknown}' is not one of this case's runs"),
+        ));
+    }
+    let more_seeds = parameters.further_seeds.iter().copied();
     let seeds: Vec<u64> = std::iter::once(SEED).chain(more_seeds.clone()).collect();
     let seeded = variants
         .iter()
@@ -216,79 +234,86 @@ fn run(ctx: &CaseContext, path: StrainPath) -> Result<Vec<Measured>> {
         .iter()
         .map(|r| r.deviation.normal.max(r.deviation.tangential))
         .fold(0.0, f64::max);
-    let mut measured = if quick {
-        // The ordering holds for every deposit, so the largest ratio is checked; the
-        // comparisons the paper states as sizes are means over the deposits.
-        vec![
-            Measured::new(
-                "frictionless_over_sticking_stress",
-                largest(over_seeds(&["mu = 0", "sticking"], &|s| {
-                    at_seed("mu = 0", s, stress) / at_seed("sticking", s, stress)
-                })),
-                1.0,
-            ),
-            Measured::new(
-                "sticking_over_affine_stress",
-                mean(over_seeds(&["sticking", "affine sticking"], &|s| {
-                    at_seed("sticking", s, stress) / at_seed("affine sticking", s, stress)
-                })),
-                1.0,
-            ),
-            Measured::new(
-                "coordination_drop_frictionless",
-                mean(over_seeds(&["sticking", "mu = 0"], &|s| {
-                    at_seed("sticking", s, z) - at_seed("mu = 0", s, z)
-                })),
-                0.5,
-            ),
-            Measured::new("equilibrium_gap_sticking", gap, 0.0),
-            Measured::new("affine_run_deviation", affine_deviation, 0.0),
-            Measured::new("unconverged_increments_near_target", unconverged, 0.0),
-        ]
-    } else {
-        // §3.2: under hydrostatic straining Z stays near the affine 4.1 whatever the
-        // friction; in closed die it drops to about 3.5 (frictionless) to 3.0 (sticking).
-        let coordination = match path {
-            StrainPath::Hydrostatic => (4.1, 4.1),
-            StrainPath::ClosedDie => (3.5, 3.0),
-        };
-        // Each frictionless die run over the affine run on its own deposit.
-        vec![
-            Measured::new(
-                "frictionless_over_affine_stress",
-                mean(over_seeds(&["mu = 0", "affine"], &|s| {
-                    at_seed("mu = 0", s, stress) / at_seed("affine", s, stress)
-                })),
-                0.5,
-            ),
-            Measured::new(
-                "sticking_over_affine_stress",
-                at_target("sticking", stress) / affine_sticking,
-                1.0,
-            ),
-            Measured::new(
-                "coordination_frictionless",
-                mean(over_seeds(&["mu = 0"], &|s| at_seed("mu = 0", s, z))),
-                coordination.0,
-            ),
-            Measured::new(
-                "coordination_sticking",
-                at_target("sticking", z),
-                coordination.1,
-            ),
-            Measured::new("equilibrium_gap_sticking", gap, 0.0),
-            Measured::new("affine_run_deviation", affine_deviation, 0.0),
-            Measured::new("unconverged_increments_near_target", unconverged, 0.0),
-        ]
+    // §3.2: under hydrostatic straining Z stays near the affine 4.1 whatever the
+    // friction; in closed die it drops to about 3.5 (frictionless) to 3.0 (sticking).
+    let coordination = match path {
+        StrainPath::Hydrostatic => (4.1, 4.1),
+        StrainPath::ClosedDie => (3.5, 3.0),
     };
-    if path == StrainPath::Hydrostatic {
+    // Every quantity either tier states, each a (value, reference) computed only when
+    // the case file asks for it (a tier runs only the runs its quantities need). An
+    // ordering that holds on every deposit is checked on its largest ratio; the
+    // comparisons the paper states as sizes are means over the deposits that ran
+    // both runs (seed 1 alone where the further deposits did not).
+    type Quantity<'a> = (&'static str, Box<dyn Fn() -> (f64, f64) + 'a>);
+    let quantities: Vec<Quantity> = vec![
+        (
+            "frictionless_over_sticking_stress",
+            Box::new(|| {
+                let ratios = over_seeds(&["mu = 0", "sticking"], &|s| {
+                    at_seed("mu = 0", s, stress) / at_seed("sticking", s, stress)
+                });
+                (largest(ratios), 1.0)
+            }),
+        ),
+        (
+            "sticking_over_affine_stress",
+            Box::new(|| {
+                let ratios = over_seeds(&["sticking", "affine sticking"], &|s| {
+                    at_seed("sticking", s, stress) / at_seed("affine sticking", s, stress)
+                });
+                (mean(ratios), 1.0)
+            }),
+        ),
+        (
+            "frictionless_over_affine_stress",
+            Box::new(|| {
+                let ratios = over_seeds(&["mu = 0", "affine"], &|s| {
+                    at_seed("mu = 0", s, stress) / at_seed("affine", s, stress)
+                });
+                (mean(ratios), 0.5)
+            }),
+        ),
+        (
+            "coordination_drop_frictionless",
+            Box::new(|| {
+                let drops = over_seeds(&["sticking", "mu = 0"], &|s| {
+                    at_seed("sticking", s, z) - at_seed("mu = 0", s, z)
+                });
+                (mean(drops), 0.5)
+            }),
+        ),
+        (
+            "coordination_frictionless",
+            Box::new(|| {
+                let zs = over_seeds(&["mu = 0"], &|s| at_seed("mu = 0", s, z));
+                (mean(zs), coordination.0)
+            }),
+        ),
+        (
+            "coordination_sticking",
+            Box::new(|| (at_target("sticking", z), coordination.1)),
+        ),
+        ("equilibrium_gap_sticking", Box::new(|| (gap, 0.0))),
+        ("affine_run_deviation", Box::new(|| (affine_deviation, 0.0))),
+        (
+            "unconverged_increments_near_target",
+            Box::new(|| (unconverged, 0.0)),
+        ),
         // §3.1: hydrostatic affine straining gives no slip, so friction cannot act.
-        measured.push(Measured::new(
+        (
             "affine_friction_effect",
-            (affine_sticking - affine).abs() / affine.abs(),
-            0.0,
-        ));
-    }
+            Box::new(|| ((affine_sticking - affine).abs() / affine.abs(), 0.0)),
+        ),
+    ];
+    let measured = quantities
+        .into_iter()
+        .filter(|(name, _)| ctx.spec.asks_for(name))
+        .map(|(name, value)| {
+            let (value, reference) = value();
+            Measured::new(name, value, reference)
+        })
+        .collect();
     Ok(measured)
 }
 

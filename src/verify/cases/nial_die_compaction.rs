@@ -38,12 +38,10 @@ use crate::error::{Result, TampError};
 use crate::output::plot::{Panel, Series, write_svg};
 use crate::process::die_compaction::{self, PressRecord, PressState, Pressing, Specimen};
 use crate::scene::schema::{HollomonSpec, Scene};
-use crate::verify::{CaseContext, Measured};
+use crate::verify::{CaseContext, Measured, parallel};
 use serde::{Deserialize, Serialize, de::DeserializeOwned};
 use std::f64::consts::PI;
 use std::path::PathBuf;
-use std::sync::Mutex;
-use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// Rojek 2016 Table 1: the mean relative bulk density of the poured powder.
 const POURED_DENSITY: f64 = 0.650;
@@ -178,7 +176,7 @@ impl Store {
     }
 }
 
-/// Press one specimen under several models, on up to `threads` threads, reusing
+/// Press one specimen under several models, one per core at a time, reusing
 /// and checkpointing work in `store`.
 fn press_all(
     scene: &Scene,
@@ -186,12 +184,6 @@ fn press_all(
     models: &[Model],
     store: &Store,
 ) -> Result<Vec<Done>> {
-    let threads = std::thread::available_parallelism()
-        .map_or(1, |n| n.get())
-        .min(models.len());
-    let next = AtomicUsize::new(0);
-    let results: Mutex<Vec<Option<Result<Done>>>> =
-        Mutex::new((0..models.len()).map(|_| None).collect());
     let press_one = |model: &Model| -> Result<Done> {
         let s = with_model(scene, model)?;
         let key = sha_of(&s);
@@ -230,27 +222,10 @@ fn press_all(
         );
         Ok(done)
     };
-    std::thread::scope(|scope| {
-        for _ in 0..threads {
-            scope.spawn(|| {
-                loop {
-                    let k = next.fetch_add(1, Ordering::SeqCst);
-                    let Some(model) = models.get(k) else { break };
-                    let outcome = press_one(model);
-                    results.lock().expect("no thread panics holding it")[k] = Some(outcome);
-                }
-            });
-        }
-    });
-    results
-        .into_inner()
-        .expect("no thread panicked")
+    parallel::map(models, crate::verify::default_jobs(), press_one)
         .into_iter()
         .zip(models)
-        .map(|(r, m)| {
-            r.expect("every model ran")
-                .map_err(|e| TampError::Other(format!("pressing '{}': {e}", m.label)))
-        })
+        .map(|(r, m)| r.map_err(|e| TampError::Other(format!("pressing '{}': {e}", m.label))))
         .collect()
 }
 

@@ -2,7 +2,7 @@
 //!
 //! Scene: the polydispersed deposits of `ballistic_deposition_2d` (r uniform in
 //! [0.9R, 1.1R], σ_y = 1), seed 1's at W = 80R (full tier) or those of seeds 1–16 at
-//! W = 20R (quick tier, `SEEDS_QUICK`), compacted to
+//! W = 20R (quick tier; the case file's `parameters`), compacted to
 //! D = 0.85 along the hydrostatic and the closed die path in increments of 1e-3 of
 //! the box area, three ways: affine (frictionless), and die compaction with μ = 0 and
 //! with sticking contacts. Each compacted network is unloaded elastically and
@@ -137,18 +137,33 @@ struct Probed {
     affine_error: f64,
 }
 
-/// The quick tier probes sixteen deposits: where a frictionless network has
-/// consolidated by D = 0.85 is a draw, and at W = 20R 9 of 24 deposits' had not
-/// (docs/verification-notes.md), so one deposit's surface says little. At W = 80R a
-/// deposit's surfaces take about two hours, and the full tier probes seed 1's.
-const SEEDS_QUICK: std::ops::RangeInclusive<u64> = 1..=16;
+/// The scenario, from the case file's `parameters`. The quick tier probes sixteen
+/// deposits: where a frictionless network has consolidated by D = 0.85 is a draw, and
+/// at W = 20R 9 of 24 deposits' had not (docs/verification-notes.md), so one deposit's
+/// surface says little. At W = 80R a deposit's surfaces take about two hours, and the
+/// full tier probes seed 1's.
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Parameters {
+    /// The box width W in mean radii R.
+    box_width_radii: f64,
+    /// The deposits probed; seed 1's surfaces are drawn and its affine construction
+    /// checked, so it must be one of them.
+    seeds: Vec<u64>,
+}
 
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
-    let quick = ctx.spec.name.ends_with("_quick");
-    let width = if quick { 20.0 } else { 80.0 };
-    let seeds = if quick { SEEDS_QUICK } else { SEED..=SEED };
+    let parameters: Parameters = ctx.parameters()?;
+    let width = parameters.box_width_radii;
+    let seeds = parameters.seeds;
+    if !seeds.contains(&SEED) {
+        return Err(crate::error::TampError::input(
+            format!("verification/{}.json: parameters.seeds", ctx.spec.name),
+            format!("must include seed {SEED}, whose surfaces are drawn"),
+        ));
+    }
     let mut probed = Probed::default();
-    for seed in seeds.clone() {
+    for &seed in &seeds {
         for path in [StrainPath::Hydrostatic, StrainPath::ClosedDie] {
             if let Err(e) = probe_path(ctx, width, seed, path, &mut probed) {
                 // The surfaces finished before the failure are a result too (at W = 80R
@@ -173,11 +188,11 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     };
     // The mean over the deposits of the mean of the two paths' ratios.
     let ratio = |a: &str, b: &str| {
-        let per_seed = seeds.clone().map(|seed| {
+        let per_seed = seeds.iter().map(|&seed| {
             0.5 * (size(seed, StrainPath::Hydrostatic, a) / size(seed, StrainPath::Hydrostatic, b)
                 + size(seed, StrainPath::ClosedDie, a) / size(seed, StrainPath::ClosedDie, b))
         });
-        per_seed.sum::<f64>() / seeds.clone().count() as f64
+        per_seed.sum::<f64>() / seeds.len() as f64
     };
     Ok(vec![
         Measured::new(
