@@ -1,13 +1,15 @@
-//! Cross-check against LIGGGHTS 3.8.0, trajectory by trajectory: three spheres in a
+//! Cross-check against LIGGGHTS 3.8.0 (`liggghts_three_sphere_trajectory`) or LAMMPS
+//! 22 Jul 2025 (`lammps_three_sphere_trajectory`, tangential `mindlin` as tamp's
+//! `lammps_mindlin`, LAMMPS's lever arms), trajectory by trajectory: three spheres in a
 //! chain of off-centre impacts (hertz, restitution damping, tangential history with
 //! friction, rotation), so that the normal, damping, tangential and torque terms all
 //! act, in 3D, and every contact happens once: the trajectories depend smoothly on
 //! the data (no chaos), so two codes running the same algorithm must agree to
 //! round-off at every step.
 //!
-//! The deck is the one `tamp export-liggghts` writes for this case's scene
-//! (reference_data/liggghts/run_exported.sh); the LIGGGHTS dump, converted to tamp's
-//! run layout, is `reference_data/liggghts/<case>/trajectory.csv`. The case refuses
+//! The deck is the one `tamp export-liggghts` / `tamp export-lammps` writes for this
+//! case's scene (reference_data/<peer>/run_exported.sh); the peer's dump, converted to
+//! tamp's run layout, is `reference_data/<peer>/<case>/trajectory.csv`. The case refuses
 //! to compare when the recorded deck was exported from another version of the scene
 //! (the scene's SHA-256 is in the deck's header). Deviations are measured as
 //! `tamp compare` measures them (docs/compare.md): position in units of the particle
@@ -20,10 +22,10 @@ use crate::verify::{CaseContext, Measured};
 use std::collections::BTreeMap;
 
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
-    let recorded = ctx
-        .reference_data_dir()
-        .join("liggghts")
-        .join(&ctx.spec.name);
+    // The peer is the case name's prefix: `liggghts_` or `lammps_` (both dumps are
+    // converted by `import-liggghts-dump`, reference_data/<peer>/run_exported.sh).
+    let peer = ctx.spec.name.split('_').next().unwrap_or_default();
+    let recorded = ctx.reference_data_dir().join(peer).join(&ctx.spec.name);
     let scene_file = ctx
         .spec
         .scene
@@ -54,7 +56,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     }
     if mine.trajectory.len() != reference.trajectory.len() {
         return Err(TampError::Other(format!(
-            "tamp recorded {} (step, particle) rows, LIGGGHTS {}: the runs do not cover the same steps",
+            "tamp recorded {} (step, particle) rows, {peer} {}: the runs do not cover the same steps",
             mine.trajectory.len(),
             reference.trajectory.len()
         )));

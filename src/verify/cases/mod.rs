@@ -108,6 +108,10 @@ pub const CASES: &[(&str, CaseFn)] = &[
         "lammps_oblique_wall_impact_mindlin",
         lammps_oblique_wall_impact::run,
     ),
+    (
+        "lammps_three_sphere_trajectory",
+        liggghts_three_sphere_trajectory::run,
+    ),
 ];
 
 pub fn find(name: &str) -> Option<CaseFn> {
