@@ -28,6 +28,8 @@ pub struct BuiltScene {
     /// How the step was chosen, when tamp chose it from an accuracy or an implied
     /// characteristic velocity: printed to stderr by `tamp run`.
     pub notes: Vec<String>,
+    /// What `time_step.accuracy` (stated or the default) chose, when it set the step.
+    pub accuracy: Option<crate::accuracy::step::Choice>,
 }
 
 pub(super) fn v3(a: &[f64; 3]) -> Vec3 {
@@ -474,7 +476,8 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
         (None, Some(d)) => (d / dt).ceil() as u64,
         (None, None) => unreachable!("validated"),
     };
-    if let Some((a, choice, said)) = chosen {
+    if let Some((a, choice, said)) = &chosen {
+        let (a, choice) = (*a, *choice);
         let bodies = sim.particles.len() + sim.sources.iter().map(|s| s.remaining).sum::<usize>();
         notes.push(format!(
             "time step: accuracy {a:e}{} ({} error model): dt = {:.4e} s, {:.1} steps per contact (shortest contact {:.4e} s; {said}){}; predicted cost {steps} steps, about {:.2e} s of wall time ({bodies} particles at {:.1e} s per particle-step)",
@@ -501,6 +504,7 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
         steps,
         warnings,
         notes,
+        accuracy: chosen.map(|(_, choice, _)| choice),
     })
 }
 

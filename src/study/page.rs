@@ -78,6 +78,8 @@ fn fixed(x: Option<f64>, digits: usize) -> String {
 
 /// What one case's sweep says, for the summary table.
 struct Finding {
+    /// The step sweep, coarsest first, for the inverse table.
+    points: Vec<super::accuracy_inverse::Point>,
     setting_alpha: Option<f64>,
     setting_dt: Option<f64>,
     recommended: Option<Recommended>,
@@ -270,7 +272,18 @@ fn case_section(page: &mut String, img_dir: &Path, case: &str, rows: &[Row]) -> 
         )?;
         let _ = writeln!(page, "![{case}](img/accuracy-cost/{file})\n");
     }
+    let points = step_runs
+        .iter()
+        .filter_map(|r| {
+            Some(super::accuracy_inverse::Point {
+                dt: r.first().dt?,
+                wall_s: r.first().wall_s,
+                error: super::accuracy_inverse::relative_error(&r.rows),
+            })
+        })
+        .collect();
     Ok(Finding {
+        points,
         setting_alpha: setting.and_then(|s| s.first().alpha),
         setting_dt: setting.and_then(|s| s.first().dt),
         recommended,
@@ -311,6 +324,21 @@ run of a cheap case is repeated for at least 0.2 s and the mean is shown); compa
 rows with each other, not with another machine.
 ";
 
+/// Each verification case's scene, by case name (those that load).
+fn case_scenes() -> Vec<(String, crate::scene::schema::Scene)> {
+    let dir = crate::verify::verification_dir();
+    let Ok(specs) = crate::verify::load_specs(&dir) else {
+        return Vec::new();
+    };
+    specs
+        .into_iter()
+        .filter_map(|s| {
+            let scene = crate::scene::load(&dir.join(s.scene.as_deref()?)).ok()?.0;
+            Some((s.name, scene))
+        })
+        .collect()
+}
+
 pub fn write(out: &Path) -> Result<()> {
     let data_dir = out.join("accuracy-cost");
     let img_dir = out.join("img").join("accuracy-cost");
@@ -330,6 +358,8 @@ pub fn write(out: &Path) -> Result<()> {
             calibration = read_csv(f)?;
         } else if f.file_stem().is_some_and(|s| s == "stable_alpha") {
             stable = read_csv(f)?;
+        } else if f.file_stem().is_some_and(|s| s == "accuracy_inverse") {
+            // written below from the case files
         } else if f.file_stem().is_some_and(|s| s == "die_compaction") {
             die = read_csv(f)?;
         } else {
@@ -342,8 +372,16 @@ pub fn write(out: &Path) -> Result<()> {
     let mut summary = String::from(
         "| case | case's step (α) | cheapest step within tolerance (α) | wall-time gain | observed order |\n|---|---|---|---|---|\n",
     );
+    let scenes = case_scenes();
+    let mut inverse = Vec::new();
+    let mut plots = Vec::new();
     for (case, rows) in &by_case {
         let f = case_section(&mut body, &img_dir, case, rows)?;
+        let scene = scenes.iter().find(|(n, _)| n == case).map(|(_, s)| s);
+        inverse.extend(super::accuracy_inverse::rows(case, &f.points, scene));
+        if let Some(series) = super::accuracy_inverse::panel_series(&f.points, scene) {
+            plots.push((case.clone(), series));
+        }
         let _ = writeln!(
             summary,
             "| [{case}](#{case}) | {} ({}) | {} | {} | {} |",
@@ -377,6 +415,12 @@ pub fn write(out: &Path) -> Result<()> {
         page.push_str(&super::die_compaction::section(&die));
     }
     let _ = writeln!(page, "## Summary per case\n\n{summary}");
+    if !inverse.is_empty() {
+        super::write_csv(&data_dir.join("accuracy_inverse.csv"), &inverse)?;
+        page.push_str(&super::accuracy_inverse::section(
+            &inverse, &plots, &img_dir,
+        )?);
+    }
     let _ = writeln!(page, "## Per case\n\n{body}");
     crate::output::write_atomic(&out.join("accuracy-cost.md"), page.as_bytes())
 }
