@@ -18,9 +18,11 @@
 //!   arms (`contact.lever_arm` = `lammps`).
 //! - `limit_damping` is not written: off, as tamp's damping (the force may pull).
 //! - Fixed planes normal to an axis are `fix wall/gran granular` with the pair model and
-//!   the wall material's E and ν (`xplane lo NULL` or `NULL hi`); LAMMPS gives the wall
-//!   and the sphere that one material, so particles of another one are refused. Other
-//!   walls, cohesion, growth and scheduled insertion are refused.
+//!   the wall material's E and ν (`xplane lo NULL` or `NULL hi`), a fixed closed box one
+//!   such fix per axis (`xplane lo hi`, `wall_fixes`); LAMMPS gives the wall and the
+//!   sphere that one material, so particles of another one are refused. Other walls
+//!   (open boxes and cylinders included, `wall_fixes` says why), cohesion, growth and
+//!   scheduled insertion are refused.
 //! - Dumps at `%.17g`, sorted by id: every `dump_every` steps to `dump.lammps`, the
 //!   final state to `final.lammps`; `tamp compare` and `import-liggghts-dump` read them.
 
@@ -144,8 +146,14 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
             );
         }
     }
+    let periodic = scene
+        .periodic
+        .clone()
+        .unwrap_or_default()
+        .axes()
+        .map(|a| a.is_some());
     for (k, w) in scene.walls.iter().enumerate() {
-        if let Err(why) = plane_wall(w) {
+        if let Err(why) = wall_fixes(w, periodic) {
             refuse(format!("walls[{k}]"), why);
         }
         if !matches!(w.motion, MotionSpec::Fixed) {
@@ -207,22 +215,65 @@ fn mu_of(scene: &Scene) -> f64 {
         .map_or(0.0, |t| t.friction)
 }
 
-/// The `fix wall/gran` geometry of a wall: an axis-aligned plane is `<axis>plane lo
-/// NULL` (normal +axis: the particles above `lo`) or `<axis>plane NULL hi` (normal
-/// −axis). Other shapes are refused.
-fn plane_wall(w: &WallSpec) -> std::result::Result<String, &'static str> {
-    let ShapeSpec::Plane { point, normal } = &w.shape else {
-        return Err("only plane walls are exported to LAMMPS (fix wall/gran xplane/yplane/zplane)");
-    };
-    let n = Vec3::from(*normal);
-    let Some(a) = (0..3).find(|&a| n[a].abs() == n.norm() && n.norm() > 0.0) else {
-        return Err("fix wall/gran planes are normal to x, y or z");
-    };
-    Ok(if n[a] > 0.0 {
-        format!("{}plane {} NULL", AXES[a], g(point[a]))
-    } else {
-        format!("{}plane NULL {}", AXES[a], g(point[a]))
-    })
+/// The `fix wall/gran` geometries of a fixed wall, one fix each, as (fix-id suffix,
+/// geometry):
+/// - an axis-aligned plane is `<axis>plane lo NULL` (normal +axis: the particles above
+///   `lo`) or `<axis>plane NULL hi` (normal −axis);
+/// - a closed box is one `<axis>plane lo hi` per axis. LAMMPS gives a particle the one
+///   contact with the nearer of lo and hi, tamp one per face it touches: the same while
+///   no particle spans the box (checked in `export`, which knows the radii); inside the
+///   box every face acts as its infinite plane in both codes.
+///
+/// Refused: an open box (tamp ends its side faces at a rounded rim, LAMMPS's planes are
+/// infinite); a cylinder (LAMMPS's `zcylinder` gives the contact the effective radius
+/// R·r_w/(R + r_w) with r_w = −2 R_c, granular_model.cpp `check_contact` and
+/// fix_wall_gran.cpp, where tamp's walls take R: a different Hertz stiffness); a
+/// wall on a periodic axis (LAMMPS: "Cannot use wall in periodic dimension"); every
+/// other shape.
+fn wall_fixes(
+    w: &WallSpec,
+    periodic: [bool; 3],
+) -> std::result::Result<Vec<(String, String)>, &'static str> {
+    let on_periodic = "LAMMPS's fix wall/gran cannot stand on a periodic axis (\"Cannot use wall in periodic dimension\")";
+    match &w.shape {
+        ShapeSpec::Plane { point, normal } => {
+            let n = Vec3::from(*normal);
+            let Some(a) = (0..3).find(|&a| n[a].abs() == n.norm() && n.norm() > 0.0) else {
+                return Err("fix wall/gran planes are normal to x, y or z");
+            };
+            if periodic[a] {
+                return Err(on_periodic);
+            }
+            let geometry = if n[a] > 0.0 {
+                format!("{}plane {} NULL", AXES[a], g(point[a]))
+            } else {
+                format!("{}plane NULL {}", AXES[a], g(point[a]))
+            };
+            Ok(vec![(String::new(), geometry)])
+        }
+        ShapeSpec::Box { lower, upper, open } => {
+            if !open.is_empty() {
+                return Err(
+                    "an open box is not exported to LAMMPS: tamp ends its side faces at a rounded rim, fix wall/gran's planes are infinite; use plane walls",
+                );
+            }
+            if periodic.iter().any(|&p| p) {
+                return Err(on_periodic);
+            }
+            Ok((0..3)
+                .map(|a| {
+                    let geometry = format!("{}plane {} {}", AXES[a], g(lower[a]), g(upper[a]));
+                    (AXES[a].to_string(), geometry)
+                })
+                .collect())
+        }
+        ShapeSpec::Cylinder { .. } => Err(
+            "LAMMPS's fix wall/gran zcylinder gives the contact the effective radius R r_w/(R + r_w) with r_w = -2 R_c (a curved wall); tamp's cylinder contact takes R, as a flat wall: a different Hertz stiffness",
+        ),
+        _ => Err(
+            "only plane walls and closed boxes are exported to LAMMPS (fix wall/gran xplane/yplane/zplane)",
+        ),
+    }
 }
 
 fn refuse_all(list: Vec<(String, String)>) -> TampError {
@@ -254,8 +305,30 @@ pub fn export(
     let model = pair_model(scene).map_err(refuse_all)?;
     let built = scene::build(scene)?;
     let sim = built.sim;
-    crate::output::create_dir(out_dir)?;
     let p = &sim.particles;
+    // A particle spanning a box touches both faces of an axis in tamp, only the nearer
+    // in LAMMPS (wall_fixes).
+    let diameter = 2.0 * p.radius.iter().copied().fold(0.0, f64::max);
+    let narrow: Vec<(String, String)> = scene
+        .walls
+        .iter()
+        .enumerate()
+        .filter_map(|(k, w)| match &w.shape {
+            ShapeSpec::Box { lower, upper, .. }
+                if (0..3).any(|a| upper[a] - lower[a] <= diameter) =>
+            {
+                Some((
+                    format!("walls[{k}].shape"),
+                    "a box no wider than a particle: LAMMPS's fix wall/gran gives a particle only the nearer of two opposite faces".to_string(),
+                ))
+            }
+            _ => None,
+        })
+        .collect();
+    if !narrow.is_empty() {
+        return Err(refuse_all(narrow));
+    }
+    crate::output::create_dir(out_dir)?;
     let n_types = sim.materials.len();
 
     // Box: periodic axes exactly; the others shrink-wrap with a minimum (`m`) around
@@ -377,11 +450,14 @@ pub fn export(
             .replace("{E}", &g(m.youngs_modulus.unwrap_or(0.0)))
             .replace("{nu}", &g(m.poisson_ratio.unwrap_or(0.0)))
             .replace("{mu}", &g(mu_of(scene)));
-        let geometry = plane_wall(w).expect("refusals checked the wall");
-        let _ = writeln!(
-            deck,
-            "fix          wall{k} all wall/gran granular {line} {geometry}"
-        );
+        for (suffix, geometry) in
+            wall_fixes(w, periodic.map(|a| a.is_some())).expect("refusals checked the wall")
+        {
+            let _ = writeln!(
+                deck,
+                "fix          wall{k}{suffix} all wall/gran granular {line} {geometry}"
+            );
+        }
     }
     deck.push_str("fix          integr all nve/sphere\n");
     let format = std::iter::once("%d %d")
@@ -497,12 +573,56 @@ mod tests {
                                            {"material": "steel", "shape": {"kind": "plane", "point": [0.02, 0, 0], "normal": [-1, 0, 0]}}]"#,
         );
         assert!(refusals(&s).is_empty(), "{:?}", refusals(&s));
-        assert_eq!(plane_wall(&s.walls[0]).unwrap(), "zplane -1e-2 NULL");
-        assert_eq!(plane_wall(&s.walls[1]).unwrap(), "xplane NULL 2e-2");
+        let geometry = |k: usize| wall_fixes(&s.walls[k], [false; 3]).unwrap();
+        assert_eq!(geometry(0), [(String::new(), "zplane -1e-2 NULL".into())]);
+        assert_eq!(geometry(1), [(String::new(), "xplane NULL 2e-2".into())]);
         assert_eq!(
             pair_model(&s).unwrap(),
             "hertz/material {E} 0e0 {nu} damping velocity tangential mindlin_rescale/force -1 0 {mu}"
         );
+    }
+
+    #[test]
+    fn a_closed_box_is_three_planes_and_open_boxes_and_cylinders_are_refused() {
+        let with_wall = |shape: &str| {
+            two_spheres(
+                r#"{"normal": {"law": "hertz"}}"#,
+                &format!(r#", "walls": [{{"material": "steel", "shape": {shape}}}]"#),
+            )
+        };
+        let closed = with_wall(
+            r#"{"kind": "box", "lower": [-0.01, -0.01, -0.01], "upper": [0.01, 0.01, 0.02]}"#,
+        );
+        assert!(refusals(&closed).is_empty(), "{:?}", refusals(&closed));
+        let fixes = wall_fixes(&closed.walls[0], [false; 3]).unwrap();
+        assert_eq!(
+            fixes.iter().map(|(_, g)| g.as_str()).collect::<Vec<_>>(),
+            [
+                "xplane -1e-2 1e-2",
+                "yplane -1e-2 1e-2",
+                "zplane -1e-2 2e-2"
+            ]
+        );
+        for shape in [
+            r#"{"kind": "box", "lower": [-0.01, -0.01, -0.01], "upper": [0.01, 0.01, 0.02], "open": ["+z"]}"#,
+            r#"{"kind": "cylinder", "origin": [0, 0, -0.01], "axis": [0, 0, 1], "radius": 0.01, "bottom": 0, "top": 0.03}"#,
+        ] {
+            let paths: Vec<String> = refusals(&with_wall(shape))
+                .into_iter()
+                .map(|(p, _)| p)
+                .collect();
+            assert_eq!(paths, ["walls[0]"], "{shape}");
+        }
+        let narrow = with_wall(
+            r#"{"kind": "box", "lower": [-0.01, -0.0015, -0.01], "upper": [0.01, 0.0005, 0.02]}"#,
+        );
+        let dir = std::env::temp_dir().join(format!("tamp-lammps-narrow-{}", std::process::id()));
+        let err = export(&narrow, "sha", &dir, None).unwrap_err().to_string();
+        assert!(
+            err.contains("walls[0].shape: cannot export to LAMMPS"),
+            "{err}"
+        );
+        assert!(!dir.exists());
     }
 
     #[test]

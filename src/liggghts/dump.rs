@@ -209,7 +209,15 @@ pub fn parse(text: &str, path: &Path) -> Result<Vec<Frame>> {
                 force: opt3(frc)?,
             });
         }
+        // Ranks write their own atoms one after the other, each in its own order.
         rows.sort_by_key(|a| a.id);
+        if let Some(w) = rows.windows(2).find(|w| w[0].id == w[1].id) {
+            return Err(bad(
+                path,
+                k + 9,
+                format!("atom id {} appears twice in this frame", w[0].id),
+            ));
+        }
         for a in rows {
             frame.id.push(a.id);
             frame.atom_type.push(a.atom_type);
@@ -250,6 +258,35 @@ mod tests {
         assert_eq!(f.space().periodic[1], Some((0.0, 2.0)));
         assert_eq!(frames[1].step, 10);
         assert_eq!(frames[1].radius, vec![0.2]);
+    }
+
+    /// Written by LAMMPS 22 Jul 2025 on 2 MPI ranks (`mpiexec -n 2`, `dump custom`
+    /// without `sort id`): rank 0 (x < 2) writes ids 2 and 4, then rank 1 ids 1 and 3.
+    const TWO_RANKS: &str = "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n4\nITEM: BOX BOUNDS pp pp ff\n0.0000000000000000e+00 4.0000000000000000e+00\n0.0000000000000000e+00 1.0000000000000000e+00\n0.0000000000000000e+00 1.0000000000000000e+00\nITEM: ATOMS id type radius mass x y z vx vy vz\n2 1 0.25 65.4498 0.5 0.5 0.5 0.1 0 0\n4 1 0.25 65.4498 1.5 0.75 0.25 0.1 0 0\n1 1 0.25 65.4498 3.5 0.5 0.5 0.1 0 0\n3 1 0.25 65.4498 2.5 0.25 0.75 0.1 0 0\n";
+
+    #[test]
+    fn a_dump_written_by_two_mpi_ranks_is_read_in_id_order() {
+        let f = &parse(TWO_RANKS, Path::new("t")).unwrap()[0];
+        assert_eq!(f.id, vec![1, 2, 3, 4]);
+        let x: Vec<[f64; 3]> = f.position.iter().map(|p| [p.x, p.y, p.z]).collect();
+        assert_eq!(
+            x,
+            [
+                [3.5, 0.5, 0.5],
+                [0.5, 0.5, 0.5],
+                [2.5, 0.25, 0.75],
+                [1.5, 0.75, 0.25]
+            ]
+        );
+        assert_eq!(f.periodic, [true, true, false]);
+    }
+
+    #[test]
+    fn an_atom_twice_in_a_frame_is_refused() {
+        let text = TWO_RANKS.replace("\n3 1 0.25", "\n2 1 0.25");
+        let err = parse(&text, Path::new("d")).unwrap_err();
+        assert!(err.to_string().contains("atom id 2 appears twice"), "{err}");
+        assert_eq!(err.exit_code(), 2);
     }
 
     #[test]

@@ -19,7 +19,6 @@ mod lammps_two_sphere;
 mod liggghts_die_compaction_small;
 mod liggghts_inputs;
 mod liggghts_oblique_wall_impact;
-mod liggghts_settled_packing;
 mod liggghts_three_sphere_trajectory;
 mod liggghts_two_sphere;
 mod liggghts_two_sphere_oblique;
@@ -30,6 +29,7 @@ pub mod probe;
 mod restitution_laws;
 mod rojek_models;
 mod scott_random_packing;
+mod settled_packing;
 mod sliding_oblique_impact;
 mod storakers_unloading;
 mod thornton_restitution;
@@ -80,7 +80,7 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("closed_die_compaction_2d", compaction_2d::closed_die),
     ("yield_surface_2d_quick", yield_surface_2d::run),
     ("yield_surface_2d", yield_surface_2d::run),
-    ("liggghts_settled_packing", liggghts_settled_packing::run),
+    ("liggghts_settled_packing", settled_packing::liggghts),
     (
         "liggghts_die_compaction_small",
         liggghts_die_compaction_small::run,
@@ -112,6 +112,7 @@ pub const CASES: &[(&str, CaseFn)] = &[
         "lammps_three_sphere_trajectory",
         liggghts_three_sphere_trajectory::run,
     ),
+    ("lammps_settled_packing", settled_packing::lammps),
 ];
 
 pub fn find(name: &str) -> Option<CaseFn> {

@@ -1,8 +1,11 @@
-//! Cross-check against LIGGGHTS 3.8.0 on a many-body scene, statistically: 2000
-//! spheres placed at random in a laterally periodic column fall onto a floor and
-//! settle (hertz, restitution damping, tangential history, rotation). For each seed
-//! both codes start from the same particles (tamp places them; the deck
-//! `tamp export-liggghts --seed S` writes carries them to LIGGGHTS), but a pile of
+//! Cross-check against a peer code on a many-body scene, statistically: 2000 spheres
+//! placed at random in a laterally periodic column fall onto a floor and settle
+//! (hertz, restitution damping, friction, rotation). Two cases share this code:
+//! `liggghts_settled_packing` (LIGGGHTS 3.8.0, tangential history) and
+//! `lammps_settled_packing` (LAMMPS 22 Jul 2025, `pair granular` mindlin with
+//! LAMMPS's lever arms, tamp's `lammps_mindlin`). For each seed both codes start from
+//! the same particles (tamp places them; the deck `tamp export-liggghts --seed S` or
+//! `tamp export-lammps --seed S` writes carries them to the peer), but a pile of
 //! 2000 colliding spheres is chaotic: round-off differences between the codes grow
 //! until the two beds are different random packings. So the beds are compared
 //! through their statistics, the mean over seeds of each measure, and the
@@ -13,12 +16,12 @@
 //! (`measure::bed`); `coordination_number`, overlapping pairs per particle;
 //! `bottom_wall_force_over_weight`, the floor's force on the bed over its weight,
 //! averaged over the last 0.1 s (every `FORCE_EVERY` steps from `FORCE_FROM` on, the
-//! frames regenerate.sh has LIGGGHTS dump; LIGGGHTS: from the dumped total forces,
+//! frames regenerate.sh has the peer dump; peer: from the dumped total forces,
 //! `import::mean_floor_force_over_weight`). The bed still rings at 0.5 s: one frame
 //! samples a force that fluctuates by ±2.6 % (standard deviation over those frames).
-//! The LIGGGHTS values are `reference_data/liggghts/<case>/results.csv`, one row
-//! per seed, written by its `regenerate.sh`. The report gets every seed's values
-//! and each code's mean and standard deviation.
+//! The peer's values are `reference_data/<peer>/<case>/results.csv`, one row per
+//! seed, written by its `regenerate.sh`. The report gets every seed's values and
+//! each code's mean and standard deviation.
 
 use crate::error::{Result, TampError};
 use crate::liggghts::import::state_measures;
@@ -90,8 +93,19 @@ fn tamp_measures(base: &scene::Scene, seed: u64) -> Result<[f64; 3]> {
     ])
 }
 
-pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
-    let rows: Vec<Row> = ctx.liggghts_results()?;
+/// `liggghts_settled_packing`.
+pub fn liggghts(ctx: &CaseContext) -> Result<Vec<Measured>> {
+    against(ctx, "liggghts")
+}
+
+/// `lammps_settled_packing`.
+pub fn lammps(ctx: &CaseContext) -> Result<Vec<Measured>> {
+    against(ctx, "lammps")
+}
+
+/// The case against the seeds `peer` (`liggghts` or `lammps`) recorded.
+fn against(ctx: &CaseContext, peer: &str) -> Result<Vec<Measured>> {
+    let rows: Vec<Row> = ctx.peer_results(peer)?;
     if rows.len() < 2 {
         return Err(TampError::Other(
             "results.csv: needs at least two seeds to state a spread".into(),
@@ -102,7 +116,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     for row in &rows {
         tamp_values.push(tamp_measures(&base, row.seed)?);
     }
-    let liggghts_values: Vec<[f64; 3]> = rows
+    let peer_values: Vec<[f64; 3]> = rows
         .iter()
         .map(|r| {
             [
@@ -114,14 +128,14 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         .collect();
 
     let mut csv = String::from("measure,code,seed,value\n");
-    let mut summary = String::from("measure,tamp_mean,tamp_sd,liggghts_mean,liggghts_sd\n");
+    let mut summary = format!("measure,tamp_mean,tamp_sd,{peer}_mean,{peer}_sd\n");
     let mut out = Vec::new();
     for (k, name) in MEASURES.iter().enumerate() {
         let t: Vec<f64> = tamp_values.iter().map(|v| v[k]).collect();
-        let l: Vec<f64> = liggghts_values.iter().map(|v| v[k]).collect();
+        let l: Vec<f64> = peer_values.iter().map(|v| v[k]).collect();
         for (row, (a, b)) in rows.iter().zip(t.iter().zip(&l)) {
             let _ = writeln!(csv, "{name},tamp,{},{a:e}", row.seed);
-            let _ = writeln!(csv, "{name},liggghts,{},{b:e}", row.seed);
+            let _ = writeln!(csv, "{name},{peer},{},{b:e}", row.seed);
         }
         let ((tm, ts), (lm, ls)) = (mean_sd(&t), mean_sd(&l));
         let _ = writeln!(summary, "{name},{tm:e},{ts:e},{lm:e},{ls:e}");
