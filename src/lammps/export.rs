@@ -45,7 +45,7 @@ fn g(x: f64) -> String {
 
 /// The contact model of every `pair_coeff` line, with the material's E and ν left as
 /// `{E}` and `{nu}`.
-fn pair_model(scene: &Scene) -> std::result::Result<String, Vec<(String, String)>> {
+pub(super) fn pair_model(scene: &Scene) -> std::result::Result<String, Vec<(String, String)>> {
     let mut refused = Vec::new();
     let normal = scene
         .contact
@@ -288,6 +288,11 @@ pub fn export_file(
     seed: Option<u64>,
 ) -> Result<Exported> {
     let (scene, sha) = load_with_seed(scene_path, seed)?;
+    if scene.die_compaction.is_some() {
+        // Its particles exist only after tamp's fill and flatten: the pressing is
+        // what is exported, replaying tamp's stroke.
+        return super::die_compaction::export_pressing(&scene, &sha, out_dir);
+    }
     export(&scene, &sha, out_dir, dump_every)
 }
 

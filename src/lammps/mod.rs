@@ -5,4 +5,5 @@
 //! What each law is in LAMMPS is declared by the law (contact/lammps.rs);
 //! docs/lammps.md has the mapping and the comparisons.
 
+pub mod die_compaction;
 pub mod export;

@@ -33,7 +33,6 @@ use super::export::{
 };
 use crate::error::{Result, TampError};
 use crate::particles::Vec3;
-use crate::process::die_compaction;
 use crate::process::die_replay::{self, Stroke};
 use crate::scene::{self, Scene};
 use serde::{Deserialize, Serialize};
@@ -48,20 +47,9 @@ pub struct DieStroke {
     pub rve_diameter: f64,
 }
 
-/// The scene whose pressing LIGGGHTS can replay: `scene` with the moment of inertia
-/// of a solid sphere (`fix nve/sphere` has no other). tamp's fill, flatten and
-/// pressed stroke keep the scene's own factor; both replays use this one.
-pub fn replayed_scene(scene: &Scene) -> Scene {
-    let mut s = scene.clone();
-    if let Some(r) = s.rotation.as_mut() {
-        r.inertia_scale = 1.0;
-    }
-    s
-}
-
 /// Fill, flatten and press `scene` in tamp, then write the replay deck into `out_dir`.
 pub fn export_pressing(scene: &Scene, sha: &str, out_dir: &Path) -> Result<Exported> {
-    let solid = replayed_scene(scene);
+    let solid = die_replay::solid_sphere_scene(scene);
     let list = refusals(&solid);
     if !list.is_empty() {
         return Err(refuse_all(list));
@@ -70,10 +58,11 @@ pub fn export_pressing(scene: &Scene, sha: &str, out_dir: &Path) -> Result<Expor
         .die_compaction
         .as_ref()
         .ok_or_else(|| TampError::input("die_compaction", "is required"))?;
-    let specimen = die_compaction::prepare(scene, false)?;
-    let pressing = die_compaction::press(scene, &specimen, false, None, 0, &mut |_| Ok(()))?;
-    let stroke = Stroke::of(&pressing, specimen.h0)?;
-    let replay = die_replay::replay_scene(&solid, &specimen, &stroke)?;
+    let die_replay::Pressed {
+        specimen,
+        stroke,
+        replay,
+    } = die_replay::press_for_replay(scene, &solid)?;
     let sim = scene::build(&replay)?.sim;
     let model = contact_model(&replay, &sim)?;
     crate::output::create_dir(out_dir)?;

@@ -87,6 +87,41 @@ impl Stroke {
     }
 }
 
+/// A die-compaction scene pressed in tamp, ready to be replayed by a peer code: the
+/// flattened specimen, the stroke tamp pressed, and the press stage replaying it
+/// under `solid`'s law (what the peer can express).
+pub struct Pressed {
+    pub specimen: Specimen,
+    pub stroke: Stroke,
+    pub replay: Scene,
+}
+
+/// Fill, flatten and press `scene` in tamp (its own law and inertia), and set up the
+/// replay of the recorded stroke under `solid`.
+pub fn press_for_replay(scene: &Scene, solid: &Scene) -> Result<Pressed> {
+    let specimen = die_compaction::prepare(scene, false)?;
+    let pressing = die_compaction::press(scene, &specimen, false, None, 0, &mut |_| Ok(()))?;
+    let stroke = Stroke::of(&pressing, specimen.h0)?;
+    let replay = replay_scene(solid, &specimen, &stroke)?;
+    Ok(Pressed {
+        specimen,
+        stroke,
+        replay,
+    })
+}
+
+/// The scene whose pressing a peer with `fix nve/sphere` (LIGGGHTS, LAMMPS) can
+/// replay: `scene` with the moment of inertia of a solid sphere, the only one that
+/// integrator has. tamp's fill, flatten and pressed stroke keep the scene's own
+/// factor; both replays use this one.
+pub fn solid_sphere_scene(scene: &Scene) -> Scene {
+    let mut s = scene.clone();
+    if let Some(r) = s.rotation.as_mut() {
+        r.inertia_scale = 1.0;
+    }
+    s
+}
+
 /// One record of a replay.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct ReplayRecord {

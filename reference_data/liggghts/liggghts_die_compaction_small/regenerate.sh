@@ -23,34 +23,7 @@ for seed in ${SEEDS:-1}; do
   # Screen output on: LIGGGHTS 3.8 crashes reading an STL mesh without a screen.
   (cd "$d" && liggghts -in in.tamp -log log.liggghts > screen.txt)
   "$tamp" import-liggghts-dump "$d/dump.liggghts" --out "$d/measured" --die-stroke "$d/stroke.json" > /dev/null
-  python3 - "$d" "$seed" >> "$rows" <<'PY'
-import json, math, sys
-d, seed = sys.argv[1], sys.argv[2]
-s = json.load(open(f"{d}/stroke.json"))
-st, area = s["stroke"], math.pi * (0.5 * s["die_diameter"]) ** 2
-n = st["steps_per_record"]
-# Thermo rows: step time f_punch[3] f_floor[3] f_punch[9]; each run prints its
-# first and last step. A run's first row repeats the previous run's last step with
-# the mesh forces counted twice (LIGGGHTS 3.8 adds the setup's force to the
-# step's), so the first row of a step is kept: the end of the run.
-forces, head = {}, False
-for line in open(f"{d}/log.liggghts"):
-    w = line.split()
-    if w[:2] == ["Step", "Time"]:
-        head = True
-        continue
-    if head and w and w[0].isdigit() and len(w) == 5:
-        forces.setdefault(int(w[0]), (float(w[1]), float(w[2]), float(w[3])))
-    else:
-        head = False
-die = [l.strip().split(",") for l in open(f"{d}/measured/die.csv")][1:]
-heights = [st["h0"]] + st["heights"]
-pressures = [0.0] + st["pressures"]
-for k, row in enumerate(die):
-    _, fp, ff = forces[k * n]
-    print(f"{seed},{k},{k * st['interval']!r},{heights[k]!r},{st['h0']!r},{st['dt']!r},{n},{pressures[k]!r},"
-          f"{fp / area!r},{-ff / area!r},{row[3]},{row[4]}")
-PY
+  python3 "$here/../die_replay_rows.py" "$d" "$seed" log.liggghts >> "$rows"
   rm -f "$d/dump.liggghts" "$d/particles.data" "$d/measured/trajectory.csv" "$d/screen.txt"
 done
 mv "$rows" "$out/results.csv"

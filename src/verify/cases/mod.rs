@@ -8,6 +8,7 @@ mod binary_packing;
 mod compacted_deposit;
 mod compaction_2d;
 mod density_segregation;
+mod die_compaction_replay;
 mod energy_conservation_elastic;
 mod hertz_collision_time;
 mod hertz_rigid_wall_impact;
@@ -16,7 +17,6 @@ mod hollomon_constants;
 mod kuwabara_kono_restitution;
 mod lammps_oblique_wall_impact;
 mod lammps_two_sphere;
-mod liggghts_die_compaction_small;
 mod liggghts_inputs;
 mod liggghts_oblique_wall_impact;
 mod liggghts_three_sphere_trajectory;
@@ -83,7 +83,7 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("liggghts_settled_packing", settled_packing::liggghts),
     (
         "liggghts_die_compaction_small",
-        liggghts_die_compaction_small::run,
+        die_compaction_replay::liggghts,
     ),
     (
         "liggghts_three_sphere_trajectory",
@@ -104,6 +104,7 @@ pub const CASES: &[(&str, CaseFn)] = &[
         liggghts_oblique_wall_impact::run,
     ),
     ("lammps_two_sphere_hertz", lammps_two_sphere::run),
+    ("lammps_die_compaction_small", die_compaction_replay::lammps),
     (
         "lammps_oblique_wall_impact_mindlin",
         lammps_oblique_wall_impact::run,

@@ -1,11 +1,13 @@
-//! The die compaction of `nial_die_compaction_small` pressed in LIGGGHTS-PUBLIC
-//! 3.8.0 along the stroke tamp pressed (`liggghts::die_compaction`,
-//! `process::die_replay`).
+//! The die compaction of `nial_die_compaction_small` pressed in a peer code along
+//! the stroke tamp pressed (`process::die_replay`): LIGGGHTS-PUBLIC 3.8.0
+//! (`liggghts_die_compaction_small`, `liggghts::die_compaction`) and LAMMPS 22 Jul
+//! 2025 (`lammps_die_compaction_small`, `lammps::die_compaction`). One comparison,
+//! two peers: each case's scene holds the law its peer can express.
 //!
-//! For each seed recorded in `reference_data/liggghts/<case>/results.csv`, tamp
+//! For each seed recorded in `reference_data/<peer>/<case>/results.csv`, tamp
 //! fills and flattens the specimen (the one the export carried to LIGGGHTS: its
 //! H₀ must equal the recorded one, else the recording is stale) and replays the
-//! recorded stroke with its own force loop; LIGGGHTS replayed the same stroke from
+//! recorded stroke with its own force loop; the peer replayed the same stroke from
 //! the same specimen. Both codes then move the punch through the same heights, so
 //! what the comparison tests is the force each needs to get there, and what that
 //! force does to the bed:
@@ -16,7 +18,7 @@
 //! - at the last record (the same height in both), the punch and floor pressures
 //!   (force over the die's cross-section).
 //!
-//! Each quantity is tamp's value against LIGGGHTS's, averaged over the seeds. The
+//! Each quantity is tamp's value against the peer's, averaged over the seeds. The
 //! report gets both codes' curves (`<case>_curves.csv`).
 
 use crate::error::{Result, TampError};
@@ -26,7 +28,7 @@ use crate::verify::{CaseContext, Measured};
 use serde::Deserialize;
 use std::fmt::Write as _;
 
-/// One record of LIGGGHTS's replay (regenerate.sh joins the thermo output of the
+/// One record of the peer's replay (regenerate.sh joins the thermo output of the
 /// deck and `import-liggghts-dump --die-stroke`'s die.csv).
 #[derive(Debug, Deserialize)]
 struct Row {
@@ -86,8 +88,17 @@ fn quantities(records: &[ReplayRecord], h0: f64) -> Vec<(String, f64)> {
     out
 }
 
-pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
-    let rows: Vec<Row> = ctx.liggghts_results()?;
+pub fn liggghts(ctx: &CaseContext) -> Result<Vec<Measured>> {
+    compare(ctx, "liggghts")
+}
+
+pub fn lammps(ctx: &CaseContext) -> Result<Vec<Measured>> {
+    compare(ctx, "lammps")
+}
+
+/// tamp's replay of each recorded stroke against `peer`'s.
+fn compare(ctx: &CaseContext, peer: &str) -> Result<Vec<Measured>> {
+    let rows: Vec<Row> = ctx.peer_results(peer)?;
     let base = ctx.scene()?;
     let mut seeds: Vec<u64> = rows.iter().map(|r| r.seed).collect();
     seeds.dedup();
@@ -95,7 +106,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         "code,seed,record,time,height,punch_pressure,floor_pressure,density_specimen,density_rve\n",
     );
     let mut tamp_sum: Vec<(String, f64)> = Vec::new();
-    let mut liggghts_sum: Vec<f64> = Vec::new();
+    let mut peer_sum: Vec<f64> = Vec::new();
     for &seed in &seeds {
         let mut mine: Vec<&Row> = rows.iter().filter(|r| r.seed == seed).collect();
         mine.sort_by_key(|r| r.record);
@@ -122,9 +133,9 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
             heights: mine[1..].iter().map(|r| r.height).collect(),
             pressures: mine[1..].iter().map(|r| r.tamp_pressure).collect(),
         };
-        let solid = crate::liggghts::die_compaction::replayed_scene(&scene);
+        let solid = die_replay::solid_sphere_scene(&scene);
         let tamp = die_replay::replay(&solid, &specimen, &stroke)?;
-        let liggghts: Vec<ReplayRecord> = mine
+        let theirs: Vec<ReplayRecord> = mine
             .iter()
             .map(|r| ReplayRecord {
                 time: r.time,
@@ -135,7 +146,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
                 density_rve: r.density_rve,
             })
             .collect();
-        for (code, records) in [("tamp", &tamp), ("liggghts", &liggghts)] {
+        for (code, records) in [("tamp", &tamp), (peer, &theirs)] {
             for (k, r) in records.iter().enumerate() {
                 let _ = writeln!(
                     curves,
@@ -149,14 +160,14 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
                 );
             }
         }
-        let (t, l) = (quantities(&tamp, h0), quantities(&liggghts, h0));
+        let (t, l) = (quantities(&tamp, h0), quantities(&theirs, h0));
         if tamp_sum.is_empty() {
             tamp_sum = t.iter().map(|(n, _)| (n.clone(), 0.0)).collect();
-            liggghts_sum = vec![0.0; l.len()];
+            peer_sum = vec![0.0; l.len()];
         }
         for (k, ((_, a), (_, b))) in t.iter().zip(&l).enumerate() {
             tamp_sum[k].1 += a;
-            liggghts_sum[k] += b;
+            peer_sum[k] += b;
         }
     }
     crate::output::create_dir(&ctx.report_dir)?;
@@ -167,7 +178,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let n = seeds.len() as f64;
     Ok(tamp_sum
         .iter()
-        .zip(&liggghts_sum)
+        .zip(&peer_sum)
         .map(|((name, a), b)| Measured::new(name, a / n, b / n))
         .collect())
 }

@@ -1,0 +1,356 @@
+//! `tamp export-lammps` of a die-compaction file: the pressing stage as a LAMMPS
+//! (22 Jul 2025) deck that replays the punch stroke tamp pressed, the same replay
+//! the LIGGGHTS export writes (`liggghts::die_compaction`, `process::die_replay`):
+//! tamp fills, flattens and presses the specimen, records the punch heights, and
+//! both codes move the punch through them at one fixed step.
+//!
+//! The deck (walls written here, not by the general export, because a die is a
+//! cylinder and the punch moves):
+//! - the particles of the flattened specimen (`particles.data`: id, type, diameter,
+//!   density, position; velocities and spins), the pair model of the scene's law
+//!   (`pair granular`, `lammps::export::pair_model`), μ between particles;
+//! - the die as `fix wall/gran granular … zcylinder R` (LAMMPS's cylinder about the
+//!   z axis, infinite; tamp's ends above the punch: the same while no particle
+//!   leaves), the floor as `zplane 0 NULL`, both fixed;
+//! - the punch as `fix wall/gran/region` on a `region plane` whose `move` is the
+//!   displacement variable `dz` = Σ_k v_k min(max(t − t_k, 0), T), the piecewise
+//!   linear stroke tamp's replay evaluates (`Stroke::displacement`); LAMMPS gives a
+//!   moving region the velocity (dz(t) − dz(t − Δt))/Δt, the chord over the step,
+//!   as tamp's displacement motion does;
+//! - the walls' friction μ_w is the scene's for (particle material, wall material);
+//!   LAMMPS gives the wall the sphere's E and ν, so the wall material must have the
+//!   particles' (refused otherwise);
+//! - `contacts` on the three walls: per-atom contact forces, summed (`compute
+//!   reduce`) into the particles' force on punch and floor printed by thermo at
+//!   every record, and a frame of every particle per record (`dump.lammps`), from
+//!   which `tamp import-liggghts-dump --die-stroke stroke.json` measures densities.
+
+use super::export::{pair_model, refusals};
+use crate::error::{Result, TampError};
+use crate::liggghts::die_compaction::DieStroke;
+use crate::liggghts::export::{DUMP_COLUMNS, Exported, neighbor_skin};
+use crate::process::die_replay;
+use crate::scene::{self, Scene};
+use std::fmt::Write as _;
+use std::path::Path;
+
+fn g(x: f64) -> String {
+    format!("{x:e}")
+}
+
+/// μ between materials `a` and `b` under the scene's tangential law (0 without one).
+fn friction(scene: &Scene, a: &str, b: &str) -> f64 {
+    scene.contact.tangential.as_ref().map_or(0.0, |t| {
+        t.friction_pairs
+            .iter()
+            .find(|p| {
+                (p.materials[0] == a && p.materials[1] == b)
+                    || (p.materials[0] == b && p.materials[1] == a)
+            })
+            .map_or(t.friction, |p| p.friction)
+    })
+}
+
+/// Every field of the die-compaction `scene` its LAMMPS replay cannot express.
+/// The walls are written here (die, floor, punch), so the general export's wall
+/// rules do not apply; its rules for the law, rotation and materials do.
+pub fn die_refusals(scene: &Scene) -> Vec<(String, String)> {
+    let mut probe = die_replay::solid_sphere_scene(scene);
+    probe.walls.clear();
+    if let Some(t) = probe.contact.tangential.as_mut() {
+        t.friction_pairs.clear();
+    }
+    let mut out = refusals(&probe);
+    let Some(dc) = scene.die_compaction.as_ref() else {
+        return out;
+    };
+    let particle = &dc.particles.material;
+    let wall = &dc.wall_material;
+    if let Some(t) = &scene.contact.tangential {
+        for (k, p) in t.friction_pairs.iter().enumerate() {
+            let known = [particle.as_str(), wall.as_str()];
+            if !(known.contains(&p.materials[0].as_str())
+                && known.contains(&p.materials[1].as_str()))
+            {
+                out.push((
+                    format!("contact.tangential.friction_pairs[{k}]"),
+                    "the replay knows one particle material and one wall material; a pair of others has no LAMMPS counterpart here".into(),
+                ));
+            }
+        }
+    }
+    let elastic = |name: &str| {
+        scene
+            .materials
+            .iter()
+            .find(|m| m.name == name)
+            .map(|m| (m.youngs_modulus, m.poisson_ratio))
+    };
+    if elastic(particle) != elastic(wall) {
+        out.push((
+            "die_compaction.wall_material".into(),
+            "LAMMPS's fix wall/gran takes one E and ν for the wall and the sphere; give the wall material the particles' E and ν".into(),
+        ));
+    }
+    out
+}
+
+/// Fill, flatten and press `scene` in tamp, then write the LAMMPS replay deck into
+/// `out_dir`.
+pub fn export_pressing(scene: &Scene, sha: &str, out_dir: &Path) -> Result<Exported> {
+    let list = die_refusals(scene);
+    if !list.is_empty() {
+        return Err(crate::error::cannot_export("LAMMPS", list));
+    }
+    let dc = scene
+        .die_compaction
+        .as_ref()
+        .ok_or_else(|| TampError::input("die_compaction", "is required"))?;
+    let solid = die_replay::solid_sphere_scene(scene);
+    let die_replay::Pressed {
+        specimen,
+        stroke,
+        replay,
+    } = die_replay::press_for_replay(scene, &solid)?;
+    let mut probe = replay.clone();
+    if let Some(t) = probe.contact.tangential.as_mut() {
+        t.friction_pairs.clear();
+    }
+    let model = pair_model(&probe).map_err(|l| crate::error::cannot_export("LAMMPS", l))?;
+    let sim = scene::build(&replay)?.sim;
+    crate::output::create_dir(out_dir)?;
+
+    let radius = 0.5 * dc.die_diameter;
+    let max_r = sim.particles.radius.iter().copied().fold(0.0, f64::max);
+    let side = radius + 2.0 * max_r;
+    let bounds = [
+        [-side, side],
+        [-side, side],
+        [-2.0 * max_r, specimen.h0 + 2.0 * max_r],
+    ];
+    let p = &sim.particles;
+    let mut data = format!(
+        "LAMMPS data file exported by tamp {} ({}) from scene sha256 {sha}: the flattened specimen of seed {}\n\n{} atoms\n{} atom types\n\n",
+        crate::VERSION,
+        crate::GIT_COMMIT,
+        scene.seed,
+        p.len(),
+        sim.materials.len()
+    );
+    for (a, axis) in ["x", "y", "z"].iter().enumerate() {
+        let _ = writeln!(
+            data,
+            "{} {} {axis}lo {axis}hi",
+            g(bounds[a][0]),
+            g(bounds[a][1])
+        );
+    }
+    data.push_str("\nAtoms # sphere\n\n");
+    for i in 0..p.len() {
+        let x = p.position[i];
+        let density = sim.materials[p.material[i]]
+            .density
+            .expect("validated: a particle material has a density");
+        let _ = writeln!(
+            data,
+            "{} {} {} {} {} {} {}",
+            p.id[i],
+            p.material[i] + 1,
+            g(2.0 * p.radius[i]),
+            g(density),
+            g(x.x),
+            g(x.y),
+            g(x.z)
+        );
+    }
+    data.push_str("\nVelocities\n\n");
+    for i in 0..p.len() {
+        let (v, w) = (p.velocity[i], p.omega[i]);
+        let _ = writeln!(
+            data,
+            "{} {} {} {} {} {} {}",
+            p.id[i],
+            g(v.x),
+            g(v.y),
+            g(v.z),
+            g(w.x),
+            g(w.y),
+            g(w.z)
+        );
+    }
+    crate::output::write_atomic(&out_dir.join("particles.data"), data.as_bytes())?;
+    let stroke_file = DieStroke {
+        stroke: stroke.clone(),
+        die_diameter: dc.die_diameter,
+        rve_diameter: dc.rve_diameter,
+    };
+    let json = serde_json::to_vec_pretty(&stroke_file).expect("stroke serialises");
+    crate::output::write_atomic(&out_dir.join("stroke.json"), &json)?;
+
+    let particle = &dc.particles.material;
+    let material = |name: &str| {
+        scene
+            .materials
+            .iter()
+            .find(|m| m.name == name)
+            .expect("validated material")
+    };
+    let line = |name: &str, mu: f64| {
+        let m = material(name);
+        model
+            .replace("{E}", &g(m.youngs_modulus.unwrap_or(0.0)))
+            .replace("{nu}", &g(m.poisson_ratio.unwrap_or(0.0)))
+            .replace("{mu}", &g(mu))
+    };
+    let pair = line(particle, friction(scene, particle, particle));
+    let wall = line(
+        &dc.wall_material,
+        friction(scene, particle, &dc.wall_material),
+    );
+    let n = stroke.steps_per_record;
+    let steps = n * stroke.heights.len() as u64;
+    let mut deck = String::new();
+    let notes = vec![
+        format!(
+            "the punch replays the stroke tamp pressed under the pressure ramp (h0 = {} m, {} records of {} steps of {} s)",
+            g(specimen.h0),
+            stroke.heights.len(),
+            n,
+            g(stroke.dt)
+        ),
+        "the die is LAMMPS's infinite zcylinder wall; the floor a zplane; the punch a moving region plane".into(),
+    ];
+    let mut notes = notes;
+    if let Some(r) = scene.rotation.as_ref().filter(|r| r.inertia_scale != 1.0) {
+        notes.push(format!(
+            "tamp filled, flattened and pressed with rotation.inertia_scale {}; LAMMPS's fix nve/sphere has the solid sphere's only, so the replay uses 1",
+            r.inertia_scale
+        ));
+    }
+    for note in &notes {
+        let _ = writeln!(deck, "# note: {note}");
+    }
+    let _ = writeln!(
+        deck,
+        "# LAMMPS (22 Jul 2025) deck exported by tamp {} (commit {})\n# scene '{}', sha256 {sha}, seed {}\n# run: lmp -in in.tamp",
+        crate::VERSION,
+        crate::GIT_COMMIT,
+        scene.name.replace(['\n', '\r'], " "),
+        scene.seed
+    );
+    deck.push_str(
+        "units        si\natom_style   sphere\natom_modify  map array\nboundary     f f f\n\
+         newton       off\ncomm_modify  vel yes\nread_data    particles.data\n",
+    );
+    let _ = writeln!(
+        deck,
+        "neighbor     {} bin\nneigh_modify delay 0\n\
+         # limit_damping is off (not written), as tamp's damping.\npair_style   granular\n\
+         pair_coeff   * * {pair}\ntimestep     {}",
+        g(neighbor_skin(&replay, &p.radius)),
+        g(stroke.dt)
+    );
+    if let Some(gv) = sim.gravity.filter(|gv| gv.norm() > 0.0) {
+        let d = gv / gv.norm();
+        let _ = writeln!(
+            deck,
+            "fix          gravi all gravity {} vector {} {} {}",
+            g(gv.norm()),
+            g(d.x),
+            g(d.y),
+            g(d.z)
+        );
+    }
+    // Σ_k v_k min(max(t − t_k, 0), T), term by term as tamp's `Stroke::displacement`.
+    // LAMMPS's formulas have no min/max of numbers; with u = t − t_k,
+    // u·(u > 0)·(u < T) + T·(u ≥ T) is the same value.
+    let terms: Vec<String> = (0..stroke.heights.len())
+        .map(|k| {
+            let (u, t) = (
+                format!("(time-({}))", g(k as f64 * stroke.interval)),
+                g(stroke.interval),
+            );
+            format!(
+                "({})*({u}*({u}>0.0)*({u}<{t})+{t}*({u}>={t}))",
+                g(stroke.speed(k))
+            )
+        })
+        .collect();
+    let _ = writeln!(
+        deck,
+        "fix          die all wall/gran granular {wall} zcylinder {} contacts\n\
+         fix          floor all wall/gran granular {wall} zplane 0e0 NULL contacts\n\
+         # the punch face's displacement (m): the stroke, linear between records\n\
+         variable     dz equal \"{}\"\n\
+         region       punch plane 0 0 {} 0 0 -1 side in move NULL NULL v_dz units box\n\
+         fix          punch all wall/gran/region granular {wall} region punch contacts\n\
+         fix          integr all nve/sphere\n\
+         # the particles' force on punch and floor (N): minus the walls' forces on them\n\
+         compute      fpunch all reduce sum f_punch[4]\n\
+         compute      ffloor all reduce sum f_floor[4]\n\
+         variable     punch_fz equal -c_fpunch\n\
+         variable     floor_fz equal -c_ffloor\n\
+         dump         dmp all custom {n} dump.lammps {DUMP_COLUMNS}\n\
+         dump_modify  dmp format line \"%d %d{}\" sort id\n\
+         thermo_style custom step time v_punch_fz v_floor_fz v_dz\n\
+         thermo_modify norm no lost ignore format float %.17g\n\
+         thermo       {n}",
+        g(radius),
+        terms.join("+"),
+        g(specimen.h0),
+        " %.17g".repeat(14)
+    );
+    // One run for the whole stroke: LAMMPS's setup before a further `run` would
+    // give the moving region the velocity 0 (Region::set_velocity at a repeated
+    // step) and kick the particles with the forces of that state. The formula is
+    // re-parsed at every step, most of the deck's cost (measured in docs/lammps.md).
+    let _ = writeln!(deck, "run          {steps}");
+    crate::output::write_atomic(&out_dir.join("in.tamp"), deck.as_bytes())?;
+    Ok(Exported {
+        particles: p.len(),
+        steps,
+        dt: stroke.dt,
+        files: vec![
+            "in.tamp".into(),
+            "particles.data".into(),
+            "stroke.json".into(),
+        ],
+        notes,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scene(name: &str) -> Scene {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("verification")
+            .join(format!("{name}.scene.json"));
+        scene::load(&path).expect("a valid scene").0
+    }
+
+    #[test]
+    fn the_lammps_die_scene_is_expressible_and_the_paper_law_is_refused_by_field() {
+        assert!(die_refusals(&scene("lammps_die_compaction_small")).is_empty());
+        // Rojek's law as nial_die_compaction_small writes it: Mindlin–Deresiewicz
+        // has no pair granular model, and its lever arms are not LAMMPS's.
+        let paths: Vec<String> = die_refusals(&scene("nial_die_compaction_small"))
+            .into_iter()
+            .map(|(p, _)| p)
+            .collect();
+        assert_eq!(paths, ["contact.tangential.law", "contact.lever_arm"]);
+        let mut other = scene("lammps_die_compaction_small");
+        other.materials[1].youngs_modulus = Some(2e11);
+        let paths: Vec<String> = die_refusals(&other).into_iter().map(|(p, _)| p).collect();
+        assert_eq!(paths, ["die_compaction.wall_material"]);
+    }
+
+    #[test]
+    fn walls_take_the_particle_wall_friction_and_particles_their_own() {
+        let s = scene("lammps_die_compaction_small");
+        assert_eq!(friction(&s, "NiAl", "NiAl"), 0.0);
+        assert_eq!(friction(&s, "NiAl", "die"), 0.02);
+        assert_eq!(friction(&s, "die", "NiAl"), 0.02);
+    }
+}
