@@ -619,7 +619,7 @@ mod tests {
             assert_eq!(paths, ["walls[0]"], "{shape}");
         }
         let narrow = with_wall(
-            r#"{"kind": "box", "lower": [-0.01, -0.0015, -0.01], "upper": [0.01, 0.0005, 0.02]}"#,
+            r#"{"kind": "box", "lower": [-0.01, -0.001, -0.01], "upper": [0.01, 0.001, 0.02]}"#,
         );
         let dir = std::env::temp_dir().join(format!("tamp-lammps-narrow-{}", std::process::id()));
         let err = export(&narrow, "sha", &dir, None).unwrap_err().to_string();
