@@ -41,7 +41,7 @@ enum Command {
     },
     /// Run verification cases and write the report (REPORT/verification.md, .html and .json).
     Verify {
-        /// quick: about 10 min on 2 cores (CI). full: the papers' scale, many hours
+        /// quick: about 6 min on 2 cores with cases side by side (CI). full: the papers' scale, many hours
         /// (the NiAl die compaction alone about 2.8 h, each full 2D compaction about
         /// 105 min); it includes the quick cases, and an interrupted NiAl case goes on
         /// from REPORT/nial_die_compaction_runs/.
