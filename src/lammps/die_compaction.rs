@@ -34,9 +34,7 @@ use crate::scene::{self, Scene};
 use std::fmt::Write as _;
 use std::path::Path;
 
-fn g(x: f64) -> String {
-    format!("{x:e}")
-}
+use crate::output::data_file::g;
 
 /// μ between materials `a` and `b` under the scene's tangential law (0 without one).
 fn friction(scene: &Scene, a: &str, b: &str) -> f64 {
@@ -129,63 +127,16 @@ pub fn export_pressing(scene: &Scene, sha: &str, out_dir: &Path) -> Result<Expor
         [-2.0 * max_r, specimen.h0 + 2.0 * max_r],
     ];
     let p = &sim.particles;
-    let mut data = format!(
-        "LAMMPS data file exported by tamp {} ({}) from scene sha256 {sha}: the flattened specimen of seed {}\n\n{} atoms\n{} atom types\n\n",
-        crate::VERSION,
-        crate::GIT_COMMIT,
-        scene.seed,
-        p.len(),
-        sim.materials.len()
+    let data = crate::output::data_file::particles_data(
+        &sim,
+        "LAMMPS",
+        sha,
+        &format!(": the flattened specimen of seed {}", scene.seed),
+        &bounds,
+        "Atoms # sphere",
     );
-    for (a, axis) in ["x", "y", "z"].iter().enumerate() {
-        let _ = writeln!(
-            data,
-            "{} {} {axis}lo {axis}hi",
-            g(bounds[a][0]),
-            g(bounds[a][1])
-        );
-    }
-    data.push_str("\nAtoms # sphere\n\n");
-    for i in 0..p.len() {
-        let x = p.position[i];
-        let density = sim.materials[p.material[i]]
-            .density
-            .expect("validated: a particle material has a density");
-        let _ = writeln!(
-            data,
-            "{} {} {} {} {} {} {}",
-            p.id[i],
-            p.material[i] + 1,
-            g(2.0 * p.radius[i]),
-            g(density),
-            g(x.x),
-            g(x.y),
-            g(x.z)
-        );
-    }
-    data.push_str("\nVelocities\n\n");
-    for i in 0..p.len() {
-        let (v, w) = (p.velocity[i], p.omega[i]);
-        let _ = writeln!(
-            data,
-            "{} {} {} {} {} {} {}",
-            p.id[i],
-            g(v.x),
-            g(v.y),
-            g(v.z),
-            g(w.x),
-            g(w.y),
-            g(w.z)
-        );
-    }
     crate::output::write_atomic(&out_dir.join("particles.data"), data.as_bytes())?;
-    let stroke_file = DieStroke {
-        stroke: stroke.clone(),
-        die_diameter: dc.die_diameter,
-        rve_diameter: dc.rve_diameter,
-    };
-    let json = serde_json::to_vec_pretty(&stroke_file).expect("stroke serialises");
-    crate::output::write_atomic(&out_dir.join("stroke.json"), &json)?;
+    DieStroke::write(out_dir, &stroke, dc)?;
 
     let particle = &dc.particles.material;
     let material = |name: &str| {

@@ -38,10 +38,7 @@ use std::path::Path;
 
 const AXES: [&str; 3] = ["x", "y", "z"];
 
-/// `%.17g`-equivalent: Rust's shortest round-trip form.
-fn g(x: f64) -> String {
-    format!("{x:e}")
-}
+use crate::output::data_file::g;
 
 /// The contact model of every `pair_coeff` line, with the material's E and ν left as
 /// `{E}` and `{nu}`.
@@ -334,7 +331,6 @@ pub fn export(
         return Err(refuse_all(narrow));
     }
     crate::output::create_dir(out_dir)?;
-    let n_types = sim.materials.len();
 
     // Box: periodic axes exactly; the others shrink-wrap with a minimum (`m`) around
     // the particles' bounding box and a margin.
@@ -353,53 +349,23 @@ pub fn export(
     let max_r = p.radius.iter().copied().fold(0.0, f64::max);
     let margin = 0.05 * span + 2.0 * max_r;
     let mut boundary = Vec::new();
-    let mut data = format!(
-        "LAMMPS data file exported by tamp {} ({}) from scene sha256 {sha}\n\n{} atoms\n{n_types} atom types\n\n",
-        crate::VERSION,
-        crate::GIT_COMMIT,
-        p.len()
-    );
+    let mut bounds = [[0.0; 2]; 3];
     for a in 0..3 {
         let (l, h, flag) = match periodic[a] {
             Some([l, h]) => (l, h, "p"),
             None => (lo[a] - margin, hi[a] + margin, "m"),
         };
         boundary.push(flag);
-        let _ = writeln!(data, "{} {} {}lo {}hi", g(l), g(h), AXES[a], AXES[a]);
+        bounds[a] = [l, h];
     }
-    data.push_str("\nAtoms # sphere\n\n");
-    for i in 0..p.len() {
-        let x = p.position[i];
-        let density = sim.materials[p.material[i]]
-            .density
-            .expect("validated: a particle material is not rigid and has a density");
-        let _ = writeln!(
-            data,
-            "{} {} {} {} {} {} {}",
-            p.id[i],
-            p.material[i] + 1,
-            g(2.0 * p.radius[i]),
-            g(density),
-            g(x.x),
-            g(x.y),
-            g(x.z)
-        );
-    }
-    data.push_str("\nVelocities\n\n");
-    for i in 0..p.len() {
-        let (v, w) = (p.velocity[i], p.omega[i]);
-        let _ = writeln!(
-            data,
-            "{} {} {} {} {} {} {}",
-            p.id[i],
-            g(v.x),
-            g(v.y),
-            g(v.z),
-            g(w.x),
-            g(w.y),
-            g(w.z)
-        );
-    }
+    let data = crate::output::data_file::particles_data(
+        &sim,
+        "LAMMPS",
+        sha,
+        "",
+        &bounds,
+        "Atoms # sphere",
+    );
     crate::output::write_atomic(&out_dir.join("particles.data"), data.as_bytes())?;
 
     let skin = neighbor_skin(scene, &p.radius);

@@ -34,6 +34,7 @@ use super::export::{
 use crate::error::{Result, TampError};
 use crate::particles::Vec3;
 use crate::process::die_replay::{self, Stroke};
+use crate::scene::die_compaction::DieCompactionSpec;
 use crate::scene::{self, Scene};
 use serde::{Deserialize, Serialize};
 use std::fmt::Write as _;
@@ -45,6 +46,20 @@ pub struct DieStroke {
     pub stroke: Stroke,
     pub die_diameter: f64,
     pub rve_diameter: f64,
+}
+
+impl DieStroke {
+    /// Writes `DIR/stroke.json`, the punch stroke a replay deck follows and the
+    /// diameters the importer measures the specimen and RVE with.
+    pub fn write(out_dir: &Path, stroke: &Stroke, dc: &DieCompactionSpec) -> Result<()> {
+        let file = DieStroke {
+            stroke: stroke.clone(),
+            die_diameter: dc.die_diameter,
+            rve_diameter: dc.rve_diameter,
+        };
+        let json = serde_json::to_vec_pretty(&file).expect("stroke serialises");
+        crate::output::write_atomic(&out_dir.join("stroke.json"), &json)
+    }
 }
 
 /// Fill, flatten and press `scene` in tamp, then write the replay deck into `out_dir`.
@@ -91,13 +106,7 @@ pub fn export_pressing(scene: &Scene, sha: &str, out_dir: &Path) -> Result<Expor
         crate::output::write_atomic(&out_dir.join(&file), stl(name, &triangles).as_bytes())?;
         files.push(file);
     }
-    let stroke_file = DieStroke {
-        stroke: stroke.clone(),
-        die_diameter: dc.die_diameter,
-        rve_diameter: dc.rve_diameter,
-    };
-    let json = serde_json::to_vec_pretty(&stroke_file).expect("stroke serialises");
-    crate::output::write_atomic(&out_dir.join("stroke.json"), &json)?;
+    DieStroke::write(out_dir, &stroke, dc)?;
     files.push("stroke.json".into());
 
     let mut deck = deck_head(&replay, sha, &sim, &["f", "f", "f"], &model);

@@ -298,10 +298,7 @@ fn axis_of(v: &Vec3) -> Option<usize> {
 
 const AXES: [&str; 3] = ["x", "y", "z"];
 
-/// `%.17g`-equivalent: Rust's shortest round-trip form.
-pub(super) fn g(x: f64) -> String {
-    format!("{x:e}")
-}
+pub(super) use crate::output::data_file::g;
 
 /// The normal laws LIGGGHTS 3.8 has, as "law → model" (from the registry).
 fn exportable_laws() -> String {
@@ -532,56 +529,13 @@ fn extent(sim: &crate::simulation::Simulation, scene: &Scene) -> (Vec3, Vec3) {
     (lo, hi)
 }
 
-/// The data file of `read_data`: the box `bounds`, one atom per particle (type
-/// = material + 1, diameter, density, position) and the velocities and spins.
+/// The data file of `read_data` (`output::data_file`, titled as LIGGGHTS writes it).
 pub(super) fn particles_data(
     sim: &crate::simulation::Simulation,
     sha: &str,
     bounds: &[[f64; 2]; 3],
 ) -> String {
-    let p = &sim.particles;
-    let n_types = sim.materials.len();
-    let mut data = format!(
-        "LIGGGHTS data file exported by tamp {} ({}) from scene sha256 {sha}\n\n{} atoms\n{n_types} atom types\n\n",
-        crate::VERSION,
-        crate::GIT_COMMIT,
-        p.len()
-    );
-    for (a, [l, h]) in bounds.iter().enumerate() {
-        let _ = writeln!(data, "{} {} {}lo {}hi", g(*l), g(*h), AXES[a], AXES[a]);
-    }
-    data.push_str("\nAtoms\n\n");
-    let density = |i: usize| sim.materials[p.material[i]].particle_density();
-    for i in 0..p.len() {
-        let x = p.position[i];
-        let _ = writeln!(
-            data,
-            "{} {} {} {} {} {} {}",
-            p.id[i],
-            p.material[i] + 1,
-            g(2.0 * p.radius[i]),
-            g(density(i)),
-            g(x.x),
-            g(x.y),
-            g(x.z)
-        );
-    }
-    data.push_str("\nVelocities\n\n");
-    for i in 0..p.len() {
-        let (v, w) = (p.velocity[i], p.omega[i]);
-        let _ = writeln!(
-            data,
-            "{} {} {} {} {} {} {}",
-            p.id[i],
-            g(v.x),
-            g(v.y),
-            g(v.z),
-            g(w.x),
-            g(w.y),
-            g(w.z)
-        );
-    }
-    data
+    crate::output::data_file::particles_data(sim, "LIGGGHTS", sha, "", bounds, "Atoms")
 }
 
 /// The `dump_modify format` of DUMP_COLUMNS: every number to the last bit.

@@ -3,6 +3,7 @@
 //! interrupted run never clobbers a previous result.
 
 pub mod contacts;
+pub mod data_file;
 pub mod plot;
 pub mod progress;
 pub mod series;
