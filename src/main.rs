@@ -25,7 +25,7 @@ enum Command {
     #[command(after_help = RUN_HELP)]
     Run {
         /// The scene, a JSON file (fields: docs/scene-format.md; examples:
-        /// verification/*.scene.json).
+        /// verification/*.scene.json); `-` reads it from standard input.
         scene: PathBuf,
         /// Output directory, created if needed. The run first deletes what an earlier
         /// run left there under its own file names.
@@ -230,37 +230,7 @@ fn main() -> ExitCode {
             out,
             quiet,
             resume,
-        } if is_die_compaction(&scene) => {
-            tamp::process::die_compaction_run::run_scene(&scene, &out, quiet, resume).map(|s| {
-                println!(
-                    "die compaction of {} particles: H0 = {:e} m, initial density {:e} (RVE {:e}); at {:e} Pa density {:e} (RVE {:e}); wrote {}",
-                    s.particles,
-                    s.h0,
-                    s.initial_density_specimen,
-                    s.initial_density_rve,
-                    s.last.pressure,
-                    s.last.density_specimen,
-                    s.last.density_rve,
-                    out.display()
-                );
-                0
-            })
-        }
-        Command::Run {
-            scene,
-            out,
-            quiet,
-            resume,
-        } => tamp::run::run_scene(&scene, &out, quiet, resume).map(|s| {
-            println!(
-                "ran {} steps of {:e} s ({} particles); wrote {}",
-                s.steps,
-                s.provenance.dt,
-                s.particles,
-                out.display()
-            );
-            0
-        }),
+        } => run(&scene, &out, quiet, resume),
         Command::Verify {
             tier,
             cases,
@@ -388,15 +358,39 @@ fn main() -> ExitCode {
     }
 }
 
-/// Whether a scene file's (first) JSON object holds a `die_compaction` block; its
-/// errors, trailing data included, are reported by the run that follows.
-fn is_die_compaction(scene: &std::path::Path) -> bool {
-    std::fs::read_to_string(scene)
-        .ok()
-        .and_then(|text| {
-            let mut documents =
-                serde_json::Deserializer::from_str(&text).into_iter::<serde_json::Value>();
-            documents.next().and_then(|first| first.ok())
-        })
-        .is_some_and(|v| v.get("die_compaction").is_some())
+/// `tamp run`: the input is read and parsed once; a `die_compaction` block makes it the
+/// die-compaction process, anything else is a scene run as it stands.
+fn run(
+    scene_path: &std::path::Path,
+    out: &std::path::Path,
+    quiet: bool,
+    resume: bool,
+) -> tamp::error::Result<u8> {
+    let (scene, sha) = tamp::scene::load(scene_path)?;
+    if scene.die_compaction.is_some() {
+        let s = tamp::process::die_compaction_run::run_scene(
+            &scene, &sha, scene_path, out, quiet, resume,
+        )?;
+        println!(
+            "die compaction of {} particles: H0 = {:e} m, initial density {:e} (RVE {:e}); at {:e} Pa density {:e} (RVE {:e}); wrote {}",
+            s.particles,
+            s.h0,
+            s.initial_density_specimen,
+            s.initial_density_rve,
+            s.last.pressure,
+            s.last.density_specimen,
+            s.last.density_rve,
+            out.display()
+        );
+    } else {
+        let s = tamp::run::run_scene(&scene, &sha, scene_path, out, quiet, resume)?;
+        println!(
+            "ran {} steps of {:e} s ({} particles); wrote {}",
+            s.steps,
+            s.provenance.dt,
+            s.particles,
+            out.display()
+        );
+    }
+    Ok(0)
 }

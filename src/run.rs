@@ -118,11 +118,18 @@ pub fn interrupted(
     }
 }
 
-pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool, resume: bool) -> Result<Summary> {
-    let (scene, sha) = scene::load(scene_path)?;
+/// Run `scene` (read from `scene_path`, whose bytes hash to `sha`) into `out_dir`.
+pub fn run_scene(
+    scene: &scene::Scene,
+    sha: &str,
+    scene_path: &Path,
+    out_dir: &Path,
+    quiet: bool,
+    resume: bool,
+) -> Result<Summary> {
     let checkpoint_every = scene.output.checkpoint_every;
     crate::checkpoint::require_checkpoints_for_resume(resume, checkpoint_every)?;
-    let built = scene::build(&scene)?;
+    let built = scene::build(scene)?;
     for w in &built.warnings {
         eprintln!("warning: {w}");
     }
@@ -260,7 +267,13 @@ pub fn run_scene(scene_path: &Path, out_dir: &Path, quiet: bool, resume: bool) -
     if sim.step % every != 0 {
         series.record(&sim)?;
     }
-    let provenance = Provenance::new(sha, scene.seed, sim.dt, built.dt_estimate, built.steps);
+    let provenance = Provenance::new(
+        sha.to_string(),
+        scene.seed,
+        sim.dt,
+        built.dt_estimate,
+        built.steps,
+    );
     let mut summary = Summary::new(&sim, provenance, &scene.name, built.warnings);
     if let Some(u) = &until {
         let criterion = match (settled, scene.run.steps) {

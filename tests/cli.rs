@@ -94,6 +94,46 @@ fn run_writes_summary_series_and_vtk_with_provenance() {
     );
 }
 
+/// A scene piped on standard input (`-` or `/dev/stdin`) runs as from its file: one
+/// read of the input serves the kind of document, the hash and the run.
+#[test]
+fn run_reads_the_scene_from_standard_input() {
+    use std::io::Write;
+    let (dir, scene, from_file) = scene_in_tempdir(&base());
+    let o = tamp(&[
+        "run",
+        "--quiet",
+        scene.to_str().unwrap(),
+        "--out",
+        from_file.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let bytes = std::fs::read(&scene).unwrap();
+    for name in ["-", "/dev/stdin"] {
+        let out = dir.path().join(format!("out_stdin{}", name.len()));
+        let mut child = Command::new(env!("CARGO_BIN_EXE_tamp"))
+            .args(["run", "--quiet", name, "--out", out.to_str().unwrap()])
+            .stdin(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .unwrap();
+        child.stdin.take().unwrap().write_all(&bytes).unwrap();
+        let o = child.wait_with_output().unwrap();
+        assert!(
+            o.status.success(),
+            "{name}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        for file in ["series.csv", "summary.json"] {
+            assert_eq!(
+                std::fs::read(out.join(file)).unwrap(),
+                std::fs::read(from_file.join(file)).unwrap(),
+                "{name}: {file} differs from the run of the file"
+            );
+        }
+    }
+}
+
 #[test]
 fn ten_times_the_critical_step_stops_with_exit_3_and_a_diagnostic() {
     let mut s = base();

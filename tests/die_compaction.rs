@@ -126,3 +126,33 @@ fn broken_die_compaction_rules_exit_2_naming_the_field() {
     assert!(!dir.join("out").join("series.csv").exists());
     fresh(&dir);
 }
+
+/// A die-compaction file piped on standard input is recognised as one from the single
+/// read of the input: its broken rule is reported as a die-compaction rule.
+#[test]
+fn a_die_compaction_file_on_standard_input_is_read_as_one() {
+    use std::io::Write;
+    let text = std::fs::read_to_string(scene()).unwrap();
+    let mut value: serde_json::Value = serde_json::from_str(&text).unwrap();
+    value["die_compaction"]["rve_diameter"] = serde_json::json!(20e-6);
+    let dir = std::env::temp_dir().join(format!("tamp_die_stdin_{}", std::process::id()));
+    fresh(&dir);
+    let mut child = tamp()
+        .args(["run", "-", "--out"])
+        .arg(dir.join("out"))
+        .stdin(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    child
+        .stdin
+        .take()
+        .unwrap()
+        .write_all(value.to_string().as_bytes())
+        .unwrap();
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("die_compaction.rve_diameter"), "{stderr}");
+    fresh(&dir);
+}

@@ -37,13 +37,16 @@ pub struct CompactionSummary {
     pub last: PressRecord,
 }
 
+/// Run the die-compaction file `scene` (read from `scene_path`, whose bytes hash to
+/// `sha`) into `out_dir`.
 pub fn run_scene(
+    scene: &crate::scene::Scene,
+    sha: &str,
     scene_path: &Path,
     out_dir: &Path,
     quiet: bool,
     resume: bool,
 ) -> Result<CompactionSummary> {
-    let (scene, sha) = crate::scene::load(scene_path)?;
     let every = scene.output.checkpoint_every;
     crate::checkpoint::require_checkpoints_for_resume(resume, every)?;
     // The specimen and the checkpoint are what a resumed run starts from.
@@ -133,7 +136,7 @@ pub fn run_scene(
         .expect("at least two records")
         .clone();
     let summary = CompactionSummary {
-        provenance: Provenance::new(sha, scene.seed, last.dt, None, pressing.steps),
+        provenance: Provenance::new(sha.to_string(), scene.seed, last.dt, None, pressing.steps),
         scene_name: scene.name.clone(),
         particles: specimen.particles.len(),
         h0: specimen.h0,

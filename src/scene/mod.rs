@@ -53,18 +53,33 @@ pub fn parse(text: &str) -> Result<Scene> {
     Ok(scene)
 }
 
-/// Read, parse and validate a scene file; also returns the SHA-256 of its bytes.
+/// Read, parse and validate a scene file; also returns the SHA-256 of its bytes. The path
+/// `-` (or `/dev/stdin`) reads standard input, once; the files a scene read that way names
+/// (meshes, particle files) are then found from the current directory.
 pub fn load(path: &std::path::Path) -> Result<(Scene, String)> {
-    let bytes = std::fs::read(path)
-        .map_err(|e| TampError::io(format!("reading scene {}", path.display()), e))?;
+    let stdin = is_stdin(path);
+    let bytes = if stdin {
+        let mut bytes = Vec::new();
+        std::io::Read::read_to_end(&mut std::io::stdin(), &mut bytes)
+            .map_err(|e| TampError::io("reading the scene from standard input", e))?;
+        bytes
+    } else {
+        std::fs::read(path)
+            .map_err(|e| TampError::io(format!("reading scene {}", path.display()), e))?
+    };
     let text = String::from_utf8(bytes.clone())
         .map_err(|_| TampError::input(path.display().to_string(), "must be UTF-8 text"))?;
     let mut scene = parse(&text)?;
-    scene.base_dir = path
-        .parent()
-        .map(std::path::Path::to_path_buf)
-        .unwrap_or_default();
+    scene.base_dir = match path.parent() {
+        Some(dir) if !stdin => dir.to_path_buf(),
+        _ => std::path::PathBuf::new(),
+    };
     Ok((scene, sha256_hex(&bytes)))
+}
+
+/// Whether `path` names standard input rather than a file.
+pub fn is_stdin(path: &std::path::Path) -> bool {
+    path == std::path::Path::new("-") || path == std::path::Path::new("/dev/stdin")
 }
 
 pub fn sha256_hex(bytes: &[u8]) -> String {
