@@ -170,7 +170,7 @@ pub fn run_scene(
                 crate::GIT_COMMIT
             );
         }
-        let state = saved.into_state(&sha, &checkpoint_path)?;
+        let state = saved.into_state(sha, &checkpoint_path)?;
         state.sim.restore(&mut sim)?;
         series.rows = state.series_rows.into_owned();
         trajectory = state.trajectory.into_owned();
@@ -246,7 +246,7 @@ pub fn run_scene(
                 vtk_frames: frames,
                 settled_since: until.as_ref().and_then(|u| u.held_since),
             };
-            checkpoint::write_checkpoint(&checkpoint_path, &Checkpoint::new(&sha, state))?;
+            checkpoint::write_checkpoint(&checkpoint_path, &Checkpoint::new(sha, state))?;
         }
         if let Some(signal) = signal {
             progress.finish();

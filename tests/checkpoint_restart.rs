@@ -2,9 +2,11 @@
 //! as the uninterrupted run, through the library and through `tamp run --resume`; a
 //! checkpoint of another scene is refused.
 
+mod common;
+
 use serde_json::{Value, json};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
+use std::process::Stdio;
 use std::time::{Duration, Instant};
 use tamp::checkpoint::SimState;
 use tamp::particles::Vec3;
@@ -50,8 +52,7 @@ fn die_scene(steps: u64, checkpoint_every: u64) -> Value {
 }
 
 fn build(scene: &Value) -> Simulation {
-    let scene = tamp::scene::parse(&scene.to_string()).unwrap();
-    tamp::scene::build(&scene).unwrap().sim
+    common::built(scene).sim
 }
 
 fn steps(sim: &mut Simulation, n: u64) {
@@ -109,23 +110,7 @@ fn restored_simulation_steps_on_bit_for_bit() {
     );
 }
 
-fn tamp() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_tamp"))
-}
-
-fn run(scene: &Path, out: &Path, extra: &[&str]) -> std::process::Output {
-    tamp()
-        .args([
-            "run",
-            scene.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-            "--quiet",
-        ])
-        .args(extra)
-        .output()
-        .unwrap()
-}
+use common::{run, tamp};
 
 fn write_scene(dir: &Path, name: &str, scene: &Value) -> PathBuf {
     let path = dir.join(name);

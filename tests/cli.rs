@@ -1,27 +1,14 @@
 //! The CLI contract: `tamp run` outputs and provenance, exit 3 on instability, VTK
 //! frames that parse back, `tamp verify` exit codes.
 
+mod common;
+
 use serde_json::{Value, json};
-use std::process::Command;
+
+use common::{base, scene_in_tempdir};
 
 fn tamp(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_tamp"))
-        .args(args)
-        .output()
-        .unwrap()
-}
-
-fn base() -> Value {
-    serde_json::from_str(include_str!("scenes/base.json")).unwrap()
-}
-
-/// Write `scene` into a fresh temporary directory; return it, the scene path and the output path.
-fn scene_in_tempdir(scene: &Value) -> (tempfile::TempDir, std::path::PathBuf, std::path::PathBuf) {
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("scene.json");
-    std::fs::write(&path, scene.to_string()).unwrap();
-    let out = dir.path().join("out");
-    (dir, path, out)
+    common::tamp().args(args).output().unwrap()
 }
 
 #[test]
@@ -111,7 +98,7 @@ fn run_reads_the_scene_from_standard_input() {
     let bytes = std::fs::read(&scene).unwrap();
     for name in ["-", "/dev/stdin"] {
         let out = dir.path().join(format!("out_stdin{}", name.len()));
-        let mut child = Command::new(env!("CARGO_BIN_EXE_tamp"))
+        let mut child = common::tamp()
             .args(["run", "--quiet", name, "--out", out.to_str().unwrap()])
             .stdin(std::process::Stdio::piped())
             .stderr(std::process::Stdio::piped())

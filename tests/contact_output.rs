@@ -3,10 +3,11 @@
 //! particle's force column in trajectory.csv, and their moments (lever R − δ/2) to its
 //! torque column, to round-off; the VTK files parse and carry the same numbers.
 
+mod common;
+
 use serde_json::{Value, json};
 use std::collections::BTreeMap;
 use std::path::Path;
-use std::process::Command;
 use vtkio::model::{Attribute, DataSet, Piece};
 
 type V = [f64; 3];
@@ -74,20 +75,8 @@ fn check(mut s: Value, every: u64) -> (usize, usize, f64) {
     s["output"] = json!({"forces": true, "trajectory_every": every, "contacts_every": every,
         "vtk_every": every});
     let ids: Vec<u64> = (1..=s["particles"].as_array().unwrap().len() as u64).collect();
-    let dir = tempfile::tempdir().unwrap();
-    let scene = dir.path().join("scene.json");
-    std::fs::write(&scene, s.to_string()).unwrap();
-    let out = dir.path().join("out");
-    let o = Command::new(env!("CARGO_BIN_EXE_tamp"))
-        .args([
-            "run",
-            scene.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-            "--quiet",
-        ])
-        .output()
-        .unwrap();
+    let (_dir, scene, out) = common::scene_in_tempdir(&s);
+    let o = common::run(&scene, &out, &[]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
 
     let density = 2500.0;
@@ -201,7 +190,7 @@ fn check(mut s: Value, every: u64) -> (usize, usize, f64) {
 
 #[test]
 fn contact_forces_add_up_to_the_force_and_torque_columns() {
-    let base: Value = serde_json::from_str(include_str!("scenes/base.json")).unwrap();
+    let base = common::base();
     // Two glass spheres with friction and rotation, one straight above the other,
     // dropped on a floor: they land and rest stacked, so pairs and wall contacts both
     // carry load at the recorded steps.

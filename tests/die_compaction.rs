@@ -2,8 +2,10 @@
 //! resumed from its checkpoint writes the same files as the uninterrupted run, and a
 //! die-compaction scene with a broken rule is refused with exit 2 naming the field.
 
+mod common;
+
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
+use std::process::Stdio;
 use std::time::{Duration, Instant};
 
 /// 60 particles in a 16 µm die: fill, flatten, press to 50 MPa, checkpoint every
@@ -12,9 +14,7 @@ fn scene() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/tiny_die_compaction.scene.json")
 }
 
-fn tamp() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_tamp"))
-}
+use common::tamp;
 
 fn fresh(dir: &Path) {
     let _ = std::fs::remove_dir_all(dir);

@@ -4,6 +4,8 @@
 // NiAl's Poisson ratio 0.318 (Rojek 2016 Table 2) is a material constant, not 1/π.
 #![allow(clippy::approx_constant)]
 
+mod common;
+
 use serde_json::{Value, json};
 use tamp::contact::normal::{NormalLaw, NormalModel, PeakOverlap, Storakers};
 use tamp::error::TampError;
@@ -11,10 +13,7 @@ use tamp::particles::Vec3;
 use tamp::scene;
 use tamp::simulation::Simulation;
 
-fn built(v: &Value) -> scene::BuiltScene {
-    let s = scene::parse(&v.to_string()).expect("valid scene");
-    scene::build(&s).expect("builds")
-}
+use common::built;
 
 fn all_finite(sim: &Simulation) -> bool {
     let p = &sim.particles;
@@ -652,7 +651,7 @@ fn coincident_and_nearly_coincident_centres() {
 /// sign conventions make of inf − inf.
 #[test]
 fn an_overflowing_energy_ends_the_run_instead_of_reaching_an_output() {
-    let scene: Value = serde_json::from_str(include_str!("scenes/base.json")).unwrap();
+    let scene = common::base();
     let mut sim = built(&scene).sim;
     sim.particles.velocity[0] = Vec3::new(1e200, 0.0, 0.0);
     let mut series = tamp::output::series::Series::new(&[], &sim);

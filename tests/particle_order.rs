@@ -3,9 +3,10 @@
 //! up to the round-off of summing each particle's contact forces in another order;
 //! every output names particles by id.
 
+mod common;
+
 use serde_json::{Value, json};
 use std::collections::BTreeMap;
-use tamp::scene;
 use tamp::simulation::Simulation;
 
 /// 400 spheres deposited ballistically (created in the order they were dropped, not
@@ -35,7 +36,7 @@ fn bed(sort: bool) -> Value {
 }
 
 fn built(sort: bool) -> (Simulation, u64) {
-    let b = scene::build(&scene::parse(&bed(sort).to_string()).unwrap()).unwrap();
+    let b = common::built(&bed(sort));
     (b.sim, b.steps)
 }
 
@@ -103,22 +104,11 @@ fn sorting_renumbers_the_storage_but_not_the_ids_or_the_motion() {
 
 /// `tamp run` of the bed, sorted or not: its trajectory.csv rows at step 0.
 fn first_rows(sort: bool) -> Vec<String> {
-    let dir = tempfile::tempdir().unwrap();
-    let (scene, out) = (dir.path().join("scene.json"), dir.path().join("out"));
     let mut s = bed(sort);
     s["run"] = json!({"steps": 1});
     s["output"] = json!({"trajectory_every": 1});
-    std::fs::write(&scene, s.to_string()).unwrap();
-    let o = std::process::Command::new(env!("CARGO_BIN_EXE_tamp"))
-        .args([
-            "run",
-            scene.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-            "--quiet",
-        ])
-        .output()
-        .unwrap();
+    let (_dir, scene, out) = common::scene_in_tempdir(&s);
+    let o = common::run(&scene, &out, &[]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let text = std::fs::read_to_string(out.join("trajectory.csv")).unwrap();
     text.lines()

@@ -1,10 +1,12 @@
 //! Physics regressions found in review: each test states what it protects.
 
+mod common;
+
 use serde_json::json;
 use tamp::scene;
 
 fn build(v: serde_json::Value) -> scene::BuiltScene {
-    scene::build(&scene::parse(&v.to_string()).unwrap()).unwrap()
+    common::built(&v)
 }
 
 /// A sphere resting on a floor while sliding at t = 0: the first force evaluation

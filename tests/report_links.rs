@@ -3,9 +3,10 @@
 //! report directory, and each SVG there is linked from both, under its own case.
 //! (.ci/check-report-html checks the same page in a headless browser.)
 
+mod common;
+
 use std::collections::BTreeSet;
 use std::path::Path;
-use std::process::Command;
 
 /// The targets of `open … close` in `text`, e.g. `](` … `)` for markdown images.
 fn links(text: &str, open: &str, close: char) -> Vec<String> {
@@ -32,10 +33,7 @@ fn report_links_every_plot_and_only_existing_files() {
         args.extend(["--case".to_string(), c.to_string()]);
     }
     args.extend(["--report".to_string(), report.to_str().unwrap().to_string()]);
-    let o = Command::new(env!("CARGO_BIN_EXE_tamp"))
-        .args(&args)
-        .output()
-        .unwrap();
+    let o = common::tamp().args(&args).output().unwrap();
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
 
     let svgs: BTreeSet<String> = std::fs::read_dir(&report)

@@ -2,29 +2,16 @@
 //! settles stops before its maximum duration, one that cannot settle in time runs to
 //! it, and a scene without `until` writes the summary it always did.
 
-use serde_json::{Value, json};
-use std::process::Command;
+mod common;
 
-fn base() -> Value {
-    serde_json::from_str(include_str!("scenes/base.json")).unwrap()
-}
+use serde_json::{Value, json};
+
+use common::base;
 
 /// Run `scene`; return (exit code, stderr, summary.json).
 fn run(scene: &Value) -> (i32, String, Value) {
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("scene.json");
-    std::fs::write(&path, scene.to_string()).unwrap();
-    let out = dir.path().join("out");
-    let o = Command::new(env!("CARGO_BIN_EXE_tamp"))
-        .args([
-            "run",
-            path.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-            "--quiet",
-        ])
-        .output()
-        .unwrap();
+    let (_dir, path, out) = common::scene_in_tempdir(scene);
+    let o = common::run(&path, &out, &[]);
     let stderr = String::from_utf8_lossy(&o.stderr).to_string();
     let summary = std::fs::read_to_string(out.join("summary.json"))
         .map(|s| serde_json::from_str(&s).unwrap())

@@ -3,6 +3,8 @@
 //! writes a checkpoint when checkpoints are on, says how to go on, and exits with
 //! 128 + the signal; the resumed run writes what an uninterrupted one writes.
 
+mod common;
+
 use serde_json::{Value, json};
 use std::path::Path;
 use std::process::{Command, Output, Stdio};
@@ -11,7 +13,7 @@ use std::time::Duration;
 /// The two spheres of tests/scenes/base.json, run long enough (millions of steps)
 /// to be signalled while stepping.
 fn scene(dir: &Path, checkpoint_every: u64) -> std::path::PathBuf {
-    let mut s: Value = serde_json::from_str(include_str!("scenes/base.json")).unwrap();
+    let mut s = common::base();
     s["run"] = json!({"duration": 40.0});
     s["output"] = json!({"checkpoint_every": checkpoint_every});
     let path = dir.join("scene.json");
@@ -20,7 +22,7 @@ fn scene(dir: &Path, checkpoint_every: u64) -> std::path::PathBuf {
 }
 
 fn tamp(args: &[&str]) -> Command {
-    let mut c = Command::new(env!("CARGO_BIN_EXE_tamp"));
+    let mut c = common::tamp();
     c.args(args).arg("--quiet");
     c
 }

@@ -76,20 +76,20 @@ pub fn run_scene(
             "resuming from the flattened specimen in {}",
             specimen_path.display()
         );
-        saved.into_state(&sha, &specimen_path)?
+        saved.into_state(sha, &specimen_path)?
     } else {
-        let specimen = die_compaction::prepare(&scene, quiet)?;
+        let specimen = die_compaction::prepare(scene, quiet)?;
         if every > 0 {
-            checkpoint::write_checkpoint(&specimen_path, &Checkpoint::new(&sha, &specimen))?;
+            checkpoint::write_checkpoint(&specimen_path, &Checkpoint::new(sha, &specimen))?;
         }
         specimen
     };
-    let press_scene = die_compaction::press_scene(&scene, &specimen)?;
+    let press_scene = die_compaction::press_scene(scene, &specimen)?;
     let json = serde_json::to_vec_pretty(&press_scene).expect("scene serialises");
     output::write_atomic(&out_dir.join("press.scene.json"), &json)?;
     let state: Option<PressState> = if resume && checkpoint_path.exists() {
         let saved: Checkpoint<PressState> = checkpoint::read_checkpoint(&checkpoint_path)?;
-        let state = saved.into_state(&sha, &checkpoint_path)?;
+        let state = saved.into_state(sha, &checkpoint_path)?;
         eprintln!(
             "resuming the pressing from step {} ({})",
             state.pressing.steps,
@@ -100,9 +100,9 @@ pub fn run_scene(
         None
     };
     let mut write = |state: &PressState| {
-        checkpoint::write_checkpoint(&checkpoint_path, &Checkpoint::new(&sha, state))
+        checkpoint::write_checkpoint(&checkpoint_path, &Checkpoint::new(sha, state))
     };
-    let pressing = die_compaction::press(&scene, &specimen, quiet, state, every, &mut write)
+    let pressing = die_compaction::press(scene, &specimen, quiet, state, every, &mut write)
         .map_err(|e| match e {
             TampError::Interrupted {
                 signal,
