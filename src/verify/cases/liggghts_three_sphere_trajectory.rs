@@ -8,7 +8,7 @@
 //! round-off at every step.
 //!
 //! The deck is the one `tamp export-liggghts` / `tamp export-lammps` writes for this
-//! case's scene (reference_data/<peer>/run_exported.sh); the peer's dump, converted to
+//! case's scene (`reference_data/<peer>/run_exported.sh`); the peer's dump, converted to
 //! tamp's run layout, is `reference_data/<peer>/<case>/trajectory.csv`. The case refuses
 //! to compare when the recorded deck was exported from another version of the scene
 //! (the scene's SHA-256 is in the deck's header). Deviations are measured as
