@@ -512,30 +512,6 @@ pub fn run_cli(a: &Path, b: &Path, tolerances: Option<&Path>) -> Result<u8> {
     Ok(if comparison.passes() { 0 } else { 1 })
 }
 
-/// `quantities.csv` text of the layout above.
-pub fn quantities_csv(quantities: &[(String, f64)]) -> String {
-    let mut s = String::from("quantity,value\n");
-    for (q, v) in quantities {
-        let _ = writeln!(s, "{q},{v:e}");
-    }
-    s
-}
-
-/// Header of `trajectory.csv`.
-pub const TRAJECTORY_HEADER: &str = "step,id,radius,x,y,z,vx,vy,vz,omegax,omegay,omegaz";
-/// The columns `output.forces` appends: the particle's total force (contacts, walls and
-/// gravity) and torque at that step. `tamp compare` reads columns by name and ignores them.
-pub const TRAJECTORY_FORCE_COLUMNS: &str = ",fx,fy,fz,tx,ty,tz";
-
-/// One `trajectory.csv` row; full precision (Rust's shortest round-trip form).
-pub fn trajectory_row(out: &mut String, step: u64, id: u64, r: f64, x: &Vec3, v: &Vec3, w: &Vec3) {
-    let _ = writeln!(
-        out,
-        "{step},{id},{r:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e}",
-        x.x, x.y, x.z, v.x, v.y, v.z, w.x, w.y, w.z
-    );
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -40,7 +40,7 @@ struct RunState<'a> {
 fn record_trajectory(sim: &Simulation, out: &mut String, forces: bool) {
     let p = &sim.particles;
     for i in 0..p.len() {
-        crate::compare::trajectory_row(
+        crate::output::run_files::trajectory_row(
             out,
             sim.step,
             p.id[i],
@@ -193,9 +193,9 @@ pub fn run_scene(
         }
         series.record(&sim)?;
         if trajectory_every > 0 {
-            trajectory.push_str(crate::compare::TRAJECTORY_HEADER);
+            trajectory.push_str(crate::output::run_files::TRAJECTORY_HEADER);
             if forces {
-                trajectory.push_str(crate::compare::TRAJECTORY_FORCE_COLUMNS);
+                trajectory.push_str(crate::output::run_files::TRAJECTORY_FORCE_COLUMNS);
             }
             trajectory.push('\n');
             record_trajectory(&sim, &mut trajectory, forces);
@@ -320,7 +320,7 @@ pub fn run_scene(
     output::write_atomic(&out_dir.join("summary.json"), &json)?;
     output::write_atomic(
         &out_dir.join("quantities.csv"),
-        crate::compare::quantities_csv(&summary.quantities()).as_bytes(),
+        crate::output::run_files::quantities_csv(&summary.quantities()).as_bytes(),
     )?;
     if trajectory_every > 0 {
         output::write_atomic(&out_dir.join("trajectory.csv"), trajectory.as_bytes())?;

@@ -14,10 +14,10 @@
 //!   frame, or averaged over the frames from step `--average-from` on).
 
 use super::dump;
-use crate::compare::{TRAJECTORY_HEADER, quantities_csv, trajectory_row};
 use crate::error::Result;
 use crate::measure::bed::bulk_packing_fraction;
 use crate::measure::coordination::{CoordinationOptions, coordination};
+use crate::output::run_files::{TRAJECTORY_HEADER, quantities_csv, trajectory_row};
 use crate::particles::Vec3;
 use crate::space::Space;
 use std::path::Path;

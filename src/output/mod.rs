@@ -6,6 +6,7 @@ pub mod contacts;
 pub mod data_file;
 pub mod plot;
 pub mod progress;
+pub mod run_files;
 pub mod series;
 pub mod summary;
 pub mod views;

@@ -151,7 +151,7 @@ pub fn run_scene(
     output::write_atomic(&out_dir.join("summary.json"), &json)?;
     output::write_atomic(
         &out_dir.join("quantities.csv"),
-        crate::compare::quantities_csv(&summary.quantities()).as_bytes(),
+        crate::output::run_files::quantities_csv(&summary.quantities()).as_bytes(),
     )?;
     Ok(summary)
 }

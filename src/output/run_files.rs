@@ -1,0 +1,31 @@
+//! The two text files every run writes and `tamp compare` reads back, so that tamp's runs
+//! and the peers' imported dumps are compared in one layout (docs/compare.md):
+//! `quantities.csv` (`quantity,value` rows) and `trajectory.csv` (one row per particle and
+//! recorded step, full precision).
+
+use crate::particles::Vec3;
+use std::fmt::Write as _;
+
+/// `quantities.csv` text: a header and one `quantity,value` row each.
+pub fn quantities_csv(quantities: &[(String, f64)]) -> String {
+    let mut s = String::from("quantity,value\n");
+    for (q, v) in quantities {
+        let _ = writeln!(s, "{q},{v:e}");
+    }
+    s
+}
+
+/// Header of `trajectory.csv`.
+pub const TRAJECTORY_HEADER: &str = "step,id,radius,x,y,z,vx,vy,vz,omegax,omegay,omegaz";
+/// The columns `output.forces` appends: the particle's total force (contacts, walls and
+/// gravity) and torque at that step. `tamp compare` reads columns by name and ignores them.
+pub const TRAJECTORY_FORCE_COLUMNS: &str = ",fx,fy,fz,tx,ty,tz";
+
+/// One `trajectory.csv` row; full precision (Rust's shortest round-trip form).
+pub fn trajectory_row(out: &mut String, step: u64, id: u64, r: f64, x: &Vec3, v: &Vec3, w: &Vec3) {
+    let _ = writeln!(
+        out,
+        "{step},{id},{r:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e}",
+        x.x, x.y, x.z, v.x, v.y, v.z, w.x, w.y, w.z
+    );
+}
