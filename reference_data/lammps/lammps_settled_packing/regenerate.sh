@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Record (or re-run) the LAMMPS side of lammps_settled_packing: for seeds 1-5, export
+# Record (or re-run) the LAMMPS side of lammps_settled_packing: for seeds 1-10, export
 # the case's scene with that seed (tamp places the same 2000 spheres both codes start
 # from), run LAMMPS on one rank, measure the final frame with tamp's measures, and
 # collect one row per seed in results.csv.
@@ -16,7 +16,7 @@ scene=$here/../../../verification/lammps_settled_packing.scene.json
 # The scene's gravity is 9.81 m/s² along -z and its floor the plane z = 0.
 rows=$out/.results.csv.tmp
 echo "seed,packing_fraction,coordination_number,bottom_wall_force_over_weight,bed_height,mean_speed" > "$rows"
-for seed in 1 2 3 4 5; do
+for seed in 1 2 3 4 5 6 7 8 9 10; do
   d=$out/seed$seed
   rm -rf "$d"
   # Frames every 500 steps: the floor force is averaged over t = 0.4-0.5 s (step 80000 on).
