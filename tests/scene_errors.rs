@@ -353,6 +353,19 @@ fn tangential_parameters_must_match_the_law() {
     let mut s = base();
     s["contact"]["tangential"] = json!({"law": "haff_werner", "friction": 0.3, "damping": -1});
     expect_input_error(s, &["contact.tangential.damping: must be > 0 and finite"]);
+    let mut s = base();
+    s["contact"]["tangential"] =
+        json!({"law": "lammps_linear_history", "friction": 0.3, "stiffness": 0, "x_gamma_t": -0.5});
+    expect_input_error(
+        s,
+        &[
+            "contact.tangential.stiffness: must be > 0 and finite",
+            "contact.tangential.x_gamma_t: must be >= 0 and finite",
+        ],
+    );
+    let mut s = base();
+    s["contact"]["tangential"] = json!({"law": "lammps_linear_nohistory", "friction": 0.3, "stiffness": 1e3, "x_gamma_t": 1});
+    expect_input_error(s, &["contact.tangential: unknown field `stiffness`"]);
 }
 
 #[test]

@@ -331,11 +331,12 @@ pub trait TangentialModel: Copy + Debug + PartialEq {
 
     /// Its `tangential` model in LAMMPS's `pair granular` (`tamp export-lammps`): the
     /// words after `tangential`, with μ written as `{mu}`, or why LAMMPS has none. Only
-    /// `lammps_mindlin` has one: tamp's other spring laws cap the force at μ·max(F_n, 0)
-    /// where LAMMPS takes μ|F_n| (docs/lammps.md).
+    /// the `lammps_*` laws have one: tamp's other laws cap the force at μ·max(F_n, 0)
+    /// where LAMMPS takes μ|F_n|, and have no dashpot following the normal damping
+    /// (docs/lammps.md).
     fn lammps(&self) -> Result<String, NoLammpsModel> {
         Err(NoLammpsModel(format!(
-            "'{}' is none of LAMMPS's tangential models (its Coulomb limit or history differs from linear_history's and mindlin*'s); 'lammps_mindlin' reproduces LAMMPS's mindlin models",
+            "'{}' is none of LAMMPS's tangential models (its Coulomb limit, history or dashpot differs from theirs); 'lammps_mindlin', 'lammps_linear_history' and 'lammps_linear_nohistory' reproduce LAMMPS's mindlin*, linear_history and linear_nohistory",
             self.name()
         )))
     }
@@ -449,6 +450,7 @@ impl<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel> Comp
         pair: &PairProperties,
         normal_force: f64,
         normal_stiffness: f64,
+        normal_damping: f64,
         dt: f64,
     ) -> TangentialInput {
         TangentialInput {
@@ -462,6 +464,7 @@ impl<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel> Comp
             effective_radius: g.effective_radius,
             effective_shear_modulus: pair.effective_shear_modulus.unwrap_or(0.0),
             effective_mass: g.effective_mass,
+            normal_damping,
         }
     }
 
@@ -480,7 +483,7 @@ impl<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel> Comp
             effective_mass: 0.0,
             relative_velocity: Vec3::zeros(),
         };
-        Self::tangential_input(&g, pair, 0.0, normal_stiffness, 0.0)
+        Self::tangential_input(&g, pair, 0.0, normal_stiffness, 0.0, 0.0)
     }
 
     /// Evaluate the roles in their fixed order: normal, damping, tangential (limited
@@ -501,14 +504,18 @@ impl<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel> Comp
                 self.normal
                     .response(g.overlap, rate, g.effective_radius, pair, &mut state.normal);
             force.normal = elastic.force;
-            if D::ACTIVE {
-                force.normal += self
-                    .damping
+            let damping = if D::ACTIVE {
+                self.damping
                     .coefficient(g.effective_mass, elastic.stiffness)
-                    * rate;
+            } else {
+                0.0
+            };
+            if D::ACTIVE {
+                force.normal += damping * rate;
             }
             if T::ACTIVE {
-                let input = Self::tangential_input(g, pair, force.normal, elastic.stiffness, dt);
+                let input =
+                    Self::tangential_input(g, pair, force.normal, elastic.stiffness, damping, dt);
                 force.tangential = self.tangential.force(&input, &mut state.tangential);
             }
         } else if Self::HAS_STATE {

@@ -71,6 +71,7 @@ pub fn tangential_input(velocity: Vec3, dt: f64) -> TangentialInput {
         effective_radius: EFFECTIVE_RADIUS,
         effective_shear_modulus: EFFECTIVE_SHEAR_MODULUS,
         effective_mass: EFFECTIVE_MASS,
+        normal_damping: 0.0,
     }
 }
 
@@ -158,6 +159,8 @@ pub fn tangential_examples() -> Vec<TangentialExample> {
         storakers::Storakers::examples(),
         LiggghtsHistory::examples(),
         lammps_mindlin::LammpsMindlin::examples(),
+        lammps_linear_history::LammpsLinearHistory::examples(),
+        lammps_linear_nohistory::LammpsLinearNohistory::examples(),
     ]
     .concat()
 }

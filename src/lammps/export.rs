@@ -12,9 +12,9 @@
 //!   (`mix_stiffnessE`: 1/E* = (1 − ν_i²)/E_i + (1 − ν_j²)/E_j).
 //! - Each role's law says what it is in LAMMPS (contact/lammps.rs, `lammps()` on the
 //!   normal, damping and tangential laws); this file only asks, and refuses the field
-//!   of a law that has no LAMMPS model (of the tangential laws only `lammps_mindlin`
-//!   has one); a scene without friction writes `tangential linear_nohistory 0 0`, a
-//!   force of exactly zero. With spins and friction the scene must take LAMMPS's lever
+//!   of a law that has no LAMMPS model (of the tangential laws `lammps_mindlin`,
+//!   `lammps_linear_history` and `lammps_linear_nohistory` have one); a scene without
+//!   friction writes `tangential linear_nohistory 0 0`, a force of exactly zero. With spins and friction the scene must take LAMMPS's lever
 //!   arms (`contact.lever_arm` = `lammps`).
 //! - `limit_damping` is not written: off, as tamp's damping (the force may pull).
 //! - Fixed planes normal to an axis are `fix wall/gran granular` with the pair model and
@@ -498,6 +498,32 @@ mod tests {
             pair_model(&s).unwrap(),
             "hooke 1e6 0e0 damping velocity tangential linear_nohistory 0 0"
         );
+    }
+
+    #[test]
+    fn lammps_linear_laws_are_written_as_linear_history_and_linear_nohistory() {
+        for (tangential, words) in [
+            (
+                r#"{"law": "lammps_linear_history", "stiffness": 2e5, "x_gamma_t": 0.5, "friction": 0.3}"#,
+                "linear_history 2e5 5e-1 {mu}",
+            ),
+            (
+                r#"{"law": "lammps_linear_nohistory", "x_gamma_t": 1.0, "friction": 0.3}"#,
+                "linear_nohistory 1e0 {mu}",
+            ),
+        ] {
+            let s = two_spheres(
+                &format!(
+                    r#"{{"normal": {{"law": "linear", "stiffness": 1e6}}, "damping": {{"kind": "constant", "gamma_n": 0.5}}, "tangential": {tangential}, "lever_arm": "lammps"}}"#
+                ),
+                r#", "rotation": {}"#,
+            );
+            assert!(refusals(&s).is_empty(), "{:?}", refusals(&s));
+            assert_eq!(
+                pair_model(&s).unwrap(),
+                format!("hooke 1e6 5e-1 damping velocity tangential {words}")
+            );
+        }
     }
 
     #[test]

@@ -30,6 +30,7 @@
 //! law (`mindlin_deresiewicz`). The lever arms are the scene's (`contact.lever_arm`;
 //! `lammps` for LAMMPS's). docs/lammps.md has the measured agreement.
 
+use super::cundall_strack::rotate_into_plane;
 use super::{TangentialInput, TangentialLaw, TangentialModel};
 use crate::contact::lammps::NoLammpsModel;
 use crate::contact::model::{ContactState, Needs};
@@ -39,6 +40,40 @@ use crate::particles::Vec3;
 /// gran_sub_mod_tangential.cpp's EPSILON: the history is turned into the contact
 /// plane only when its normal component exceeds this fraction of F_s.
 const TURN_THRESHOLD: f64 = 1e-10;
+
+/// LAMMPS's frame update (`rotate_rescale_vec`, shared by its history models): the
+/// history h is turned into the contact plane, its length kept, only when its normal
+/// component times `scale` (the stiffness for a displacement history, 1 for a force
+/// history) exceeds 1e-10 F_s.
+#[inline(always)]
+pub(super) fn turn_above_threshold(h: &mut Vec3, normal: &Vec3, scale: f64, limit: f64) {
+    if h.dot(normal).abs() * scale > TURN_THRESHOLD * limit {
+        *h = rotate_into_plane(*h, normal);
+    }
+}
+
+/// LAMMPS's Coulomb step (shared by its history models): a force F beyond F_s is
+/// scaled onto the cone and the history set to the elastic part F − F_damp, times
+/// `to_history` (−1/k for a displacement history, 1 for a force history); with an
+/// empty history the force is dropped instead.
+#[inline(always)]
+pub(super) fn onto_the_cone(
+    f: &mut Vec3,
+    h: &mut Vec3,
+    damping: Vec3,
+    limit: f64,
+    to_history: f64,
+) {
+    let magnitude = f.norm();
+    if magnitude > limit {
+        if h.norm() != 0.0 {
+            *f *= limit / magnitude;
+            *h = (*f - damping) * to_history;
+        } else {
+            *f = Vec3::zeros();
+        }
+    }
+}
 
 /// Which of LAMMPS's four Mindlin models.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Deserialize, serde::Serialize)]
@@ -160,23 +195,9 @@ impl TangentialModel for LammpsMindlin {
         if self.variant.rescale() && a < state.contact_radius {
             *h *= a / state.contact_radius;
         }
-        let n = &input.normal;
-        let along = h.dot(n);
-        let turn = if force_history {
-            along.abs() > TURN_THRESHOLD * limit
-        } else {
-            along.abs() * k_scaled > TURN_THRESHOLD * limit
-        };
-        if turn {
-            let length = h.norm();
-            *h -= n * along;
-            let projected = h.norm();
-            *h *= if projected > 0.0 {
-                length / projected
-            } else {
-                0.0
-            };
-        }
+        // A force history is compared with F_s as it is, a displacement times k_a.
+        let scale = if force_history { 1.0 } else { k_scaled };
+        turn_above_threshold(h, &input.normal, scale, limit);
         if force_history {
             *h += input.tangential_velocity * (-k_scaled * input.dt);
         } else {
@@ -186,19 +207,8 @@ impl TangentialModel for LammpsMindlin {
             state.contact_radius = a;
         }
         let mut f = if force_history { *h } else { *h * -k_scaled };
-        let magnitude = f.norm();
-        if magnitude > limit {
-            if h.norm() != 0.0 {
-                f *= limit / magnitude;
-                *h = if force_history {
-                    f
-                } else {
-                    f * (-1.0 / k_scaled)
-                };
-            } else {
-                f = Vec3::zeros();
-            }
-        }
+        let to_history = if force_history { 1.0 } else { -1.0 / k_scaled };
+        onto_the_cone(&mut f, h, Vec3::zeros(), limit, to_history);
         f
     }
 

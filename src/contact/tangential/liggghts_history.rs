@@ -253,6 +253,7 @@ mod tests {
             effective_radius: R_EFF,
             effective_shear_modulus: G_EFF,
             effective_mass: M_EFF,
+            normal_damping: 0.0,
         }
     }
 

@@ -7,6 +7,8 @@ pub mod coulomb;
 pub mod cundall_strack;
 pub mod haff_werner;
 pub mod incremental;
+pub mod lammps_linear_history;
+pub mod lammps_linear_nohistory;
 pub mod lammps_mindlin;
 pub mod liggghts_history;
 pub mod mindlin_deresiewicz;
@@ -51,6 +53,10 @@ pub enum TangentialLaw {
     /// LAMMPS 22 Jul 2025 `tangential mindlin`, `mindlin/force`, `mindlin_rescale`,
     /// `mindlin_rescale/force`.
     LammpsMindlin(lammps_mindlin::LammpsMindlin),
+    /// LAMMPS 22 Jul 2025 `tangential linear_history`.
+    LammpsLinearHistory(lammps_linear_history::LammpsLinearHistory),
+    /// LAMMPS 22 Jul 2025 `tangential linear_nohistory`.
+    LammpsLinearNohistory(lammps_linear_nohistory::LammpsLinearNohistory),
 }
 
 /// `each_tangential!(law, t => expr)`: `expr` with `t` bound to the law's own type,
@@ -68,6 +74,8 @@ macro_rules! each_tangential {
             $crate::contact::tangential::TangentialLaw::Storakers($t) => $body,
             $crate::contact::tangential::TangentialLaw::LiggghtsHistory($t) => $body,
             $crate::contact::tangential::TangentialLaw::LammpsMindlin($t) => $body,
+            $crate::contact::tangential::TangentialLaw::LammpsLinearHistory($t) => $body,
+            $crate::contact::tangential::TangentialLaw::LammpsLinearNohistory($t) => $body,
         }
     };
 }
@@ -88,6 +96,10 @@ pub struct TangentialInput {
     pub effective_shear_modulus: f64,
     /// m*, kg (the tangential damping of `liggghts_history`).
     pub effective_mass: f64,
+    /// The normal damping's coefficient c_n of this step (F_n,damp = c_n dδ/dt),
+    /// N·s/m, 0 without damping: LAMMPS's `damp_prefactor` η_n, which its
+    /// `linear_history` and `linear_nohistory` scale into their tangential dashpot.
+    pub normal_damping: f64,
 }
 
 impl TangentialLaw {

@@ -1,25 +1,33 @@
-//! Cross-check against LAMMPS 22 Jul 2025 (update 4): a sphere hits a flat wall of its
+//! Cross-checks against LAMMPS 22 Jul 2025 (update 4): a sphere hits a flat wall of its
 //! own material obliquely (incidence θ from the normal, 5° to 85°), `pair granular` /
-//! `fix wall/gran granular` with `hertz/material` and each of LAMMPS's Mindlin tangential
-//! models against the tamp law that reproduces it: `mindlin`, `mindlin/force`,
-//! `mindlin_rescale`, `mindlin_rescale/force` with `damping coeff_restitution` e = 0.9
-//! against `lammps_mindlin` with `liggghts_restitution` e = 0.9, and `mindlin/force`
-//! undamped against `mindlin_no_slip` (equal when the normal force never pulls). Both
-//! codes take LAMMPS's lever arms (`contact.lever_arm` = `lammps`). LAMMPS side:
-//! `reference_data/lammps/lammps_oblique_wall_impact_mindlin/results.csv`, one row per
-//! model and angle (`reference_data/lammps/run_oblique_wall_mindlin.sh`); tamp starts
-//! from the incident velocity components recorded there (the same doubles) and runs the
-//! same number of steps.
+//! `fix wall/gran granular` with each of LAMMPS's history-dependent tangential models
+//! against the tamp law that reproduces it. Both codes take LAMMPS's lever arms
+//! (`contact.lever_arm` = `lammps`); tamp starts from the incident velocity components
+//! recorded by LAMMPS (the same doubles) and runs the same number of steps.
 //!
-//! Each quantity is the largest relative deviation over the models and angles,
+//! - `lammps_oblique_wall_impact_mindlin` (`mindlin`): `hertz/material` with `mindlin`,
+//!   `mindlin/force`, `mindlin_rescale`, `mindlin_rescale/force` and `damping
+//!   coeff_restitution` e = 0.9 against `lammps_mindlin` with `liggghts_restitution`
+//!   e = 0.9, and `mindlin/force` undamped against `mindlin_no_slip` (equal when the
+//!   normal force never pulls); `reference_data/lammps/run_oblique_wall_mindlin.sh`.
+//! - `lammps_oblique_wall_impact_linear` (`linear`): `hooke` and `hertz/material` with
+//!   `linear_history` and `linear_nohistory` and `damping coeff_restitution` e = 0.9 or
+//!   `velocity` against `lammps_linear_history` / `lammps_linear_nohistory` with
+//!   `linear` / `hertz` and `liggghts_restitution` / `constant`;
+//!   `reference_data/lammps/run_oblique_wall_linear.sh`.
+//!
+//! Each quantity is the largest relative deviation over the runs,
 //! |tamp − LAMMPS| / |LAMMPS|, of the rebound tangential velocity, the rebound spin ω·R
 //! and the rebound normal velocity; the per-run table goes to
-//! `<report>/lammps_oblique_wall_impact_mindlin.csv`.
+//! `<report>/<case>.csv`.
 
 use super::liggghts_inputs::Mismatches;
 use super::liggghts_oblique_wall_impact::rebound;
-use crate::contact::damping::{Damping, LiggghtsRestitution};
+use crate::contact::damping::{Constant, Damping, LiggghtsRestitution};
 use crate::contact::lever_arm::LeverArm;
+use crate::contact::normal::{Hertz, Linear, NormalLaw};
+use crate::contact::tangential::lammps_linear_history::LammpsLinearHistory;
+use crate::contact::tangential::lammps_linear_nohistory::LammpsLinearNohistory;
 use crate::contact::tangential::lammps_mindlin::{LammpsMindlin, Variant};
 use crate::contact::tangential::{MindlinNoSlip, TangentialLaw};
 use crate::error::{Result, TampError};
@@ -30,7 +38,7 @@ use std::fmt::Write as _;
 
 /// One LAMMPS run at one angle, as `run_oblique_wall_mindlin.sh` writes it.
 #[derive(Debug, Deserialize)]
-struct Row {
+struct MindlinRow {
     tangential: String,
     damping: String,
     restitution_in: f64,
@@ -50,8 +58,152 @@ struct Row {
     omega_y: f64,
 }
 
-/// tamp's tangential law and damping for a LAMMPS tangential and damping model.
-fn tamp_laws(row: &Row) -> Result<(TangentialLaw, Option<Damping>)> {
+/// One LAMMPS run at one angle, as `run_oblique_wall_linear.sh` writes it: the normal
+/// model with k_n (0 for `hertz/material`), the damping model with its damp slot, the
+/// tangential model with k_t (0 for `linear_nohistory`) and x_γ,t.
+#[derive(Debug, Deserialize)]
+struct LinearRow {
+    normal: String,
+    normal_stiffness: f64,
+    damping: String,
+    damp: f64,
+    tangential: String,
+    tangential_stiffness: f64,
+    x_gamma_t: f64,
+    angle_deg: f64,
+    tangential_speed: f64,
+    normal_speed: f64,
+    friction: f64,
+    time_step: f64,
+    steps: u64,
+    youngs_modulus: f64,
+    poisson_ratio: f64,
+    density: f64,
+    radius: f64,
+    initial_gap: f64,
+    vx: f64,
+    vz: f64,
+    omega_y: f64,
+}
+
+/// One LAMMPS run, whichever case recorded it: tamp's laws for it, what LAMMPS ran
+/// with, and its rebound.
+struct Run {
+    /// "<models> <angle>°", for the table and messages.
+    label: String,
+    /// LAMMPS's models, the first columns of the table.
+    models: String,
+    /// `None`: the scene's own normal law.
+    normal: Option<NormalLaw>,
+    tangential: TangentialLaw,
+    damping: Option<Damping>,
+    angle_deg: f64,
+    tangential_speed: f64,
+    normal_speed: f64,
+    friction: f64,
+    time_step: f64,
+    steps: u64,
+    youngs_modulus: f64,
+    poisson_ratio: f64,
+    density: f64,
+    radius: f64,
+    initial_gap: f64,
+    vx: f64,
+    vz: f64,
+    omega_y: f64,
+}
+
+impl MindlinRow {
+    fn run(self) -> Result<Run> {
+        let (tangential, damping) = tamp_laws(&self)?;
+        Ok(Run {
+            label: format!("{} {} {}°", self.tangential, self.damping, self.angle_deg),
+            models: format!("{},{}", self.tangential, self.damping),
+            normal: None,
+            tangential,
+            damping,
+            angle_deg: self.angle_deg,
+            tangential_speed: self.tangential_speed,
+            normal_speed: self.normal_speed,
+            friction: self.friction,
+            time_step: self.time_step,
+            steps: self.steps,
+            youngs_modulus: self.youngs_modulus,
+            poisson_ratio: self.poisson_ratio,
+            density: self.density,
+            radius: self.radius,
+            initial_gap: self.initial_gap,
+            vx: self.vx,
+            vz: self.vz,
+            omega_y: self.omega_y,
+        })
+    }
+}
+
+impl LinearRow {
+    /// `hooke k` is `linear` k, `hertz/material` `hertz`; `coeff_restitution` e is
+    /// `liggghts_restitution` e, `velocity` η `constant` γ_n = η; `linear_history k_t x`
+    /// and `linear_nohistory x` are the laws of their names.
+    fn run(self) -> Result<Run> {
+        let unknown = |what: &str, name: &str| {
+            TampError::Other(format!(
+                "results.csv: LAMMPS {what} '{name}' has no tamp law in this case"
+            ))
+        };
+        let normal = match self.normal.as_str() {
+            "hooke" => NormalLaw::Linear(Linear {
+                stiffness: self.normal_stiffness,
+            }),
+            "hertz/material" => NormalLaw::Hertz(Hertz {}),
+            other => return Err(unknown("normal model", other)),
+        };
+        let damping = match self.damping.as_str() {
+            "coeff_restitution" => Damping::LiggghtsRestitution(LiggghtsRestitution {
+                restitution: self.damp,
+            }),
+            "velocity" => Damping::Constant(Constant { gamma_n: self.damp }),
+            other => return Err(unknown("damping model", other)),
+        };
+        let tangential = match self.tangential.as_str() {
+            "linear_history" => TangentialLaw::LammpsLinearHistory(LammpsLinearHistory {
+                stiffness: self.tangential_stiffness,
+                x_gamma_t: self.x_gamma_t,
+            }),
+            "linear_nohistory" => TangentialLaw::LammpsLinearNohistory(LammpsLinearNohistory {
+                x_gamma_t: self.x_gamma_t,
+            }),
+            other => return Err(unknown("tangential model", other)),
+        };
+        let models = format!("{} {},{}", self.normal, self.tangential, self.damping);
+        Ok(Run {
+            label: format!(
+                "{} {} {} {}°",
+                self.normal, self.tangential, self.damping, self.angle_deg
+            ),
+            models,
+            normal: Some(normal),
+            tangential,
+            damping: Some(damping),
+            angle_deg: self.angle_deg,
+            tangential_speed: self.tangential_speed,
+            normal_speed: self.normal_speed,
+            friction: self.friction,
+            time_step: self.time_step,
+            steps: self.steps,
+            youngs_modulus: self.youngs_modulus,
+            poisson_ratio: self.poisson_ratio,
+            density: self.density,
+            radius: self.radius,
+            initial_gap: self.initial_gap,
+            vx: self.vx,
+            vz: self.vz,
+            omega_y: self.omega_y,
+        })
+    }
+}
+
+/// tamp's tangential law and damping for a LAMMPS Mindlin model and damping.
+fn tamp_laws(row: &MindlinRow) -> Result<(TangentialLaw, Option<Damping>)> {
     let variant = Variant::ALL
         .into_iter()
         .find(|v| v.keyword() == row.tangential);
@@ -73,7 +225,7 @@ fn tamp_laws(row: &Row) -> Result<(TangentialLaw, Option<Damping>)> {
 }
 
 /// Differences between the scene and the inputs LAMMPS ran with.
-fn mismatches(scene: &Scene, row: &Row) -> Mismatches {
+fn mismatches(scene: &Scene, row: &Run) -> Mismatches {
     let mut out = Mismatches::default();
     out.check_material_and_step(
         scene,
@@ -105,27 +257,49 @@ fn deviation(tamp: f64, lammps: f64) -> f64 {
     (tamp - lammps).abs() / lammps.abs()
 }
 
-pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
+/// `lammps_oblique_wall_impact_mindlin`.
+pub fn mindlin(ctx: &CaseContext) -> Result<Vec<Measured>> {
+    let rows: Vec<MindlinRow> = ctx.peer_results("lammps")?;
+    let runs = rows
+        .into_iter()
+        .map(MindlinRow::run)
+        .collect::<Result<Vec<_>>>()?;
+    compare(ctx, &runs, "tangential,damping")
+}
+
+/// `lammps_oblique_wall_impact_linear`.
+pub fn linear(ctx: &CaseContext) -> Result<Vec<Measured>> {
+    let rows: Vec<LinearRow> = ctx.peer_results("lammps")?;
+    let runs = rows
+        .into_iter()
+        .map(LinearRow::run)
+        .collect::<Result<Vec<_>>>()?;
+    compare(ctx, &runs, "models,damping")
+}
+
+/// Every run in tamp against its LAMMPS rebound; `columns` names the `models` columns
+/// of the table.
+fn compare(ctx: &CaseContext, runs: &[Run], columns: &str) -> Result<Vec<Measured>> {
     let base = ctx.scene()?;
-    let rows: Vec<Row> = ctx.peer_results("lammps")?;
     let mut worst = [0.0_f64; 3];
-    let mut table = String::from(
-        "tangential,damping,angle_deg,tamp_law,lammps_vt,tamp_vt,deviation_vt,lammps_omega_r,tamp_omega_r,deviation_omega_r,lammps_vn,tamp_vn,deviation_vn\n",
+    let mut table = format!(
+        "{columns},angle_deg,tamp_law,lammps_vt,tamp_vt,deviation_vt,lammps_omega_r,tamp_omega_r,deviation_omega_r,lammps_vn,tamp_vn,deviation_vn\n",
     );
-    for row in &rows {
-        let run = format!("{} {} {}°", row.tangential, row.damping, row.angle_deg);
-        mismatches(&base, row).refuse_any(&run)?;
-        let (law, damping) = tamp_laws(row)?;
+    for row in runs {
+        mismatches(&base, row).refuse_any(&row.label)?;
         let mut s = base.clone();
-        if let Some(t) = s.contact.tangential.as_mut() {
-            t.law = law;
+        if let Some(normal) = row.normal {
+            s.contact.normal = normal;
         }
-        s.contact.damping = damping;
+        if let Some(t) = s.contact.tangential.as_mut() {
+            t.law = row.tangential;
+        }
+        s.contact.damping = row.damping;
         let (vx, vz, omega_r) = rebound(
             &s,
             [row.tangential_speed, row.normal_speed],
             row.steps,
-            &run,
+            &row.label,
         )?;
         let pairs = [
             (vx, row.vx),
@@ -134,11 +308,10 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         ];
         let _ = write!(
             table,
-            "{},{},{},{}",
-            row.tangential,
-            row.damping,
+            "{},{},{}",
+            row.models,
             row.angle_deg,
-            law.name()
+            row.tangential.name()
         );
         for (k, (tamp, lammps)) in pairs.into_iter().enumerate() {
             let d = deviation(tamp, lammps);

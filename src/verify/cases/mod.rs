@@ -107,7 +107,11 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("lammps_die_compaction_small", die_compaction_replay::lammps),
     (
         "lammps_oblique_wall_impact_mindlin",
-        lammps_oblique_wall_impact::run,
+        lammps_oblique_wall_impact::mindlin,
+    ),
+    (
+        "lammps_oblique_wall_impact_linear",
+        lammps_oblique_wall_impact::linear,
     ),
     (
         "lammps_three_sphere_trajectory",

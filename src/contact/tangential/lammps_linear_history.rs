@@ -1,0 +1,186 @@
+//! LAMMPS's `pair granular` tangential model `linear_history k_t x_γ,t μ` (scene law
+//! `lammps_linear_history`), reproduced operation for operation from LAMMPS 22 Jul
+//! 2025 (update 4), src/GRANULAR/gran_sub_mod_tangential.cpp
+//! `GranSubModTangentialLinearHistory::calculate_forces`, with the normal damping's
+//! prefactor from gran_sub_mod_damping.cpp and F_s from granular_model.cpp. tamp's
+//! notation: `normal` n from the partner to particle i, v_t the tangential velocity of
+//! i's contact point relative to the partner's (spins included), F_n the total normal
+//! force, elastic plus damping. Per step:
+//!
+//! ```text
+//!   γ_t = x_γ,t η_n            (η_n: the normal damping's coefficient this step,
+//!                               F_n,damp = η_n dδ/dt; 0 without damping)
+//!   F_s = μ |F_n|              (`set_fncrit`: Fncrit = |F_n,elastic + F_n,damp|)
+//!   if k_t |h·n| > 1e-10 F_s:  h ← (h − (h·n) n) · |h| / |h − (h·n) n|
+//!                              (turned into the contact plane, length kept)
+//!   h ← h + v_t Δt
+//!   F_t = −k_t h − γ_t v_t
+//!   if |F_t| > F_s and |h| ≠ 0:  F_t ← F_t F_s/|F_t|,  h ← −(F_t + γ_t v_t)/k_t
+//!   if |F_t| > F_s and |h| = 0:  F_t ← 0
+//! ```
+//!
+//! So it is a Cundall–Strack spring with a tangential dashpot that follows the normal
+//! damping (the dashpot counts in the Coulomb test, and the spring keeps only the
+//! elastic part of the force on the cone), with Coulomb's limit on |F_n| (friction
+//! acts while the damped normal force pulls at the end of a contact) and the history
+//! turned only above the threshold. tamp's `cundall_strack` instead caps at
+//! μ·max(F_n, 0), turns every step and has no dashpot. The history h (m) starts at
+//! zero when a contact forms and is dropped when it ends, as in tamp. The lever arms
+//! are the scene's (`contact.lever_arm`; `lammps` for LAMMPS's). Parameters: k_t
+//! (N/m), x_γ,t (dimensionless), μ from the material pair. docs/lammps.md has the
+//! measured agreement.
+
+use super::lammps_mindlin::{onto_the_cone, turn_above_threshold};
+use super::{TangentialInput, TangentialLaw, TangentialModel};
+use crate::contact::lammps::NoLammpsModel;
+use crate::contact::model::Roles;
+use crate::contact::registry::{self, TangentialExample};
+use crate::error::Errors;
+use crate::particles::Vec3;
+
+/// `{"law": "lammps_linear_history", "stiffness": k_t, "x_gamma_t": x, "friction": μ}`.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct LammpsLinearHistory {
+    /// k_t, N/m.
+    pub stiffness: f64,
+    /// x_γ,t: the tangential dashpot over the normal one, γ_t = x_γ,t η_n.
+    pub x_gamma_t: f64,
+}
+
+impl TangentialModel for LammpsLinearHistory {
+    type State = Vec3;
+
+    fn name(&self) -> &'static str {
+        "lammps_linear_history"
+    }
+
+    /// From rest, one step, sticking: F = −k_t v_t Δt − x_γ,t η_n v_t; sliding:
+    /// Coulomb's −μ|F_n| v̂_t (the dashpot inside the cone).
+    fn examples() -> Vec<TangentialExample> {
+        let law = LammpsLinearHistory {
+            stiffness: 1e6,
+            x_gamma_t: 0.5,
+        };
+        let tangential = TangentialLaw::LammpsLinearHistory(law);
+        let eta = 2.0;
+        let stick = TangentialInput {
+            normal_damping: eta,
+            ..registry::sticking_input()
+        };
+        let slide = TangentialInput {
+            normal_damping: eta,
+            ..registry::sliding_input()
+        };
+        let v = stick.tangential_velocity;
+        vec![
+            TangentialExample {
+                law: tangential,
+                input: stick,
+                force: -v * (1e6 * stick.dt) - v * (0.5 * eta),
+            },
+            TangentialExample {
+                law: tangential,
+                input: slide,
+                force: registry::sliding_force(&slide),
+            },
+        ]
+    }
+
+    /// k_t > 0 (LAMMPS takes k_t = 0, then divides by it on the cone), x_γ,t ≥ 0.
+    fn check(&self, path: &str, _: Roles, e: &mut Errors) {
+        e.positive(format!("{path}.stiffness"), self.stiffness);
+        e.non_negative(format!("{path}.x_gamma_t"), self.x_gamma_t);
+    }
+
+    fn lammps(&self) -> Result<String, NoLammpsModel> {
+        Ok(format!(
+            "linear_history {} {} {{mu}}",
+            crate::output::data_file::g(self.stiffness),
+            crate::output::data_file::g(self.x_gamma_t)
+        ))
+    }
+
+    #[inline]
+    fn force(&self, input: &TangentialInput, h: &mut Vec3) -> Vec3 {
+        let k = self.stiffness;
+        let damping = self.x_gamma_t * input.normal_damping;
+        let limit = input.normal_force.abs() * input.friction;
+        turn_above_threshold(h, &input.normal, k, limit);
+        *h += input.tangential_velocity * input.dt;
+        let dashpot = input.tangential_velocity * -damping;
+        let mut f = *h * -k + dashpot;
+        onto_the_cone(&mut f, h, dashpot, limit, -1.0 / k);
+        f
+    }
+
+    fn stiffness(&self, _: &TangentialInput) -> f64 {
+        self.stiffness
+    }
+
+    /// ½ k_t |h|².
+    fn energy(&self, _: &TangentialInput, h: &Vec3) -> f64 {
+        0.5 * self.stiffness * h.norm_squared()
+    }
+
+    fn stiffness_before_contact(&self, _: f64) -> f64 {
+        self.stiffness
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn law() -> LammpsLinearHistory {
+        LammpsLinearHistory {
+            stiffness: 1e4,
+            x_gamma_t: 0.5,
+        }
+    }
+
+    fn input(v: Vec3, normal_force: f64, normal_damping: f64) -> TangentialInput {
+        TangentialInput {
+            normal: Vec3::z(),
+            tangential_velocity: v,
+            dt: 1e-3,
+            friction: 0.5,
+            normal_force,
+            normal_damping,
+            ..registry::sticking_input()
+        }
+    }
+
+    #[test]
+    fn on_the_cone_the_spring_keeps_only_the_elastic_part() {
+        // k h = 1e4·(3, 4)e-3 = (30, 40) N, γ_t v = 0.5·1·(3, 4) = (1.5, 2) N: |F| = 52.5 N
+        // > μ|F_n| = 0.5·20 = 10 N, so F = −10 v̂ = (−6, −8) N and
+        // h = −(F + γ_t v)/k = (4.5, 6)e-4 m.
+        let mut h = Vec3::zeros();
+        let f = law().force(&input(Vec3::new(3.0, 4.0, 0.0), -20.0, 1.0), &mut h);
+        approx::assert_relative_eq!(f.x, -6.0, max_relative = 1e-14);
+        approx::assert_relative_eq!(f.y, -8.0, max_relative = 1e-14);
+        approx::assert_relative_eq!(h.x, 4.5e-4, max_relative = 1e-13);
+        approx::assert_relative_eq!(h.y, 6e-4, max_relative = 1e-13);
+    }
+
+    #[test]
+    fn the_history_is_turned_only_above_the_threshold() {
+        // A history tilted out of the plane by 1e-12 rad keeps its normal component:
+        // k|h·n| = 1e4·1e-3·1e-12 = 1e-11 N is below 1e-10 F_s = 5e-9 N (F_s = 0.5·100 N,
+        // above the spring's 10 N); tilted by 1e-3 it is turned into the plane with its
+        // length kept.
+        for (tilt, turned) in [(1e-12, false), (1e-3, true)] {
+            let mut h = Vec3::new(1e-3, 0.0, 1e-3 * tilt);
+            let length = h.norm();
+            law().force(&input(Vec3::zeros(), 100.0, 0.0), &mut h);
+            assert_eq!(h.z == 0.0, turned, "tilt {tilt}");
+            approx::assert_relative_eq!(h.norm(), length, max_relative = 1e-14);
+        }
+    }
+
+    #[test]
+    fn names_its_lammps_keyword_and_coefficients() {
+        assert_eq!(law().lammps().unwrap(), "linear_history 1e4 5e-1 {mu}");
+    }
+}
