@@ -95,13 +95,16 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
             "pair granular has no van der Waals (Hamaker) cohesion model",
         );
     }
-    if let Some(r) = &scene.rotation
-        && r.inertia_scale != 1.0
-    {
-        refuse(
+    match &scene.rotation {
+        None if scene.contact.tangential.is_some() => refuse(
+            "rotation".into(),
+            "LAMMPS's fix nve/sphere always integrates rotation: a scene with friction must enable rotation",
+        ),
+        Some(r) if r.inertia_scale != 1.0 => refuse(
             "rotation.inertia_scale".into(),
             "LAMMPS's fix nve/sphere uses the moment of inertia of a solid sphere (scale 1)",
-        );
+        ),
+        _ => {}
     }
     if scene.growth.is_some() {
         refuse(
@@ -524,6 +527,19 @@ mod tests {
                 format!("hooke 1e6 5e-1 damping velocity tangential {words}")
             );
         }
+    }
+
+    /// LAMMPS's `fix nve/sphere` always turns the particles, so friction without tamp's
+    /// rotation would run different physics in the deck.
+    #[test]
+    fn friction_without_rotation_is_refused_naming_rotation() {
+        let contact = r#"{"normal": {"law": "linear", "stiffness": 1e6}, "tangential": {"law": "lammps_linear_history", "stiffness": 2e5, "x_gamma_t": 0, "friction": 0.3}, "lever_arm": "lammps"}"#;
+        let paths: Vec<String> = refusals(&two_spheres(contact, ""))
+            .into_iter()
+            .map(|(p, _)| p)
+            .collect();
+        assert_eq!(paths, ["rotation"]);
+        assert!(refusals(&two_spheres(contact, r#", "rotation": {}"#)).is_empty());
     }
 
     #[test]
