@@ -24,7 +24,8 @@ pub const WALTON_BRAUN_RATIOS: [f64; 4] = [1.25, 2.0, 4.0, 10.0];
 pub const WALTON_BRAUN_RATIO_MAX: f64 = 10.0;
 
 /// The strongest damping of the damped Hertz calibration: the ξ LIGGGHTS's relation
-/// gives for e = 0.1 (the law's own rebound is then 0.13, `damped_hertz`).
+/// gives for e = 0.1 (the law's own rebound is then 0.1: that relation is the law's,
+/// `damped_hertz`).
 pub fn hertz_damped_xi_max() -> f64 {
     LiggghtsModel::Hertz.critical_fraction(DAMPED_RESTITUTION_MIN)
 }

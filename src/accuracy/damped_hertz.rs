@@ -10,11 +10,12 @@
 //!   x'' = −x^{3/2} − c x^{1/4} x',   c = 2√(3/2) ξ,   x(0) = 0, x'(0) = 1,
 //!
 //! one equation for every mass, radius, modulus and speed (Tsuji 1992: the restitution
-//! depends on ξ alone). It has no closed form: the restitutions the peers' damping
-//! coefficients are "built to give" are fits (LIGGGHTS's √(5/6) relation, Marshall's
-//! polynomial for LAMMPS `tsuji`; liggghts.rs, tsuji.rs) that miss the law's own
-//! rebound by far more than 1e-3. So the reference of the accuracy setting is this
-//! one-parameter equation solved by classical Runge–Kutta, not by tamp's force loop:
+//! depends on ξ alone). Its restitution is LIGGGHTS's relation ξ = −√(5/6) ln e/√(ln²e + π²)
+//! (liggghts.rs; RK4 of this equation at step 5e-5 meets it within 2e-7 at e = 0.9, 0.7, 0.5, 0.1, the gap halving with the step), but its
+//! overlap, force and duration have no closed form, and LAMMPS `tsuji` (Marshall's fit,
+//! tsuji.rs) rebounds at 0.616 when asked for 0.5. So the reference of the accuracy
+//! setting is this one-parameter equation solved by classical Runge–Kutta, not by
+//! tamp's force loop:
 //! a different integrator on the equation as the source writes it, converged far below
 //! what the setting is asked for (unit tests: halving its step moves nothing above
 //! 1e-10, and ξ = 0 gives Johnson's Hertz closed forms).

@@ -163,9 +163,9 @@ the model covers every ratio up to 10 (above, an explicit accuracy is refused). 
 |measured − reference| / reference (src/accuracy/impact.rs; the rebound velocity's is the
 restitution's). The references are closed forms (linear: Zhong 2009 eqs 7–9; Hertz:
 Johnson 1985 §11.4; Walton–Braun: Zhong eq 16 with e = √(k₁/k₂) and the flight through
-the permanent set), except damped Hertz: its impact has no closed form (the restitutions
-LIGGGHTS's and LAMMPS's coefficients are built to give are fits, off by up to 0.12 from
-the law's own rebound, e.g. LAMMPS `tsuji` e = 0.5 rebounds at 0.616), but in the units
+the permanent set), except damped Hertz: its overlap, force and duration have no closed
+form (its restitution is LIGGGHTS's relation e(ξ), which RK4 of the equation below meets within
+2e-7, the gap halving with the step; LAMMPS `tsuji`'s fit is not: asked for 0.5 it rebounds at 0.616), but in the units
 δ_s = (m* v²/K)^{2/5}, δ_s/v, K δ_s^{3/2} it is one equation per ξ, x'' = −x^{3/2} −
 2√(3/2) ξ x^{1/4} x', solved by classical Runge–Kutta at 20 000 steps per unit time
 (src/accuracy/damped_hertz.rs: halving its step moves nothing by 1e-10, and ξ = 0 gives
