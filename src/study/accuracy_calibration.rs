@@ -168,7 +168,7 @@ form (its restitution is LIGGGHTS's relation e(ξ), which RK4 of the equation be
 2e-7, the gap halving with the step; LAMMPS `tsuji`'s fit is not: asked for 0.5 it rebounds at 0.616), but in the units
 δ_s = (m* v²/K)^{2/5}, δ_s/v, K δ_s^{3/2} it is one equation per ξ, x'' = −x^{3/2} −
 2√(3/2) ξ x^{1/4} x', solved by classical Runge–Kutta at 20 000 steps per unit time
-(src/accuracy/damped_hertz.rs: halving its step moves nothing by 1e-10, and ξ = 0 gives
+(src/accuracy/damped_hertz.rs: halving its step moves nothing by 1e-7, and ξ = 0 gives
 Johnson's closed forms), a different integrator from tamp's. Fit per law
 and quantity, error ≈ C (Δt/t_c)^p: p by least squares on the worst error at each
 step over Δt/t_c ≤ 1/16, C the envelope (largest error/(Δt/t_c)^p over Δt/t_c ≤ 1/8), so
