@@ -134,19 +134,19 @@ fn accuracy_is_checked_and_exclusive() {
 fn accuracy_refuses_a_walton_braun_unloading_stiffer_than_calibrated() {
     let mut s = base();
     s["contact"] = json!({"normal": {"law": "walton_braun", "loading_stiffness": 1e5,
-                                     "unloading_stiffness": 4e5}});
+                                     "unloading_stiffness": 2e6}});
     s["time_step"] = json!({"accuracy": 1e-3});
     expect_input_error(
         s,
         &[
             "time_step.accuracy",
-            "unloading_stiffness is 4.000 times the loading_stiffness, above 2",
+            "unloading_stiffness is 20.000 times the loading_stiffness, above 10",
         ],
     );
     // Without a stated step the default accuracy gives way to alpha = 0.2.
     let mut s = base();
     s["contact"] = json!({"normal": {"law": "walton_braun", "loading_stiffness": 1e5,
-                                     "unloading_stiffness": 4e5}});
+                                     "unloading_stiffness": 2e6}});
     s["time_step"] = json!({});
     let built = tamp::scene::build(&tamp::scene::parse(&s.to_string()).unwrap());
     assert!(built.is_ok(), "{:?}", built.err());
@@ -167,6 +167,23 @@ fn hertz_accuracy_without_characteristic_velocity_states_its_step() {
     ] {
         assert!(stderr.contains(said), "{said}: {stderr}");
     }
+}
+
+/// The implied velocity names particles by their scene id (1-based, trajectory.csv's),
+/// not by their 0-based place in memory.
+#[test]
+fn implied_velocity_names_particles_by_scene_id() {
+    let mut s = base();
+    s["time_step"] = json!({"accuracy": 1e-2});
+    s.as_object_mut().unwrap().remove("gravity");
+    s["particles"][1]["velocity"] = json!([0, 0, -1]);
+    s["run"] = json!({"steps": 1});
+    let (code, stderr) = run_text(&s.to_string());
+    assert_eq!(code, 0, "{stderr}");
+    assert!(
+        stderr.contains("the relative speed of particles 1 and 2"),
+        "{stderr}"
+    );
 }
 
 #[test]

@@ -8,6 +8,11 @@
 //!   F(t) = k δ + γ_n dδ/dt, largest at first touch (γ_n v) or where dF/dt = 0;
 //! - Hertz (Johnson 1985 §11.4): δ_max = (15 m* v²/(16 E* √R*))^{2/5},
 //!   t_c = 3.21807 (m*/k̃)^{2/5} v^{−1/5}, F_max = 4/3 E* √R* δ_max^{3/2}, e = 1;
+//! - Hertz with the dashpot ξ · 2√(m* k_n) (`critical_fraction`, and the
+//!   `liggghts_restitution` and `tsuji` kinds that run as one): the four quantities
+//!   scale with δ_s = (m* v²/K)^{2/5}, δ_s/v and K δ_s^{3/2} (K = 4/3 E*√R*), times
+//!   numbers that depend on ξ alone, from the dimensionless equation of
+//!   `damped_hertz` (no closed form exists; that module says how it is solved);
 //! - Walton–Braun (Zhong eq 16): δ_max = v √(m*/k₁), F_max = k₁ δ_max,
 //!   e = √(k₁/k₂); the force lasts a quarter period on each branch,
 //!   (π/2)(√(m*/k₁) + √(m*/k₂)), and ends at the permanent set δ₀ = δ_max (1 − k₁/k₂),
@@ -15,6 +20,7 @@
 //!
 //! The contact duration is the time the overlap is positive (what the probe measures).
 
+use super::damped_hertz::unit_impact;
 use crate::contact::ContactLaw;
 use crate::contact::damping::{Damping, critical_damping};
 use crate::contact::normal::hertz::{hertz_contact_duration, hertz_force, hertz_max_overlap};
@@ -26,6 +32,10 @@ use std::f64::consts::PI;
 /// The impact quantities the accuracy setting promises.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Impact {
+    /// The time the error model measures the step in, s: the contact duration, except
+    /// for Walton–Braun, where it is the stiffer branch's π√(m*/k₂) (that branch is
+    /// the shortest part of the contact, and the step must resolve it at any k₂/k₁).
+    pub time_scale: f64,
     /// From first touch to separation, s.
     pub duration: f64,
     pub max_overlap: f64,
@@ -86,6 +96,7 @@ pub fn closed_form(
                 return None; // overdamped: no rebound
             }
             Some(Impact {
+                time_scale: c.contact_duration(),
                 duration: c.contact_duration(),
                 max_overlap: c.max_overlap(v),
                 max_force: linear_max_force(&c, k, gamma, v),
@@ -96,6 +107,7 @@ pub fn closed_form(
             let e = pair.effective_modulus?;
             let max_overlap = hertz_max_overlap(m, v, r, e);
             Some(Impact {
+                time_scale: hertz_contact_duration(m, v, r, e),
                 duration: hertz_contact_duration(m, v, r, e),
                 max_overlap,
                 max_force: hertz_force(max_overlap, r, e),
@@ -113,12 +125,40 @@ pub fn closed_form(
             let restitution = (k1 / k2).sqrt();
             let set = max_overlap * (1.0 - k1 / k2);
             Some(Impact {
+                time_scale: PI * (m / k1.max(k2)).sqrt(),
                 duration: PI / 2.0 * ((m / k1).sqrt() + (m / k2).sqrt()) + set / (restitution * v),
                 max_overlap,
                 max_force: k1 * max_overlap,
                 restitution,
             })
         }
+        (NormalLaw::Hertz(_), Some(_)) => {
+            let xi = hertz_dashpot_fraction(law)?;
+            let k = 4.0 / 3.0 * pair.effective_modulus? * r.sqrt();
+            let overlap = (m * v * v / k).powf(0.4);
+            let u = unit_impact(xi)?;
+            Some(Impact {
+                time_scale: u.duration * overlap / v,
+                duration: u.duration * overlap / v,
+                max_overlap: u.max_overlap * overlap,
+                max_force: u.max_force * k * overlap.powf(1.5),
+                restitution: u.restitution,
+            })
+        }
+        _ => None,
+    }
+}
+
+/// ξ of a Hertz law's dashpot ξ · 2√(m* k_n), whichever kind the scene wrote it as
+/// (`None`: no such dashpot; a constant γ_n makes the restitution depend on the speed,
+/// so it has no one-parameter form).
+pub fn hertz_dashpot_fraction(law: &ContactLaw) -> Option<f64> {
+    match (law.normal, law.damping?) {
+        (NormalLaw::Hertz(_), Damping::CriticalFraction(c)) => Some(c.xi),
+        (NormalLaw::Hertz(_), Damping::LiggghtsRestitution(d)) => {
+            Some(d.with(&law.normal).ok()?.xi)
+        }
+        (NormalLaw::Hertz(_), Damping::Tsuji(d)) => Some(d.with(&law.normal).ok()?.xi),
         _ => None,
     }
 }

@@ -4,6 +4,7 @@
 //! the laws' impact closed forms (docs/accuracy-cost.md).
 
 pub mod calibration;
+pub mod damped_hertz;
 pub mod impact;
 pub mod model;
 pub mod step;

@@ -58,7 +58,7 @@ impl ErrorModel {
 }
 
 /// The model of the scene's law; `None` where the calibration has none (laws with
-/// no impact closed form, Hertz with a dashpot, cohesion). Friction does not enter:
+/// no impact closed form, Hertz with a constant γ_n, cohesion). Friction does not enter:
 /// it does not change a head-on impact.
 pub fn for_law(law: &ContactLaw) -> Option<&'static ErrorModel> {
     let name = match (law.normal, law.damping, law.cohesion) {
@@ -69,6 +69,13 @@ pub fn for_law(law: &ContactLaw) -> Option<&'static ErrorModel> {
         }
         (NormalLaw::Hertz(_), None, None) => "hertz",
         (NormalLaw::WaltonBraun(_), None, None) => "walton_braun",
+        (
+            NormalLaw::Hertz(_),
+            Some(
+                Damping::CriticalFraction(_) | Damping::LiggghtsRestitution(_) | Damping::Tsuji(_),
+            ),
+            None,
+        ) => "hertz_damped",
         _ => return None,
     };
     super::calibration::MODELS.iter().find(|m| m.law == name)

@@ -1,14 +1,15 @@
 //! The step that delivers a requested accuracy: Δt = (Δt/t_c)_a · min t_c, with
-//! (Δt/t_c)_a from the law's error model (`model`) and t_c the closed-form duration
-//! (`impact`) of the shortest impact the scene can have at its characteristic
+//! (Δt/t_c)_a from the law's error model (`model`) and t_c the time scale of the
+//! closed form (`impact`: the contact duration, for Walton–Braun the stiffer branch's
+//! π√(m*/k₂)) of the shortest impact the scene can have at its characteristic
 //! velocity: each body against an identical one (m* = m/2, R* = R/2; the shortest
 //! of its pairs, since t_c grows with m*) and against each wall (m* = m, R* = R),
 //! bodies still to be poured at their smallest radius.
 //! The step never exceeds the default α = 0.2 times the critical step (Rojek eq 26):
 //! at a loose accuracy, stability and not accuracy sets it.
 
-use super::calibration::{DAMPED_RESTITUTION_MIN, WALTON_BRAUN_RATIO_MAX};
-use super::impact::closed_form;
+use super::calibration::{DAMPED_RESTITUTION_MIN, WALTON_BRAUN_RATIO_MAX, hertz_damped_xi_max};
+use super::impact::{closed_form, hertz_dashpot_fraction};
 use super::model::{ErrorModel, for_law};
 use crate::contact::normal::{NormalLaw, WaltonBraun};
 use crate::material::PairProperties;
@@ -31,6 +32,8 @@ pub struct Choice {
     pub dt: f64,
     /// The shortest closed-form contact duration, s.
     pub contact_duration: f64,
+    /// The shortest time scale of the error model (`Impact::time_scale`), s.
+    pub time_scale: f64,
     pub model: &'static ErrorModel,
     /// True when α = 0.2 times the critical step is smaller than the accuracy's step.
     pub stability_bound: bool,
@@ -53,7 +56,7 @@ pub fn choose(
     let law = &sim.law;
     let model = for_law(law).ok_or_else(|| {
         format!(
-            "the contact law ({}{}{}) has no error model: only linear (with or without constant or critical_fraction damping), hertz and walton_braun without damping or cohesion are calibrated (docs/accuracy-cost.md); give time_step.alpha or time_step.fixed",
+            "the contact law ({}{}{}) has no error model: only linear (undamped, or with constant or critical_fraction damping), hertz (undamped, or with critical_fraction, liggghts_restitution or tsuji damping) and walton_braun, without cohesion, are calibrated (docs/accuracy-cost.md); give time_step.alpha or time_step.fixed",
             law.normal.name(),
             law.damping.map_or(String::new(), |d| format!(" + {} damping", d.name())),
             law.cohesion.map_or("", |_| " + cohesion"),
@@ -91,6 +94,15 @@ pub fn choose(
             * r.powi(3);
         bodies.push((m, r, s.material));
     }
+    if model.law == "hertz_damped"
+        && let Some(xi) = hertz_dashpot_fraction(law)
+        && xi > hertz_damped_xi_max()
+    {
+        return Err(format!(
+            "the damping is xi = {xi:.4} of critical beside hertz, above {:.4}, the strongest damping the error model is calibrated for (LIGGGHTS's xi for e = {DAMPED_RESTITUTION_MIN}; docs/accuracy-cost.md); give time_step.alpha or time_step.fixed",
+            hertz_damped_xi_max()
+        ));
+    }
     let duration = |m: f64, r: f64, pair: &PairProperties| {
         closed_form(law, m, r, pair, speed).map(|i| {
             if model.law == "linear_damped" && i.restitution < DAMPED_RESTITUTION_MIN {
@@ -99,13 +111,13 @@ pub fn choose(
                     i.restitution
                 ))
             } else {
-                Ok(i.duration)
+                Ok((i.time_scale, i.duration))
             }
         })
     };
     // A lone particle meets only walls.
     let pairs = p.len() + sim.sources.iter().map(|s| s.remaining).sum::<usize>() > 1;
-    let mut shortest = f64::INFINITY;
+    let (mut shortest, mut shortest_contact) = (f64::INFINITY, f64::INFINITY);
     for &(m, r, material) in &bodies {
         let mut candidates = Vec::new();
         if pairs {
@@ -120,7 +132,10 @@ pub fn choose(
         }
         for t in candidates {
             match t.transpose()? {
-                Some(t) if t > 0.0 && t.is_finite() => shortest = shortest.min(t),
+                Some((t, c)) if t > 0.0 && t.is_finite() => {
+                    shortest = shortest.min(t);
+                    shortest_contact = shortest_contact.min(c);
+                }
                 _ => {
                     return Err(format!(
                         "the {} law gives no finite contact duration for a body of radius {r:e} m and mass {m:e} kg at {speed:e} m/s: check the materials' youngs_modulus, poisson_ratio and density",
@@ -137,7 +152,8 @@ pub fn choose(
     let by_stability = critical.map_or(f64::INFINITY, |c| STABILITY_ALPHA * c);
     Ok(Choice {
         dt: by_accuracy.min(by_stability),
-        contact_duration: shortest,
+        contact_duration: shortest_contact,
+        time_scale: shortest,
         model,
         stability_bound: by_stability < by_accuracy,
     })

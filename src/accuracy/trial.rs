@@ -42,9 +42,9 @@ pub struct Outcome {
 }
 
 impl Outcome {
-    /// The step over the closed-form contact duration.
+    /// The step over the error model's time scale (`Impact::time_scale`).
     pub fn step_ratio(&self) -> f64 {
-        self.dt / self.exact.duration
+        self.dt / self.exact.time_scale
     }
 }
 
@@ -141,6 +141,7 @@ impl Trial {
         };
         Ok(Outcome {
             measured: Impact {
+                time_scale: exact.time_scale,
                 duration: c.duration,
                 max_overlap: c.max_overlap,
                 max_force: c.max_force,

@@ -1,6 +1,7 @@
 //! The characteristic velocity a scene implies when it does not give one: the
 //! largest normal approach speed its contacts can see, bounded from what the scene
-//! states at t = 0. For two bodies it is their relative speed (the normal part of it
+//! states at t = 0. Particles are named by their scene id (1-based, as
+//! trajectory.csv prints them). For two bodies it is their relative speed (the normal part of it
 //! at impact is at most this); a scene can fix it with
 //! `time_step.characteristic_velocity`. The candidates, the largest of which is used:
 //!
@@ -48,7 +49,10 @@ pub fn implied(sim: &Simulation) -> Implied {
                 offer_to(
                     &mut best,
                     (p.velocity[i] - p.velocity[j]).norm(),
-                    format!("the relative speed of particles {i} and {j}"),
+                    format!(
+                        "the relative speed of particles {} and {}",
+                        p.id[i], p.id[j]
+                    ),
                 );
             }
         }
@@ -60,7 +64,8 @@ pub fn implied(sim: &Simulation) -> Implied {
             &mut best,
             2.0 * v,
             format!(
-                "twice the fastest particle's speed (particle {i}; {n} particles, too many to pair)"
+                "twice the fastest particle's speed (particle {}; {n} particles, too many to pair)",
+                p.id[i]
             ),
         );
     }
@@ -74,7 +79,10 @@ pub fn implied(sim: &Simulation) -> Implied {
             offer_to(
                 &mut best,
                 (p.velocity[i] - wall).norm(),
-                format!("the speed of particle {i} relative to wall '{}'", w.name),
+                format!(
+                    "the speed of particle {} relative to wall '{}'",
+                    p.id[i], w.name
+                ),
             );
         }
     }

@@ -63,7 +63,7 @@ pub fn measure() -> Result<Vec<CalibrationRow>> {
         eprintln!("{:<20} t_c = {:.4e} s", trial.name, exact.duration);
         for &ratio in &step_ratios() {
             for &phase in &TOUCH_PHASES {
-                let o = trial.run(json!({"fixed": ratio * exact.duration}), phase)?;
+                let o = trial.run(json!({"fixed": ratio * exact.time_scale}), phase)?;
                 let errors = o.measured.relative_errors(&o.exact);
                 for (q, e) in QUANTITIES.iter().zip(errors) {
                     rows.push(CalibrationRow {
@@ -151,18 +151,32 @@ pub fn section(rows: &[CalibrationRow]) -> String {
 `tamp study accuracy-calibration --out docs` (src/study/accuracy_calibration.rs,
 the impacts in src/accuracy/calibration.rs): two equal steel spheres (R = 1 mm,
 ρ = 7800 kg/m³, E = 200 GPa, ν = 0.3) meet head-on at 1 m/s; the linear laws take
-k = 10⁶ N/m (Walton–Braun k₂ = 2 k₁), the damped linear law γ_n for e = 0.9, 0.5 and
-0.1. Each runs with a fixed step Δt = t_c/4 … t_c/1024 (t_c the closed-form contact
-duration) from four initial gaps 1, 1.25, 1.5, 1.75 steps of travel, so first touch
-falls at four places within a step. Error: |measured − closed form| / closed form
-(src/accuracy/impact.rs; the rebound velocity's is the restitution's). Fit per law
+k = 10⁶ N/m (Walton–Braun k₂/k₁ = 1.25, 2, 4 and 10), the damped linear law γ_n for
+e = 0.9, 0.5 and 0.1, the damped Hertz law (dashpot ξ · 2√(m* k_n): `critical_fraction`,
+and `liggghts_restitution` and `tsuji`, which run as one) the ξ LIGGGHTS's relation gives
+for e = 0.9, 0.5 and 0.1 (ξ = 0.0306, 0.197, 0.540). Each runs with a fixed step
+Δt = t_c/4 … t_c/1024 from four initial gaps 1, 1.25, 1.5, 1.75 steps of travel, so first
+touch falls at four places within a step. t_c is the closed-form contact duration, except
+for Walton–Braun, where it is the stiffer branch's π√(m*/k₂): that branch is the shortest
+part of the contact, and measured in it the constants hold from k₂/k₁ = 1.25 to 10, so
+the model covers every ratio up to 10 (above, an explicit accuracy is refused). Error:
+|measured − reference| / reference (src/accuracy/impact.rs; the rebound velocity's is the
+restitution's). The references are closed forms (linear: Zhong 2009 eqs 7–9; Hertz:
+Johnson 1985 §11.4; Walton–Braun: Zhong eq 16 with e = √(k₁/k₂) and the flight through
+the permanent set), except damped Hertz: its overlap, force and duration have no closed
+form (its restitution is LIGGGHTS's relation e(ξ), which RK4 of the equation below meets within
+2e-7, the gap halving with the step; LAMMPS `tsuji`'s fit is not: asked for 0.5 it rebounds at 0.616), but in the units
+δ_s = (m* v²/K)^{2/5}, δ_s/v, K δ_s^{3/2} it is one equation per ξ, x'' = −x^{3/2} −
+2√(3/2) ξ x^{1/4} x', solved by classical Runge–Kutta at 20 000 steps per unit time
+(src/accuracy/damped_hertz.rs: halving its step moves nothing by 1e-7, and ξ = 0 gives
+Johnson's closed forms), a different integrator from tamp's. Fit per law
 and quantity, error ≈ C (Δt/t_c)^p: p by least squares on the worst error at each
 step over Δt/t_c ≤ 1/16, C the envelope (largest error/(Δt/t_c)^p over Δt/t_c ≤ 1/8), so
 the model bounds the calibration's errors; the model never takes a step above t_c/8
 (at t_c/4 the errors are 10–80 % and not yet on the power law). These constants are checked in as
 `accuracy::calibration::MODELS`; `time_step.accuracy = a` takes the largest
 Δt/t_c = min(1/8, min over the quantities of (a/C)^{1/p}); a damped linear contact
-with e < 0.1 (beyond the calibration) is refused.
+with e < 0.1, or a damped Hertz one with ξ > 0.540 (beyond the calibration), is refused.
 
 | law | quantity | p | C | Δt/t_c at 1e-2 | 1e-3 | 1e-4 | 1e-5 |
 |---|---|---|---|---|---|---|---|
@@ -190,7 +204,37 @@ with e < 0.1 (beyond the calibration) is refused.
          every quantity of the damped law is first order (its C grows with the damping: the \
          envelope is set by e = 0.1, the strongest damping calibrated). The Hertz and linear \
          forces are continuous at touch; their slope jumps (Hertz's is 0 then grows as \
-         √δ), which leaves them second order.\n\n",
+         √δ), which leaves them second order. Damped Hertz is first order too (p = 1.02–1.15) \
+         although its dashpot force ξ·2√(m* k_n)·δ' starts from 0 at touch: a dashpot \
+         sees the half-step velocity v_{n+½} (src/integrate.rs), an O(Δt) lag, which is \
+         first order whenever the damping force matters; the damped linear law has both \
+         causes.\n\n\
+         **Laws without an error model** (an explicit `time_step.accuracy` is refused \
+         with exit 2 naming `time_step.accuracy` and the law; a scene that states no \
+         step keeps α = 0.2 with a note): Hertz with a constant γ_n (its restitution \
+         depends on the speed, so it has no one-parameter reference), `hysteretic`, \
+         `kuwabara_kono`, `storakers`, `thornton`, `plastic_cylinder`, any law with \
+         cohesion (`van_der_waals`), and Walton–Braun with k₂ > 10 k₁. Thornton 1997's \
+         restitution, maximum overlap and force have closed forms (its duration has \
+         none), but its model is not built yet.\n\n\
+         **Why `sliding_oblique_impact` does not reach 1e-4.** With \
+         `tamp study accuracy-cost --scales 1,0.5,0.25,0.125,0.0625 --case \
+         sliding_oblique_impact`, six of its seven tangential laws stay within 3.5e-14 of \
+         the rigid-body sliding limit Δv_t = μ (1 + e) v_n at every scale; only the \
+         `walton_braun` tangential law moves, 1.6e-5 off at scale 0.125 and 7.1e-5 at \
+         0.0625 (tolerance 1e-9), and the case fails there on it alone. It is the reference, \
+         not tamp: Walton and Braun's law reaches the Coulomb cap only asymptotically, \
+         ΔF = k₀ ((μN − F)/(μN − F*))^{1/3} Δs (Zhong 2009 eq 27), so while N grows \
+         the force lags the cap by the fraction g at which k₀ v_t g^{1/3} Δt keeps up \
+         with μ Ṅ Δt, g = (μ Ṅ/(k₀ v_t))³, independent of Δt: about (0.3 × 2e5 N/s / \
+         (2e6 N/m × 0.5 m/s))³ ≈ 2e-4 at this impact's mean rate of loading F_max/(t_c/2) = 1.1 N/5.5 µs (an estimate of the order, not a fit). At the \
+         case's own step the first increment of a step overshoots the cap and is clipped \
+         to μN, which hides the lag; as Δt → 0 the run converges to the law's lagging \
+         force, not to the sliding limit. The limit holds for that law only to O(g), so \
+         the case's 1e-9 tolerance is valid at its own step and not under refinement; \
+         the other six laws (which jump to the cap within a step) are the ones that \
+         test the sliding limit to round-off. Neither end of contact nor round-off \
+         enters: the other laws' errors stay at 1e-14 at 16 times more steps.\n\n",
     );
     s
 }
