@@ -13,10 +13,10 @@
 //!   z axis, infinite; tamp's ends above the punch: the same while no particle
 //!   leaves), the floor as `zplane 0 NULL`, both fixed;
 //! - the punch as `fix wall/gran/region` on a `region plane` whose `move` is the
-//!   displacement variable `dz` = Σ_k v_k min(max(t − t_k, 0), T), the piecewise
-//!   linear stroke tamp's replay evaluates (`Stroke::displacement`); LAMMPS gives a
-//!   moving region the velocity (dz(t) − dz(t − Δt))/Δt, the chord over the step,
-//!   as tamp's displacement motion does;
+//!   displacement variable `dz`, the piecewise linear stroke tamp's replay evaluates
+//!   (`Stroke::displacement`) written as a table lookup (`punch_displacement`);
+//!   LAMMPS gives a moving region the velocity (dz(t) − dz(t − Δt))/Δt, the chord
+//!   over the step, as tamp's displacement motion does;
 //! - the walls' friction μ_w is the scene's for (particle material, wall material);
 //!   LAMMPS gives the wall the sphere's E and ν, so the wall material must have the
 //!   particles' (refused otherwise);
@@ -91,6 +91,47 @@ pub fn die_refusals(scene: &Scene) -> Vec<(String, String)> {
         ));
     }
     out
+}
+
+/// The deck lines defining `dz`, the punch face's displacement at step s of the
+/// one-run replay: on segment j = ⌊s/N⌋ (N steps per record),
+///   dz(s) = d_j + c_j (s − jN),  d_j = H_j − H₀,  c_j = (H_{j+1} − H_j)/N,
+/// the stroke linear between records and exactly the recorded height at each
+/// (dz(jN) = d_j, a number of the deck). d and c are LAMMPS vector-style variables
+/// of constant lists (parsed once); `seg` = 1 + ⌊s/N⌋ indexes them (LAMMPS vectors
+/// count from 1; the run's last step, s = nN, takes the extra entry d_n, c_n = 0).
+/// Why a lookup: LAMMPS re-parses an equal-style formula at every step, and the
+/// sum over the 50 segments (Σ_k v_k clamp(t − t_k, 0, T)) cost ~9 times the
+/// contact forces, its ramp form Σ_k (v_k − v_{k−1})(t − t_k)(t > t_k) still
+/// twice the lookup (docs/lammps.md).
+fn punch_displacement(stroke: &die_replay::Stroke) -> String {
+    let (d, c) = displacement_table(stroke);
+    let list = |v: &[f64]| v.iter().map(|&x| g(x)).collect::<Vec<_>>().join(",");
+    let n = stroke.steps_per_record;
+    format!(
+        "# the punch face's displacement (m) at each record and per step after it\n\
+         variable     dzd vector [{}]\n\
+         variable     dzc vector [{}]\n\
+         variable     seg equal 1+floor(step/{n})\n\
+         variable     dz equal v_dzd[v_seg]+v_dzc[v_seg]*(step-{n}*(v_seg-1))\n",
+        list(&d),
+        list(&c)
+    )
+}
+
+/// d_j = H_j − H₀ and c_j = (H_{j+1} − H_j)/N for j = 0 … n (H_0 = H₀; c_n = 0).
+fn displacement_table(stroke: &die_replay::Stroke) -> (Vec<f64>, Vec<f64>) {
+    let heights: Vec<f64> = std::iter::once(stroke.h0)
+        .chain(stroke.heights.iter().copied())
+        .collect();
+    let n = stroke.steps_per_record as f64;
+    let d = heights.iter().map(|h| h - stroke.h0).collect();
+    let c = heights
+        .windows(2)
+        .map(|w| (w[1] - w[0]) / n)
+        .chain(std::iter::once(0.0))
+        .collect();
+    (d, c)
 }
 
 /// Fill, flatten and press `scene` in tamp, then write the LAMMPS replay deck into
@@ -212,27 +253,11 @@ pub fn export_pressing(scene: &Scene, sha: &str, out_dir: &Path) -> Result<Expor
             g(d.z)
         );
     }
-    // Σ_k v_k min(max(t − t_k, 0), T), term by term as tamp's `Stroke::displacement`.
-    // LAMMPS's formulas have no min/max of numbers; with u = t − t_k,
-    // u·(u > 0)·(u < T) + T·(u ≥ T) is the same value.
-    let terms: Vec<String> = (0..stroke.heights.len())
-        .map(|k| {
-            let (u, t) = (
-                format!("(time-({}))", g(k as f64 * stroke.interval)),
-                g(stroke.interval),
-            );
-            format!(
-                "({})*({u}*({u}>0.0)*({u}<{t})+{t}*({u}>={t}))",
-                g(stroke.speed(k))
-            )
-        })
-        .collect();
     let _ = writeln!(
         deck,
         "fix          die all wall/gran granular {wall} zcylinder {} contacts\n\
          fix          floor all wall/gran granular {wall} zplane 0e0 NULL contacts\n\
-         # the punch face's displacement (m): the stroke, linear between records\n\
-         variable     dz equal \"{}\"\n\
+         {}\
          region       punch plane 0 0 {} 0 0 -1 side in move NULL NULL v_dz units box\n\
          fix          punch all wall/gran/region granular {wall} region punch contacts\n\
          fix          integr all nve/sphere\n\
@@ -247,14 +272,13 @@ pub fn export_pressing(scene: &Scene, sha: &str, out_dir: &Path) -> Result<Expor
          thermo_modify norm no lost ignore format float %.17g\n\
          thermo       {n}",
         g(radius),
-        terms.join("+"),
+        punch_displacement(&stroke),
         g(specimen.h0),
         " %.17g".repeat(14)
     );
     // One run for the whole stroke: LAMMPS's setup before a further `run` would
     // give the moving region the velocity 0 (Region::set_velocity at a repeated
-    // step) and kick the particles with the forces of that state. The formula is
-    // re-parsed at every step, most of the deck's cost (measured in docs/lammps.md).
+    // step) and kick the particles with the forces of that state.
     let _ = writeln!(deck, "run          {steps}");
     crate::output::write_atomic(&out_dir.join("in.tamp"), deck.as_bytes())?;
     Ok(Exported {
@@ -295,6 +319,82 @@ mod tests {
         other.materials[1].youngs_modulus = Some(2e11);
         let paths: Vec<String> = die_refusals(&other).into_iter().map(|(p, _)| p).collect();
         assert_eq!(paths, ["die_compaction.wall_material"]);
+    }
+
+    /// LAMMPS's value of `dz` at step `s`, read back from the deck's lines: the
+    /// vectors' numbers as LAMMPS parses them, `seg` and `dz` as it evaluates them.
+    fn lammps_dz(lines: &str, s: u64) -> f64 {
+        let list = |name: &str| -> Vec<f64> {
+            let l = lines
+                .lines()
+                .find(|l| l.starts_with(&format!("variable     {name} vector [")))
+                .expect("the vector's line");
+            l[l.find('[').unwrap() + 1..l.len() - 1]
+                .split(',')
+                .map(|x| x.parse().unwrap())
+                .collect()
+        };
+        let n: f64 = lines
+            .lines()
+            .find_map(|l| l.strip_prefix("variable     seg equal 1+floor(step/"))
+            .and_then(|l| l.strip_suffix(')'))
+            .expect("the seg line")
+            .parse()
+            .unwrap();
+        let (d, c) = (list("dzd"), list("dzc"));
+        let seg = 1.0 + (s as f64 / n).floor();
+        let k = seg as usize - 1;
+        d[k] + c[k] * (s as f64 - n * (seg - 1.0))
+    }
+
+    #[test]
+    fn the_punch_displacement_is_the_stroke_at_and_between_the_records() {
+        let stroke = die_replay::Stroke {
+            h0: 6.282354800248903e-5,
+            interval: 2e-6,
+            steps_per_record: 15453,
+            dt: 2e-6 / 15453.0,
+            heights: vec![
+                6.228688733219735e-5,
+                6.0857285812429805e-5,
+                6.020743200563283e-5,
+                5.999492148214831e-5,
+                5.999492148214831e-5,
+                5.9946389877823e-5,
+            ],
+            pressures: vec![1e6; 6],
+        };
+        let lines = punch_displacement(&stroke);
+        assert!(
+            lines
+                .contains("variable     dz equal v_dzd[v_seg]+v_dzc[v_seg]*(step-15453*(v_seg-1))")
+        );
+        let n = stroke.steps_per_record;
+        let tamp = crate::expression::Expression::parse(&stroke.displacement(), &["t"]).unwrap();
+        let heights: Vec<f64> = std::iter::once(stroke.h0)
+            .chain(stroke.heights.iter().copied())
+            .collect();
+        let ulp = f64::EPSILON * stroke.h0;
+        for j in 0..heights.len() {
+            // At each record: the recorded height, to the rounding of H_j − H₀.
+            let at = stroke.h0 + lammps_dz(&lines, j as u64 * n);
+            assert!((at - heights[j]).abs() <= ulp, "record {j}: {at:e}");
+            let Some(&next) = heights.get(j + 1) else {
+                break;
+            };
+            // Between records: linear, and the displacement tamp's replay moves by.
+            for i in [1, 2, n / 3, n / 2, n - 1] {
+                let s = j as u64 * n + i;
+                let dz = lammps_dz(&lines, s);
+                let linear = heights[j] + (next - heights[j]) * i as f64 / n as f64;
+                assert!((stroke.h0 + dz - linear).abs() <= 2.0 * ulp, "step {s}");
+                let t = s as f64 * stroke.dt;
+                assert!(
+                    (dz - tamp.eval(&[t]).unwrap()).abs() <= 4.0 * ulp,
+                    "step {s}"
+                );
+            }
+        }
     }
 
     #[test]

@@ -23,7 +23,7 @@ for seed in ${SEEDS:-1}; do
   # Screen output on: LIGGGHTS 3.8 crashes reading an STL mesh without a screen.
   (cd "$d" && liggghts -in in.tamp -log log.liggghts > screen.txt)
   "$tamp" import-liggghts-dump "$d/dump.liggghts" --out "$d/measured" --die-stroke "$d/stroke.json" > /dev/null
-  python3 "$here/../die_replay_rows.py" "$d" "$seed" log.liggghts >> "$rows"
+  python3 "$here/../../die_replay_rows.py" "$d" "$seed" log.liggghts >> "$rows"
   rm -f "$d/dump.liggghts" "$d/particles.data" "$d/measured/trajectory.csv" "$d/screen.txt"
 done
 mv "$rows" "$out/results.csv"

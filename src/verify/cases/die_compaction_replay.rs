@@ -22,7 +22,6 @@
 //! report gets both codes' curves (`<case>_curves.csv`).
 
 use crate::error::{Result, TampError};
-use crate::process::die_compaction;
 use crate::process::die_replay::{self, ReplayRecord, Stroke};
 use crate::verify::{CaseContext, Measured};
 use serde::Deserialize;
@@ -117,7 +116,7 @@ fn compare(ctx: &CaseContext, peer: &str) -> Result<Vec<Measured>> {
         }
         let mut scene = base.clone();
         scene.seed = seed;
-        let specimen = die_compaction::prepare(&scene, true)?;
+        let specimen = super::die_specimen::prepare(&scene)?;
         let h0 = mine[0].h0;
         if (specimen.h0 - h0).abs() > 1e-12 * h0 {
             return Err(TampError::Other(format!(

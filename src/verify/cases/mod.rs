@@ -9,6 +9,7 @@ mod compacted_deposit;
 mod compaction_2d;
 mod density_segregation;
 mod die_compaction_replay;
+mod die_specimen;
 mod energy_conservation_elastic;
 mod hertz_collision_time;
 mod hertz_rigid_wall_impact;

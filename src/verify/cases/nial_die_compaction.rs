@@ -363,7 +363,7 @@ fn write_curves_csv(ctx: &CaseContext, labels: &[&str], pressings: &[Pressing]) 
 
 pub fn small(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let scene = ctx.scene()?;
-    let specimen = die_compaction::prepare(&scene, true)?;
+    let specimen = super::die_specimen::prepare(&scene)?;
     let pressing = die_compaction::press(&scene, &specimen, true, None, 0, &mut |_| Ok(()))?;
 
     // The same fill under ten times the gravity: the settled density must not move
