@@ -501,7 +501,7 @@ Reading the table:
   over the contacts. Until 2026-11-21 the estimate took the *largest* k_t times the lever
   1 + mR²/I, and this lattice was stable only to α = 0.60 with the Mindlin laws
   (k_t ≈ 0.8 k_n) and 1.02 with k_t = 2/7 k_n; the estimate now sums k_t over the contacts
-  like it sums k_n (src/simulation.rs), which moves every row to α_max ≥ 1. Rojek 2016
+  like it sums k_n (src/simulation/critical_step.rs), which moves every row to α_max ≥ 1. Rojek 2016
   §3.4 makes the same observation (with equal normal and tangential stiffness the
   rotational eigenfrequency exceeds the translational one) and scales the rotational
   inertia by 10 instead (`rotation.inertia_scale`), which lowers the lever 1 + mR²/I.

@@ -1,0 +1,102 @@
+//! Queries on the contacts of the current state: which pairs and walls touch, the
+//! stored contact states, overlaps and counts.
+
+use super::Simulation;
+use crate::contact::model::{
+    CohesionModel, Composed, DampingModel, LawVisitor, NormalModel, StateOf, TangentialModel,
+};
+use crate::contact::states::{ContactStates, StateStore};
+use crate::particles::Vec3;
+
+/// An empty state store of the scene's laws' state type.
+pub(super) struct NewStates {
+    pub(super) particles: usize,
+    pub(super) boundaries: usize,
+}
+
+impl LawVisitor for NewStates {
+    type Output = Box<dyn StateStore>;
+    fn visit<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel>(
+        self,
+        _: Composed<N, D, T, C>,
+    ) -> Box<dyn StateStore> {
+        Box::new(ContactStates::<StateOf<N, T>>::new(
+            self.particles,
+            self.boundaries,
+        ))
+    }
+}
+
+impl Simulation {
+    /// Particle pairs closer than `beyond` to touching (overlap > −beyond):
+    /// (neighbour-list index, i, j, overlap).
+    pub(super) fn touching_pairs(
+        &self,
+        beyond: f64,
+    ) -> impl Iterator<Item = (usize, usize, usize, f64)> + '_ {
+        self.neighbors
+            .pairs
+            .iter()
+            .enumerate()
+            .filter_map(move |(k, &(i, j))| {
+                let (i, j) = (i as usize, j as usize);
+                let overlap = self.overlap(i, j);
+                (overlap > -beyond).then_some((k, i, j, overlap))
+            })
+    }
+
+    /// Particle–boundary contacts closer than `beyond` to touching:
+    /// (boundary, particle, facet, overlap).
+    pub(super) fn touching_walls(&self, beyond: f64) -> Vec<(usize, usize, u32, f64)> {
+        let p = &self.particles;
+        let mut out = Vec::new();
+        let mut found = Vec::new();
+        for (w, wall) in self.walls.iter().enumerate() {
+            for i in 0..p.len() {
+                found.clear();
+                wall.contacts(&p.position[i], p.radius[i], beyond, &mut found);
+                out.extend(found.iter().map(|c| (w, i, c.facet, c.overlap)));
+            }
+        }
+        out
+    }
+
+    /// The state of the scene's laws, as the type `S` the force loop knows.
+    pub(super) fn states_as<S: crate::contact::model::ContactState>(&self) -> &ContactStates<S> {
+        self.states
+            .as_any()
+            .downcast_ref::<ContactStates<S>>()
+            .expect("the contact states were made for the scene's laws")
+    }
+
+    /// What the contacts keep between steps (read-only: for checkpoints, tests and
+    /// diagnostics).
+    pub fn contact_states(&self) -> &dyn StateStore {
+        &*self.states
+    }
+
+    /// The tangential spring or force of the contact between particles `i` and `j`
+    /// (either order) after the last force evaluation; `None` when the pair is not in
+    /// the neighbour list or the law keeps no state. For tests and diagnostics that
+    /// follow one contact.
+    pub fn contact_tangential(&self, i: usize, j: usize) -> Option<Vec3> {
+        let key = (i.min(j) as u32, i.max(j) as u32);
+        let k = self.neighbors.pairs.binary_search(&key).ok()?;
+        self.states.pair_tangential(k)
+    }
+
+    /// Number of particle–particle and particle–wall contacts at the current positions.
+    pub fn contact_count(&self) -> usize {
+        self.touching_pairs(0.0).count() + self.touching_walls(0.0).len()
+    }
+
+    /// Overlap of two particles (negative when apart), m.
+    pub fn overlap(&self, i: usize, j: usize) -> f64 {
+        let p = &self.particles;
+        let d = self
+            .neighbors
+            .space
+            .displacement(&p.position[i], &p.position[j]);
+        p.radius[i] + p.radius[j] - d.norm()
+    }
+}

@@ -1,0 +1,138 @@
+//! The energy book: mechanical energy (kinetic and stored in contacts), the work of
+//! gravity and prescribed bodies, and the check that a run does not create energy.
+
+use super::Simulation;
+use crate::contact::model::{
+    CohesionModel, Composed, DampingModel, LawVisitor, NormalModel, StateOf, TangentialModel,
+};
+use crate::error::Result;
+use crate::material::effective_radius;
+
+/// `Simulation::stored_energy` for the scene's laws as types.
+pub(super) struct StoredEnergy<'a>(&'a Simulation);
+
+impl LawVisitor for StoredEnergy<'_> {
+    type Output = f64;
+    fn visit<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel>(
+        self,
+        law: Composed<N, D, T, C>,
+    ) -> f64 {
+        self.0.stored_energy_with(&law)
+    }
+}
+
+impl Simulation {
+    /// Make the present state the reference of the energy book (W = 0, D = 0).
+    pub(super) fn restart_energy_book(&mut self) {
+        self.external_work = 0.0;
+        self.external_work_scale = 0.0;
+        self.external_power = self.prescribed_power();
+        self.initial_mechanical_energy = self.mechanical_energy();
+    }
+
+    /// Power the prescribed bodies put into the particles at the current state, W.
+    pub(super) fn prescribed_power(&self) -> f64 {
+        let p = &self.particles;
+        let driven: f64 = (0..p.len())
+            .filter(|&i| p.prescribed[i])
+            .map(|i| -p.force[i].dot(&p.velocity[i]))
+            .sum();
+        driven + self.walls_power()
+    }
+
+    /// The walls' part of `prescribed_power`, W.
+    pub(super) fn walls_power(&self) -> f64 {
+        self.walls
+            .iter()
+            .zip(&self.wall_force)
+            .map(|(w, f)| -f.dot(&w.velocity))
+            .sum()
+    }
+
+    /// Energy stored in all contacts (pairs and walls) and in cohesion, J.
+    pub fn stored_energy(&self) -> f64 {
+        self.law.visit(StoredEnergy(self))
+    }
+
+    pub(super) fn stored_energy_with<N, D, T, C>(&self, law: &Composed<N, D, T, C>) -> f64
+    where
+        N: NormalModel,
+        D: DampingModel,
+        T: TangentialModel,
+        C: CohesionModel,
+    {
+        let p = &self.particles;
+        let reach = law.cohesion.reach();
+        let states = self.states_as::<StateOf<N, T>>();
+        let pairs: f64 = self
+            .touching_pairs(reach)
+            .map(|(k, i, j, overlap)| {
+                let pair = self.pair_table.get(p.material[i], p.material[j]);
+                let r_eff = effective_radius(p.radius[i], p.radius[j]);
+                law.stored_energy(overlap, r_eff, pair, &states.pair(k))
+            })
+            .sum();
+        let walls: f64 = self
+            .touching_walls(reach)
+            .into_iter()
+            .map(|(w, i, facet, overlap)| {
+                let pair = self.pair_table.get(p.material[i], self.walls[w].material);
+                law.stored_energy(overlap, p.radius[i], pair, &states.wall(w, i, facet))
+            })
+            .sum();
+        pairs + walls
+    }
+
+    /// Potential energy of the free particles in the scene's gravity, −Σ m g·x (zero at
+    /// the origin), J. Reported whether or not gravity acts yet (growth stage).
+    pub fn gravitational_energy(&self) -> f64 {
+        let p = &self.particles;
+        self.gravity.map_or(0.0, |g| {
+            (0..p.len())
+                .filter(|&i| !p.prescribed[i])
+                .map(|i| -p.mass[i] * g.dot(&p.position[i]))
+                .sum()
+        })
+    }
+
+    pub fn kinetic_energy(&self) -> f64 {
+        self.particles.translational_kinetic_energy() + self.particles.rotational_kinetic_energy()
+    }
+
+    pub fn mechanical_energy(&self) -> f64 {
+        self.kinetic_energy() + self.stored_energy()
+    }
+
+    /// Energy dissipated so far: E_mech(0) + W − E_mech. Negative means energy was created.
+    pub fn dissipated_energy(&self) -> f64 {
+        self.initial_mechanical_energy + self.external_work - self.mechanical_energy()
+    }
+
+    pub(super) fn check_energy(&self) -> Result<()> {
+        let gained = -self.dissipated_energy();
+        let scale = self.initial_mechanical_energy.abs() + self.external_work_scale;
+        if !(gained.is_finite() && scale.is_finite()) {
+            return Err(self.unstable(format!(
+                "the energy book is not finite (energy gained {gained:e} J, scale {scale:e} J): a quantity beyond the range of a double"
+            )));
+        }
+        if scale > 0.0 && gained > self.limits.max_energy_growth * scale {
+            let p = &self.particles;
+            let fastest = (0..p.len())
+                .max_by(|&a, &b| {
+                    p.velocity[a]
+                        .norm_squared()
+                        .total_cmp(&p.velocity[b].norm_squared())
+                })
+                .unwrap_or(0);
+            return Err(self.unstable(format!(
+                "mechanical energy grew by {gained:.4e} J, {:.3e} of the energy scale {scale:.4e} J, without external work \
+                 (fastest: particle {} at {:.4e} m/s); the time step is likely too large",
+                gained / scale,
+                p.id[fastest],
+                p.velocity[fastest].norm()
+            )));
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,385 @@
+//! The force loop: every contact's geometry, law and force, pairs then walls, for the
+//! scene's laws, lever-arm convention and rotation as types, so a scene pays only for
+//! the effects it enables.
+
+use super::Simulation;
+use super::contact_pass::ContactPass;
+use crate::boundary::shape::ShapeContact;
+use crate::contact::lever_arm::{Arms, LeverArms};
+use crate::contact::model::{
+    CohesionModel, Composed, DampingModel, NormalModel, StateOf, TangentialModel,
+};
+use crate::contact::states::ContactStates;
+use crate::contact::{ContactForce, ContactGeometry};
+use crate::error::Result;
+use crate::material::PairProperties;
+use crate::material::{effective_mass, effective_radius};
+use crate::particles::{Particles, Vec3};
+
+/// Effective mass of a pair; a prescribed particle moves whatever the force, so it
+/// counts as infinitely heavy, like a wall.
+#[inline(always)]
+pub(super) fn contact_mass(mass: &[f64], prescribed: &[bool], i: usize, j: usize) -> f64 {
+    match (prescribed[i], prescribed[j]) {
+        (false, true) => mass[i],
+        (true, false) => mass[j],
+        _ => effective_mass(mass[i], mass[j]),
+    }
+}
+
+/// Set every particle's force to its weight, zero plus m g for a free particle (the
+/// same sum as zeroing the force and calling `add_weights`) and zero for a
+/// prescribed one, in one pass.
+pub(super) fn set_weights(p: &mut Particles, g: Vec3) {
+    let n = p.len();
+    let (force, mass, prescribed) = (&mut p.force[..n], &p.mass[..n], &p.prescribed[..n]);
+    for ((f, &m), &fixed) in force.iter_mut().zip(mass).zip(prescribed) {
+        *f = if fixed {
+            Vec3::zeros()
+        } else {
+            Vec3::zeros() + g * m
+        };
+    }
+}
+
+/// Add the weight m g of every free particle to its force.
+pub(super) fn add_weights(p: &mut Particles, g: Vec3) {
+    for i in 0..p.len() {
+        if !p.prescribed[i] {
+            p.force[i] += g * p.mass[i];
+        }
+    }
+}
+
+/// What pair and wall contacts share once their geometry is known: the overlap
+/// limit, the scene's laws, and a finite force. Returns the force on particle i
+/// and its parts; the error says what went wrong, for the caller to place.
+#[inline(always)]
+pub(super) fn resolve<N, D, T, C>(
+    law: &Composed<N, D, T, C>,
+    g: &ContactGeometry,
+    ratio: f64,
+    max_fraction: f64,
+    pair: &PairProperties,
+    state: &mut StateOf<N, T>,
+    dt: f64,
+) -> std::result::Result<(Vec3, ContactForce), String>
+where
+    N: NormalModel,
+    D: DampingModel,
+    T: TangentialModel,
+    C: CohesionModel,
+{
+    let overlap = g.overlap;
+    if ratio > max_fraction {
+        return Err(format!(
+            "overlap {overlap:.4e} m is {ratio:.3e} of the smaller radius (limit {max_fraction})"
+        ));
+    }
+    let f = law.evaluate(g, pair, state, dt);
+    let total = g.normal * f.normal + f.tangential;
+    if !total.iter().all(|c| c.is_finite()) {
+        return Err(format!(
+            "non-finite contact force at overlap {overlap:.4e} m"
+        ));
+    }
+    Ok((total, f))
+}
+
+/// Give this step's contacts of one particle with one wall (`found`) the states of
+/// the same facets last step; a facet touched anew starts fresh.
+#[inline(always)]
+pub(super) fn carry_facet_states<S: Copy + Default>(
+    states: &mut Vec<(u32, S)>,
+    found: &[ShapeContact],
+) {
+    let same =
+        states.len() == found.len() && states.iter().zip(found).all(|((f, _), c)| *f == c.facet);
+    if !same {
+        let previous = std::mem::take(states);
+        states.extend(
+            found
+                .iter()
+                .map(|c| (c.facet, carried_state(&previous, c.facet))),
+        );
+    }
+}
+
+/// The state facet `facet` had last step among one particle's contacts with one wall,
+/// or a fresh one.
+#[inline(always)]
+pub(super) fn carried_state<S: Copy + Default>(previous: &[(u32, S)], facet: u32) -> S {
+    let kept = previous.iter().find(|(f, _)| *f == facet);
+    kept.map_or_else(S::default, |(_, s)| *s)
+}
+
+/// The particle arrays a contact's geometry reads, as slices of one length.
+pub(super) struct Bodies<'a> {
+    pub(super) velocity: &'a [Vec3],
+    pub(super) omega: &'a [Vec3],
+    pub(super) radius: &'a [f64],
+    pub(super) mass: &'a [f64],
+    pub(super) prescribed: &'a [bool],
+}
+
+/// The geometry of the pair contact i–j at separation d = x_i − x_j (nearest image,
+/// |d| = `dist` > 0, overlap δ = R_i + R_j − |d|), and the lever arms of i and j in
+/// the convention `A`. `ROT`: spins enter the contact velocity.
+#[inline(always)]
+pub(super) fn pair_geometry<A: LeverArms, const ROT: bool>(
+    b: &Bodies,
+    i: usize,
+    j: usize,
+    d: Vec3,
+    dist: f64,
+    overlap: f64,
+) -> (ContactGeometry, Arms, Arms) {
+    let normal = d / dist;
+    let (arm_i, arm_j) = (A::pair(b.radius[i], overlap), A::pair(b.radius[j], overlap));
+    let mut relative_velocity = b.velocity[i] - b.velocity[j];
+    if ROT {
+        relative_velocity -=
+            b.omega[i].cross(&normal) * arm_i.velocity + b.omega[j].cross(&normal) * arm_j.velocity;
+    }
+    let g = ContactGeometry {
+        normal,
+        overlap,
+        effective_radius: effective_radius(b.radius[i], b.radius[j]),
+        effective_mass: contact_mass(b.mass, b.prescribed, i, j),
+        relative_velocity,
+    };
+    (g, arm_i, arm_j)
+}
+
+/// The geometry of particle i's contact `c` with a wall moving at `wall_velocity`,
+/// and i's lever arms in the convention `A`.
+#[inline(always)]
+pub(super) fn wall_geometry<A: LeverArms, const ROT: bool>(
+    p: &Particles,
+    i: usize,
+    c: &ShapeContact,
+    wall_velocity: &Vec3,
+) -> (ContactGeometry, Arms) {
+    let (overlap, normal) = (c.overlap, c.normal);
+    let arm = A::wall(p.radius[i], overlap);
+    let mut relative_velocity = p.velocity[i] - wall_velocity;
+    if ROT {
+        relative_velocity -= p.omega[i].cross(&normal) * arm.velocity;
+    }
+    let g = ContactGeometry {
+        normal,
+        overlap,
+        effective_radius: p.radius[i],
+        effective_mass: p.mass[i],
+        relative_velocity,
+    };
+    (g, arm)
+}
+
+/// `Simulation::compute_forces` as a pass specialised to the scene.
+pub(super) struct ForceLoop<'a>(pub(super) &'a mut Simulation);
+
+impl ContactPass for ForceLoop<'_> {
+    type Output = Result<()>;
+    fn run<N, D, T, C, A, const ROT: bool>(self, law: &Composed<N, D, T, C>) -> Result<()>
+    where
+        N: NormalModel,
+        D: DampingModel,
+        T: TangentialModel,
+        C: CohesionModel,
+        A: LeverArms,
+    {
+        self.0.compute_forces_with::<N, D, T, C, A, ROT>(law)
+    }
+}
+
+impl Simulation {
+    /// Contact, wall and body forces at the current positions, for the scene's laws
+    /// as types. `ROT`: spins enter contact velocities and torques are accumulated,
+    /// with the lever arms of the convention `A`.
+    pub(super) fn compute_forces_with<N, D, T, C, A: LeverArms, const ROT: bool>(
+        &mut self,
+        law: &Composed<N, D, T, C>,
+    ) -> Result<()>
+    where
+        N: NormalModel,
+        D: DampingModel,
+        T: TangentialModel,
+        C: CohesionModel,
+    {
+        let kept = ContactStates::<StateOf<N, T>>::KEPT;
+        let gravity = self.active_gravity();
+        let p = &mut self.particles;
+        let n = p.len();
+        // Forces start from the weights (or zero), torques from zero, in one pass.
+        match gravity {
+            Some(g) => set_weights(p, g),
+            None => p.force.iter_mut().for_each(|f| *f = Vec3::zeros()),
+        }
+        if ROT {
+            p.torque.iter_mut().for_each(|t| *t = Vec3::zeros());
+        }
+        let dt = self.dt;
+        let max_fraction = self.limits.max_overlap_fraction;
+        let mut worst = self.max_overlap_ratio;
+        let torques = ROT && T::ACTIVE;
+        let law_reach = law.cohesion.reach();
+        let image = self.neighbors.space.minimum_image();
+        let states = self
+            .states
+            .as_any_mut()
+            .downcast_mut::<ContactStates<StateOf<N, T>>>()
+            .expect("the contact states were made for the scene's laws");
+        let mut fresh = StateOf::<N, T>::default();
+
+        // The particle arrays as slices of one length n, so that one bounds check
+        // per index covers them all, and none of them is re-read through `self`.
+        let Particles {
+            position,
+            velocity,
+            omega,
+            force,
+            torque,
+            radius,
+            mass,
+            material,
+            prescribed,
+            ..
+        } = p;
+        let (position, velocity, omega, radius, mass, material, prescribed) = (
+            &position[..n],
+            &velocity[..n],
+            &omega[..n],
+            &radius[..n],
+            &mass[..n],
+            &material[..n],
+            &prescribed[..n],
+        );
+        let (force, torque) = (&mut force[..n], &mut torque[..]);
+        let bodies = Bodies {
+            velocity,
+            omega,
+            radius,
+            mass,
+            prescribed,
+        };
+        let pairs = &self.neighbors.pairs[..];
+        let pair_states: &mut [StateOf<N, T>] = if kept {
+            &mut states.pairs[..pairs.len()]
+        } else {
+            &mut []
+        };
+
+        // Pass 1, over every pair of the list: the pairs within reach of their law,
+        // with their separation; the state of every other pair is reset (it is apart).
+        // Most pairs of a Verlet list are apart, and this loop is all they cost.
+        let mut near = std::mem::take(&mut self.near);
+        near.clear();
+        for (k, &(i, j)) in pairs.iter().enumerate() {
+            let (i, j) = (i as usize, j as usize);
+            let d = image.displacement(&position[i], &position[j]);
+            let reach = radius[i] + radius[j];
+            if d.norm_squared() >= (reach + law_reach).powi(2) {
+                if kept {
+                    pair_states[k] = Default::default();
+                }
+            } else {
+                near.push((k as u32, d));
+            }
+        }
+
+        // Pass 2, over the pairs within reach, in the list's order (so forces are
+        // summed in the same order as by one loop over the list).
+        for &(k, d) in &near {
+            let k = k as usize;
+            let (i, j) = (pairs[k].0 as usize, pairs[k].1 as usize);
+            let reach = radius[i] + radius[j];
+            let dist2 = d.norm_squared();
+            let dist = dist2.sqrt();
+            let overlap = reach - dist;
+            let ratio = overlap / radius[i].min(radius[j]);
+            worst = worst.max(ratio);
+            if dist == 0.0 {
+                // The build refuses coincident centres, and a pair driven together
+                // meets the overlap limit first unless it is at least (R_i + R_j)/R_min ≥ 2.
+                self.near = near;
+                return Err(self.unstable(format!(
+                    "contact {}-{}: the centres coincide (overlap {overlap:.4e} m), so the contact normal is undefined",
+                    self.particles.id[i], self.particles.id[j]
+                )));
+            }
+            let (g, arm_i, arm_j) = pair_geometry::<A, ROT>(&bodies, i, j, d, dist, overlap);
+            let normal = g.normal;
+            let pair = self.pair_table.get(material[i], material[j]);
+            let state = if kept {
+                &mut pair_states[k]
+            } else {
+                &mut fresh
+            };
+            let (total, f) = match resolve(law, &g, ratio, max_fraction, pair, state, dt) {
+                Ok(forces) => forces,
+                Err(what) => {
+                    self.near = near;
+                    return Err(self.unstable(format!(
+                        "contact {}-{}: {what}",
+                        self.particles.id[i], self.particles.id[j]
+                    )));
+                }
+            };
+            force[i] += total;
+            force[j] -= total;
+            if torques {
+                let t = -normal.cross(&f.tangential);
+                torque[i] += t * arm_i.torque;
+                torque[j] += t * arm_j.torque;
+            }
+        }
+        self.near = near;
+        let p = &mut self.particles;
+
+        let mut found = std::mem::take(&mut self.scratch);
+        for (w, wall) in self.walls.iter().enumerate() {
+            let mut on_wall = Vec3::zeros();
+            for i in 0..n {
+                found.clear();
+                wall.contacts(&p.position[i], p.radius[i], law_reach, &mut found);
+                if kept {
+                    // The states of the facets touched last step, carried to this
+                    // step's contacts by facet.
+                    carry_facet_states(&mut states.walls[w][i], &found);
+                }
+                for (c, contact) in found.iter().enumerate() {
+                    let (facet, normal) = (contact.facet, contact.normal);
+                    let ratio = contact.overlap / p.radius[i];
+                    worst = worst.max(ratio);
+                    let (g, arm) = wall_geometry::<A, ROT>(p, i, contact, &wall.velocity);
+                    let pair = self.pair_table.get(p.material[i], wall.material);
+                    let state = if kept {
+                        &mut states.walls[w][i][c].1
+                    } else {
+                        &mut fresh
+                    };
+                    let (total, f) = match resolve(law, &g, ratio, max_fraction, pair, state, dt) {
+                        Ok(forces) => forces,
+                        Err(what) => {
+                            let what = format!(
+                                "contact {}-wall '{}' (facet {facet}): {what}",
+                                p.id[i], wall.name
+                            );
+                            return Err(self.unstable(what));
+                        }
+                    };
+                    p.force[i] += total;
+                    on_wall -= total;
+                    if torques {
+                        p.torque[i] += -normal.cross(&f.tangential) * arm.torque;
+                    }
+                }
+            }
+            self.wall_force[w] = on_wall;
+        }
+        self.scratch = found;
+        self.max_overlap_ratio = worst;
+        Ok(())
+    }
+}
