@@ -162,25 +162,25 @@ fn pair_geometry<A: LeverArms, const ROT: bool>(
     (g, arm_i, arm_j)
 }
 
-/// The geometry of particle i's contact `c` with a wall moving at `wall_velocity`,
-/// and i's lever arms in the convention `A`.
+/// The geometry of particle i's contact `c` with `wall`, and i's lever arms in the
+/// convention `A`.
 #[inline(always)]
 fn wall_geometry<A: LeverArms, const ROT: bool>(
     p: &Particles,
     i: usize,
     c: &ShapeContact,
-    wall_velocity: &Vec3,
+    wall: &Boundary,
 ) -> (ContactGeometry, Arms) {
     let (overlap, normal) = (c.overlap, c.normal);
     let arm = A::wall(p.radius[i], overlap);
-    let mut relative_velocity = p.velocity[i] - wall_velocity;
+    let mut relative_velocity = p.velocity[i] - wall.velocity;
     if ROT {
         relative_velocity -= p.omega[i].cross(&normal) * arm.velocity;
     }
     let g = ContactGeometry {
         normal,
         overlap,
-        effective_radius: p.radius[i],
+        effective_radius: wall.effective_radius(&p.position[i], p.radius[i]),
         effective_mass: p.mass[i],
         relative_velocity,
     };
@@ -805,7 +805,7 @@ impl Simulation {
                     let (facet, normal) = (contact.facet, contact.normal);
                     let ratio = contact.overlap / p.radius[i];
                     worst = worst.max(ratio);
-                    let (g, arm) = wall_geometry::<A, ROT>(p, i, contact, &wall.velocity);
+                    let (g, arm) = wall_geometry::<A, ROT>(p, i, contact, wall);
                     let pair = self.pair_table.get(p.material[i], wall.material);
                     let state = if kept {
                         &mut states.walls[w][i][c].1
@@ -916,7 +916,7 @@ impl Simulation {
                 wall.contacts(&p.position[i], p.radius[i], law_reach, &mut found);
                 for contact in &found {
                     let ratio = contact.overlap / p.radius[i];
-                    let (g, arm) = wall_geometry::<A, ROT>(p, i, contact, &wall.velocity);
+                    let (g, arm) = wall_geometry::<A, ROT>(p, i, contact, wall);
                     let pair = self.pair_table.get(p.material[i], wall.material);
                     let mut state = if kept {
                         carried_state(&states.walls[w][i], contact.facet)
@@ -1044,8 +1044,10 @@ impl Simulation {
             .touching_walls(reach)
             .into_iter()
             .map(|(w, i, facet, overlap)| {
-                let pair = self.pair_table.get(p.material[i], self.walls[w].material);
-                law.stored_energy(overlap, p.radius[i], pair, &states.wall(w, i, facet))
+                let wall = &self.walls[w];
+                let pair = self.pair_table.get(p.material[i], wall.material);
+                let r_eff = wall.effective_radius(&p.position[i], p.radius[i]);
+                law.stored_energy(overlap, r_eff, pair, &states.wall(w, i, facet))
             })
             .sum();
         pairs + walls
@@ -1162,8 +1164,10 @@ impl Simulation {
             }
         }
         for (w, i, facet, overlap) in self.touching_walls(0.0) {
-            let pair = self.pair_table.get(p.material[i], self.walls[w].material);
-            let (k_n, k_t) = law.stiffness(overlap, p.radius[i], pair, &states.wall(w, i, facet));
+            let wall = &self.walls[w];
+            let pair = self.pair_table.get(p.material[i], wall.material);
+            let r_eff = wall.effective_radius(&p.position[i], p.radius[i]);
+            let (k_n, k_t) = law.stiffness(overlap, r_eff, pair, &states.wall(w, i, facet));
             met[i].add(k_n, k_t);
         }
         // Each body: (mass, radius at full size, moment of inertia, material, the
