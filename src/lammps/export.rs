@@ -20,9 +20,11 @@
 //! - Fixed planes normal to an axis are `fix wall/gran granular` with the pair model and
 //!   the wall material's E and ν (`xplane lo NULL` or `NULL hi`), a fixed closed box one
 //!   such fix per axis (`xplane lo hi`, `wall_fixes`); LAMMPS gives the wall and the
-//!   sphere that one material, so particles of another one are refused. Other walls
-//!   (open boxes and cylinders included, `wall_fixes` says why), cohesion, growth and
-//!   scheduled insertion are refused.
+//!   sphere that one material, so particles of another one are refused. A fixed
+//!   cylinder along x, y or z with `"curvature": "mean"` and both ends closed is a
+//!   `region cylinder` with `fix wall/gran/region` (`cylinder_region`,
+//!   `cylinder_refusals` say why and when). Other walls (open boxes included,
+//!   `wall_fixes` says why), cohesion, growth and scheduled insertion are refused.
 //! - Dumps at `%.17g`, sorted by id: every `dump_every` steps to `dump.lammps`, the
 //!   final state to `final.lammps`; `tamp compare` and `import-liggghts-dump` read them.
 
