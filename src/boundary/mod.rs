@@ -5,9 +5,10 @@
 //! A boundary is its shape in a rest frame plus a translation u(t). A contact is
 //! found by asking the shape about the particle centre moved into the rest frame,
 //! x − u; the contact point moves with the boundary's velocity. A boundary counts as
-//! infinitely massive with an infinite radius of curvature where flat, so
-//! R* = R_i and m* = m_i in the contact law (a curved boundary is treated the same:
-//! the radius of a die or funnel is many particle radii).
+//! infinitely massive, m* = m_i, and by default as flat in the contact law, R* = R_i (a
+//! curved boundary too: the radius of a die or funnel is many particle radii). A
+//! cylinder may opt in to its curvature (`WallCurvature::Mean`,
+//! `Boundary::effective_radius`).
 
 pub mod motion;
 pub mod shape;
@@ -17,12 +18,28 @@ use shape::{Shape, ShapeContact};
 
 use crate::particles::Vec3;
 
+/// How a boundary's curvature enters the contact's effective radius.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum WallCurvature {
+    /// R* = R_i, as against a plane (the default of every wall).
+    Flat,
+    /// A cylinder of radius `radius` about the axis through `origin` along the unit
+    /// vector `axis` (rest frame), entering the contact as the sphere of its mean
+    /// curvature: `Boundary::effective_radius`.
+    Mean {
+        origin: Vec3,
+        axis: Vec3,
+        radius: f64,
+    },
+}
+
 #[derive(Clone, Debug)]
 pub struct Boundary {
     pub name: String,
     pub shape: Shape,
     pub material: usize,
     pub motion: BoundaryMotion,
+    pub curvature: WallCurvature,
     /// Translation from the rest frame, m.
     pub displacement: Vec3,
     /// Velocity during the current step, m/s.
@@ -36,6 +53,7 @@ impl Boundary {
             shape,
             material,
             motion,
+            curvature: WallCurvature::Flat,
             displacement: Vec3::zeros(),
             velocity: Vec3::zeros(),
         };
@@ -46,6 +64,38 @@ impl Boundary {
             b.velocity = v;
         }
         b
+    }
+
+    /// The effective radius R* of a contact of a sphere of radius R centred at `centre`
+    /// with this boundary: the one place a wall contact's R* is formed (forces,
+    /// records, stored energy, the time-step stiffness).
+    ///
+    /// `Flat`: R* = R. `Mean`: the cylinder of radius R_c enters as a sphere of its
+    /// mean curvature (1/R_c + 0)/2, of radius r_w = −2R_c seen from inside (concave)
+    /// and +2R_c from outside (convex), and R* = R r_w/(R + r_w) as for two spheres
+    /// (Johnson 1985 §4.2 with one radius signed): inside R* = 2R R_c/(2R_c − R) > R.
+    /// This is LAMMPS's rule (22 Jul 2025): fix_wall_gran.cpp `post_force` sets
+    /// `rwall = (delxy < cylradius) ? -2*cylradius : 2*cylradius` for `zcylinder`,
+    /// region_cylinder.cpp `surface_interior` sets the contact radius −2R_c for the
+    /// curved face, and granular_model.cpp `check_contact` forms
+    /// Reff = radi·radj/(radi + radj) for both wall kinds. Inside is where the centre's
+    /// distance from the axis is below R_c (every contact with the wall, rim ones
+    /// included, takes the wall's r_w).
+    #[inline(always)]
+    pub fn effective_radius(&self, centre: &Vec3, radius: f64) -> f64 {
+        match &self.curvature {
+            WallCurvature::Flat => radius,
+            WallCurvature::Mean {
+                origin,
+                axis,
+                radius: r_c,
+            } => {
+                let x = centre - self.displacement - origin;
+                let rho = (x - axis * x.dot(axis)).norm();
+                let r_w = if rho < *r_c { -2.0 * r_c } else { 2.0 * r_c };
+                radius * r_w / (radius + r_w)
+            }
+        }
     }
 
     /// Contacts of a sphere with this boundary, appended to `out`.

@@ -20,9 +20,11 @@
 //! - Fixed planes normal to an axis are `fix wall/gran granular` with the pair model and
 //!   the wall material's E and ν (`xplane lo NULL` or `NULL hi`), a fixed closed box one
 //!   such fix per axis (`xplane lo hi`, `wall_fixes`); LAMMPS gives the wall and the
-//!   sphere that one material, so particles of another one are refused. Other walls
-//!   (open boxes and cylinders included, `wall_fixes` says why), cohesion, growth and
-//!   scheduled insertion are refused.
+//!   sphere that one material, so particles of another one are refused. A fixed
+//!   cylinder along x, y or z with `"curvature": "mean"` and both ends closed is a
+//!   `region cylinder` with `fix wall/gran/region` (`cylinder_region`,
+//!   `cylinder_refusals` say why and when). Other walls (open boxes included,
+//!   `wall_fixes` says why), cohesion, growth and scheduled insertion are refused.
 //! - Dumps at `%.17g`, sorted by id: every `dump_every` steps to `dump.lammps`, the
 //!   final state to `final.lammps`; `tamp compare` and `import-liggghts-dump` read them.
 
@@ -31,7 +33,7 @@ use crate::contact::lever_arm::LeverArm;
 use crate::error::{Result, TampError};
 use crate::liggghts::export::{DUMP_COLUMNS, Exported, frame_every, load_with_seed, neighbor_skin};
 use crate::particles::Vec3;
-use crate::scene::walls::{MotionSpec, ShapeSpec, WallSpec};
+use crate::scene::walls::{Curvature, MotionSpec, ShapeSpec, WallSpec};
 use crate::scene::{self, Scene};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -153,7 +155,11 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
         .axes()
         .map(|a| a.is_some());
     for (k, w) in scene.walls.iter().enumerate() {
-        if let Err(why) = wall_fixes(w, periodic) {
+        if matches!(w.shape, ShapeSpec::Cylinder { .. }) {
+            for (field, why) in cylinder_refusals(w, &scene.walls, periodic) {
+                refuse(format!("walls[{k}].{field}"), &why);
+            }
+        } else if let Err(why) = wall_fixes(w, periodic) {
             refuse(format!("walls[{k}]"), why);
         }
         if !matches!(w.motion, MotionSpec::Fixed) {
@@ -225,11 +231,8 @@ fn mu_of(scene: &Scene) -> f64 {
 ///   box every face acts as its infinite plane in both codes.
 ///
 /// Refused: an open box (tamp ends its side faces at a rounded rim, LAMMPS's planes are
-/// infinite); a cylinder (LAMMPS's `zcylinder` gives the contact the effective radius
-/// R·r_w/(R + r_w) with r_w = −2 R_c, granular_model.cpp `check_contact` and
-/// fix_wall_gran.cpp, where tamp's walls take R: a different Hertz stiffness); a
-/// wall on a periodic axis (LAMMPS: "Cannot use wall in periodic dimension"); every
-/// other shape.
+/// infinite); a wall on a periodic axis (LAMMPS: "Cannot use wall in periodic
+/// dimension"); every other shape. Cylinders are `cylinder_region`'s.
 fn wall_fixes(
     w: &WallSpec,
     periodic: [bool; 3],
@@ -267,13 +270,165 @@ fn wall_fixes(
                 })
                 .collect())
         }
-        ShapeSpec::Cylinder { .. } => Err(
-            "LAMMPS's fix wall/gran zcylinder gives the contact the effective radius R r_w/(R + r_w) with r_w = -2 R_c (a curved wall); tamp's cylinder contact takes R, as a flat wall: a different Hertz stiffness",
-        ),
         _ => Err(
-            "only plane walls and closed boxes are exported to LAMMPS (fix wall/gran xplane/yplane/zplane)",
+            "only plane walls, closed boxes and cylinders are exported to LAMMPS (fix wall/gran xplane/yplane/zplane, fix wall/gran/region on a region cylinder)",
         ),
     }
+}
+
+/// The axis (0, 1, 2 for x, y, z) a unit-free direction lies along, if it does.
+fn along_an_axis(v: &[f64; 3]) -> Option<usize> {
+    let n = Vec3::from(*v);
+    (0..3).find(|&a| n[a].abs() == n.norm() && n.norm() > 0.0)
+}
+
+/// A cylinder wall as a LAMMPS region: `cylinder <axis> c1 c2 R_c lo hi side in open 1
+/// open 2 units box`, the lateral face of tamp's cylinder between its ends (faces 1 and
+/// 2, the end caps, open), for `fix wall/gran/region`. Why the region and not
+/// `fix wall/gran ... zcylinder R_c`: zcylinder's axis is the z axis through x = y = 0
+/// and has no ends, the region takes any centre, an x, y or z axis and tamp's ends; both
+/// give the curved face the contact radius −2R_c from inside (region_cylinder.cpp
+/// `surface_interior`, fix_wall_gran.cpp), which is tamp's `"curvature": "mean"`.
+fn cylinder_region(w: &WallSpec) -> Option<String> {
+    let ShapeSpec::Cylinder {
+        origin,
+        axis,
+        radius,
+        bottom,
+        top,
+        ..
+    } = &w.shape
+    else {
+        return None;
+    };
+    let a = along_an_axis(axis)?;
+    let s = axis[a].signum();
+    let (e0, e1) = (origin[a] + s * bottom, origin[a] + s * top);
+    let (lo, hi) = (e0.min(e1), e0.max(e1));
+    let [c1, c2] = match a {
+        0 => [origin[1], origin[2]],
+        1 => [origin[0], origin[2]],
+        _ => [origin[0], origin[1]],
+    };
+    Some(format!(
+        "cylinder {} {} {} {} {} {} side in open 1 open 2 units box",
+        AXES[a],
+        g(c1),
+        g(c2),
+        g(*radius),
+        g(lo),
+        g(hi)
+    ))
+}
+
+/// Why a cylinder wall cannot be written as `cylinder_region` with the same physics, as
+/// (field under `walls[k]`, reason); `walls` are the scene's, whose planes and closed
+/// boxes may close the cylinder's ends.
+///
+/// Exact only where the contacts are the lateral face's from inside: there tamp's
+/// `"curvature": "mean"` wall is LAMMPS's region cylinder to round-off. Beyond an end
+/// LAMMPS's open region gives a rim contact with the contact radius 0 (flat;
+/// region_cylinder.cpp `surface_exterior`, `crad` set only without open faces) and
+/// starts a new tangential history (the rim is face 0, the curved face 2), where tamp's
+/// wall keeps −2R_c and one history; from outside LAMMPS gives the lateral face radius 0
+/// too. So each end must be closed by a plane wall or a closed box's face normal to the
+/// axis between the ends (particles inside stay inside; `export` checks they start
+/// there), the axis must lie along x, y or z, and no axis across it may be periodic.
+fn cylinder_refusals(
+    w: &WallSpec,
+    walls: &[WallSpec],
+    periodic: [bool; 3],
+) -> Vec<(&'static str, String)> {
+    let mut out = Vec::new();
+    let ShapeSpec::Cylinder {
+        origin,
+        axis,
+        bottom,
+        top,
+        curvature,
+        ..
+    } = &w.shape
+    else {
+        return out;
+    };
+    if *curvature != Curvature::Mean {
+        out.push((
+            "shape.curvature",
+            "LAMMPS's cylinder walls give the contact the effective radius R r_w/(R + r_w) with r_w = -2 R_c (fix_wall_gran.cpp zcylinder, region_cylinder.cpp); tamp's default \"flat\" cylinder takes R, a different Hertz stiffness; set \"curvature\": \"mean\" for LAMMPS's contact".to_string(),
+        ));
+    }
+    let Some(a) = along_an_axis(axis) else {
+        out.push((
+            "shape.axis",
+            "LAMMPS's region cylinder has its axis along x, y or z".to_string(),
+        ));
+        return out;
+    };
+    if (0..3).any(|b| b != a && periodic[b]) {
+        out.push((
+            "shape",
+            "a cylinder across a periodic axis: LAMMPS's region wall has no periodic images"
+                .to_string(),
+        ));
+    }
+    let s = axis[a].signum();
+    let (e0, e1) = (origin[a] + s * bottom, origin[a] + s * top);
+    let (lo, hi) = (e0.min(e1), e0.max(e1));
+    let inside = |h: f64| (lo..=hi).contains(&h);
+    // A face normal to the axis at axial coordinate h, facing +axis (closes lo) or −axis.
+    let faces = walls.iter().flat_map(|other| match &other.shape {
+        ShapeSpec::Plane { point, normal } => along_an_axis(normal)
+            .filter(|&b| b == a)
+            .map(|_| vec![(point[a], normal[a] > 0.0)])
+            .unwrap_or_default(),
+        ShapeSpec::Box { lower, upper, open } if open.is_empty() => {
+            vec![(lower[a], true), (upper[a], false)]
+        }
+        _ => Vec::new(),
+    });
+    let (mut closed_lo, mut closed_hi) = (false, false);
+    for (h, up) in faces {
+        closed_lo |= up && inside(h);
+        closed_hi |= !up && inside(h);
+    }
+    for (closed, end) in [(closed_lo, lo), (closed_hi, hi)] {
+        if !closed {
+            out.push((
+                "shape",
+                format!(
+                    "particles could reach the cylinder's end at {}{}: beyond it LAMMPS's open region cylinder gives a flat rim contact with a new tangential history (region_cylinder.cpp surface_exterior), tamp's \"mean\" wall the wall's curvature and one history; close the end with a plane wall or a closed box normal to the axis between the ends",
+                    AXES[a],
+                    format_args!(" = {}", g(end))
+                ),
+            ));
+        }
+    }
+    out
+}
+
+/// The first particle (its id) not inside a cylinder wall: centre off the axis by
+/// R_c or more, or beyond an end. LAMMPS's region (side in) has no contact from outside.
+fn starts_outside(w: &WallSpec, sim: &crate::simulation::Simulation) -> Option<u64> {
+    let ShapeSpec::Cylinder {
+        origin,
+        axis,
+        radius,
+        bottom,
+        top,
+        ..
+    } = &w.shape
+    else {
+        return None;
+    };
+    let (o, a) = (Vec3::from(*origin), Vec3::from(*axis).normalize());
+    let p = &sim.particles;
+    (0..p.len())
+        .find(|&i| {
+            let x = p.position[i] - o;
+            let h = x.dot(&a);
+            (x - a * h).norm() >= *radius || h < *bottom || h > *top
+        })
+        .map(|i| p.id[i])
 }
 
 fn refuse_all(list: Vec<(String, String)>) -> TampError {
@@ -330,6 +485,20 @@ pub fn export(
             _ => None,
         })
         .collect();
+    let outside: Vec<(String, String)> = scene
+        .walls
+        .iter()
+        .enumerate()
+        .filter_map(|(k, w)| {
+            starts_outside(w, &sim).map(|id| {
+                (
+                    format!("walls[{k}].shape"),
+                    format!("particle {id} does not start inside the cylinder: LAMMPS's region cylinder (side in) has no contact from outside or beyond its ends, tamp's wall is a two-sided shell with rims"),
+                )
+            })
+        })
+        .collect();
+    let narrow: Vec<(String, String)> = narrow.into_iter().chain(outside).collect();
     if !narrow.is_empty() {
         return Err(refuse_all(narrow));
     }
@@ -424,6 +593,13 @@ pub fn export(
             .replace("{E}", &g(m.youngs_modulus.unwrap_or(0.0)))
             .replace("{nu}", &g(m.poisson_ratio.unwrap_or(0.0)))
             .replace("{mu}", &g(mu_of(scene)));
+        if let Some(region) = cylinder_region(w) {
+            let _ = writeln!(
+                deck,
+                "region       wall{k} {region}\nfix          wall{k} all wall/gran/region granular {line} region wall{k}"
+            );
+            continue;
+        }
         for (suffix, geometry) in
             wall_fixes(w, periodic.map(|a| a.is_some())).expect("refusals checked the wall")
         {

@@ -185,6 +185,7 @@ fn die_wall(dc: &DieCompactionSpec, top: f64) -> WallSpec {
             radius: 0.5 * dc.die_diameter,
             bottom: 0.0,
             top,
+            curvature: Default::default(),
         },
         motion: MotionSpec::Fixed,
     }

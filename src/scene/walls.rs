@@ -13,7 +13,7 @@
 use super::build::v3;
 use super::validate::Errors;
 use crate::boundary::shape::Shape;
-use crate::boundary::{Boundary, BoundaryMotion, PressureLoad, Servo};
+use crate::boundary::{Boundary, BoundaryMotion, PressureLoad, Servo, WallCurvature};
 use crate::error::{Result, TampError};
 use crate::expression::Expression;
 use crate::particles::Vec3;
@@ -52,13 +52,16 @@ pub enum ShapeSpec {
         open: Vec<String>,
     },
     /// Lateral surface of a cylinder, between heights `bottom` and `top` along `axis`
-    /// measured from `origin`.
+    /// measured from `origin`. `curvature`: how the wall's curvature enters the
+    /// contact's effective radius, `flat` (the default) or `mean` (`Curvature`).
     Cylinder {
         origin: [f64; 3],
         axis: [f64; 3],
         radius: f64,
         bottom: f64,
         top: f64,
+        #[serde(default)]
+        curvature: Curvature,
     },
     /// Lateral surface of a cone frustum.
     Cone {
@@ -101,6 +104,19 @@ pub enum ShapeSpec {
         #[serde(default)]
         polygons: Option<Vec<Vec<[f64; 3]>>>,
     },
+}
+
+/// How a cylinder wall's curvature enters the contact law's effective radius R*.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Deserialize, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Curvature {
+    /// R* = R, as against a plane: a die's radius is many particle radii.
+    #[default]
+    Flat,
+    /// The wall as the sphere of its mean curvature, radius 2R_c (concave inside):
+    /// R* = 2R R_c/(2R_c − R) inside. LAMMPS's rule for `fix wall/gran zcylinder` and
+    /// `region cylinder` walls; `Boundary::effective_radius` has the formula and source.
+    Mean,
 }
 
 #[derive(Clone, Debug, Default, Deserialize, Serialize)]
@@ -201,6 +217,7 @@ fn validate_shape(shape: &ShapeSpec, at: &dyn Fn(&str) -> String, e: &mut Errors
             radius,
             bottom,
             top,
+            curvature: _,
         } => {
             e.finite3(at("shape.origin"), origin);
             unit(e, at("shape.axis"), axis);
@@ -413,12 +430,27 @@ pub fn build(
         .map(|(k, w)| {
             let shape = build_shape(&w.shape, base_dir)
                 .map_err(|rule| TampError::input(format!("walls[{k}].shape"), rule))?;
-            Ok(Boundary::new(
+            let mut wall = Boundary::new(
                 w.name(k),
                 shape,
                 material_id(&w.material),
                 build_motion(&w.motion),
-            ))
+            );
+            if let ShapeSpec::Cylinder {
+                origin,
+                axis,
+                radius,
+                curvature: Curvature::Mean,
+                ..
+            } = &w.shape
+            {
+                wall.curvature = WallCurvature::Mean {
+                    origin: v3(origin),
+                    axis: v3(axis).normalize(),
+                    radius: *radius,
+                };
+            }
+            Ok(wall)
         })
         .collect()
 }
@@ -444,6 +476,7 @@ fn build_shape(s: &ShapeSpec, base_dir: &Path) -> std::result::Result<Shape, Str
             radius,
             bottom,
             top,
+            curvature: _,
         } => Shape::Revolved(
             Revolved::cylinder(v3(origin), v3(axis), *radius, *bottom, *top).map_err(rule)?,
         ),

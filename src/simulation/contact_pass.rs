@@ -7,7 +7,7 @@
 //! is the one place that maps the scene's settings onto those variants.
 
 use super::force_loop::{Bodies, pair_geometry, wall_geometry};
-use crate::boundary::shape::ShapeContact;
+use crate::boundary::{Boundary, shape::ShapeContact};
 use crate::contact::lever_arm::Arms;
 use crate::contact::lever_arm::{Lammps, LeverArm, LeverArms, MidOverlap};
 use crate::contact::model::{
@@ -75,12 +75,12 @@ impl Variant {
         p: &Particles,
         i: usize,
         c: &ShapeContact,
-        wall_velocity: &Vec3,
+        wall: &Boundary,
     ) -> (ContactGeometry, Arms) {
         match self {
-            Variant::SpinMidOverlap => wall_geometry::<MidOverlap, true>(p, i, c, wall_velocity),
-            Variant::SpinLammps => wall_geometry::<Lammps, true>(p, i, c, wall_velocity),
-            Variant::NoSpin => wall_geometry::<MidOverlap, false>(p, i, c, wall_velocity),
+            Variant::SpinMidOverlap => wall_geometry::<MidOverlap, true>(p, i, c, wall),
+            Variant::SpinLammps => wall_geometry::<Lammps, true>(p, i, c, wall),
+            Variant::NoSpin => wall_geometry::<MidOverlap, false>(p, i, c, wall),
         }
     }
 }

@@ -65,8 +65,10 @@ impl Simulation {
             }
         }
         for (w, i, facet, overlap) in self.touching_walls(0.0) {
-            let pair = self.pair_table.get(p.material[i], self.walls[w].material);
-            let (k_n, k_t) = law.stiffness(overlap, p.radius[i], pair, &states.wall(w, i, facet));
+            let wall = &self.walls[w];
+            let pair = self.pair_table.get(p.material[i], wall.material);
+            let r_eff = wall.effective_radius(&p.position[i], p.radius[i]);
+            let (k_n, k_t) = law.stiffness(overlap, r_eff, pair, &states.wall(w, i, facet));
             met[i].add(k_n, k_t);
         }
         // Each body: (mass, radius at full size, moment of inertia, material, the

@@ -76,8 +76,10 @@ impl Simulation {
             .touching_walls(reach)
             .into_iter()
             .map(|(w, i, facet, overlap)| {
-                let pair = self.pair_table.get(p.material[i], self.walls[w].material);
-                law.stored_energy(overlap, p.radius[i], pair, &states.wall(w, i, facet))
+                let wall = &self.walls[w];
+                let pair = self.pair_table.get(p.material[i], wall.material);
+                let r_eff = wall.effective_radius(&p.position[i], p.radius[i]);
+                law.stored_energy(overlap, r_eff, pair, &states.wall(w, i, facet))
             })
             .sum();
         pairs + walls

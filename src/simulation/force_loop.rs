@@ -4,7 +4,7 @@
 
 use super::Simulation;
 use super::contact_pass::ContactPass;
-use crate::boundary::shape::ShapeContact;
+use crate::boundary::{Boundary, shape::ShapeContact};
 use crate::contact::lever_arm::{Arms, LeverArms};
 use crate::contact::model::{
     CohesionModel, Composed, DampingModel, NormalModel, StateOf, TangentialModel,
@@ -151,25 +151,25 @@ pub(super) fn pair_geometry<A: LeverArms, const ROT: bool>(
     (g, arm_i, arm_j)
 }
 
-/// The geometry of particle i's contact `c` with a wall moving at `wall_velocity`,
-/// and i's lever arms in the convention `A`.
+/// The geometry of particle i's contact `c` with `wall`, and i's lever arms in the
+/// convention `A`.
 #[inline(always)]
 pub(super) fn wall_geometry<A: LeverArms, const ROT: bool>(
     p: &Particles,
     i: usize,
     c: &ShapeContact,
-    wall_velocity: &Vec3,
+    wall: &Boundary,
 ) -> (ContactGeometry, Arms) {
     let (overlap, normal) = (c.overlap, c.normal);
     let arm = A::wall(p.radius[i], overlap);
-    let mut relative_velocity = p.velocity[i] - wall_velocity;
+    let mut relative_velocity = p.velocity[i] - wall.velocity;
     if ROT {
         relative_velocity -= p.omega[i].cross(&normal) * arm.velocity;
     }
     let g = ContactGeometry {
         normal,
         overlap,
-        effective_radius: p.radius[i],
+        effective_radius: wall.effective_radius(&p.position[i], p.radius[i]),
         effective_mass: p.mass[i],
         relative_velocity,
     };
@@ -352,7 +352,7 @@ impl Simulation {
                     let (facet, normal) = (contact.facet, contact.normal);
                     let ratio = contact.overlap / p.radius[i];
                     worst = worst.max(ratio);
-                    let (g, arm) = wall_geometry::<A, ROT>(p, i, contact, &wall.velocity);
+                    let (g, arm) = wall_geometry::<A, ROT>(p, i, contact, wall);
                     let pair = self.pair_table.get(p.material[i], wall.material);
                     let state = if kept {
                         &mut states.walls[w][i][c].1

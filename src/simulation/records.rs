@@ -95,7 +95,7 @@ impl Simulation {
                 wall.contacts(&p.position[i], p.radius[i], law_reach, &mut found);
                 for contact in &found {
                     let ratio = contact.overlap / p.radius[i];
-                    let (g, arm) = variant.wall_geometry(p, i, contact, &wall.velocity);
+                    let (g, arm) = variant.wall_geometry(p, i, contact, wall);
                     let pair = self.pair_table.get(p.material[i], wall.material);
                     let mut state = if kept {
                         carried_state(&states.walls[w][i], contact.facet)

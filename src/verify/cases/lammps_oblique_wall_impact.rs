@@ -16,13 +16,22 @@
 //!   `linear` / `hertz` and `liggghts_restitution` / `constant`;
 //!   `reference_data/lammps/run_oblique_wall_linear.sh`.
 //!
+//! - `lammps_cylinder_wall_impact` (`cylinder`): the sphere hits the inside of a cylinder
+//!   (R_c = 2.5 R, axis along y through z = R_c, the wall's lowest line under the
+//!   sphere; `region cylinder` + `fix wall/gran/region`, ends closed by planes), sliding
+//!   around the circumference, `mindlin` and `mindlin/force` with `coeff_restitution`
+//!   e = 0.9, against the scene's `"curvature": "mean"` cylinder; also the number of
+//!   steps in contact, and (in the table only) tamp's default `flat` cylinder's,
+//!   longer by about (R*/R)^{1/5} (Hertz: t_c ∝ R*^{−1/5}).
+//!   `reference_data/lammps/run_cylinder_wall.sh`.
+//!
 //! Each quantity is the largest relative deviation over the runs,
 //! |tamp − LAMMPS| / |LAMMPS|, of the rebound tangential velocity, the rebound spin ω·R
 //! and the rebound normal velocity; the per-run table goes to
 //! `<report>/<case>.csv`.
 
 use super::liggghts_inputs::Mismatches;
-use super::liggghts_oblique_wall_impact::rebound;
+use super::liggghts_oblique_wall_impact::rebound_and_contact_steps;
 use crate::contact::damping::{Constant, Damping, LiggghtsRestitution};
 use crate::contact::lever_arm::LeverArm;
 use crate::contact::normal::{Hertz, Linear, NormalLaw};
@@ -32,6 +41,7 @@ use crate::contact::tangential::lammps_mindlin::{LammpsMindlin, Variant};
 use crate::contact::tangential::{MindlinNoSlip, TangentialLaw};
 use crate::error::{Result, TampError};
 use crate::scene::Scene;
+use crate::scene::walls::{Curvature, MotionSpec, ShapeSpec};
 use crate::verify::{CaseContext, Measured};
 use serde::Deserialize;
 use std::fmt::Write as _;
@@ -53,9 +63,15 @@ struct MindlinRow {
     density: f64,
     radius: f64,
     initial_gap: f64,
+    /// The cylinder's radius R_c (`run_cylinder_wall.sh`); absent for the plane.
+    #[serde(default)]
+    cylinder_radius: Option<f64>,
     vx: f64,
     vz: f64,
     omega_y: f64,
+    /// Steps with a wall contact (`run_cylinder_wall.sh`).
+    #[serde(default)]
+    contact_steps: Option<u64>,
 }
 
 /// One LAMMPS run at one angle, as `run_oblique_wall_linear.sh` writes it: the normal
@@ -108,9 +124,11 @@ struct Run {
     density: f64,
     radius: f64,
     initial_gap: f64,
+    cylinder_radius: Option<f64>,
     vx: f64,
     vz: f64,
     omega_y: f64,
+    contact_steps: Option<u64>,
 }
 
 impl MindlinRow {
@@ -133,9 +151,11 @@ impl MindlinRow {
             density: self.density,
             radius: self.radius,
             initial_gap: self.initial_gap,
+            cylinder_radius: self.cylinder_radius,
             vx: self.vx,
             vz: self.vz,
             omega_y: self.omega_y,
+            contact_steps: self.contact_steps,
         })
     }
 }
@@ -195,9 +215,11 @@ impl LinearRow {
             density: self.density,
             radius: self.radius,
             initial_gap: self.initial_gap,
+            cylinder_radius: None,
             vx: self.vx,
             vz: self.vz,
             omega_y: self.omega_y,
+            contact_steps: None,
         })
     }
 }
@@ -235,7 +257,10 @@ fn mismatches(scene: &Scene, row: &Run) -> Mismatches {
         row.time_step,
     );
     out.check_spins_without_gravity(scene);
-    out.check_sphere_on_floor(scene, row.radius, row.initial_gap);
+    match row.cylinder_radius {
+        None => out.check_sphere_on_floor(scene, row.radius, row.initial_gap),
+        Some(r_c) => check_sphere_in_cylinder(&mut out, scene, row, r_c),
+    }
     match &scene.contact.tangential {
         Some(t) if t.friction_pairs.is_empty() => {
             out.check("contact.tangential.friction", t.friction, row.friction)
@@ -253,6 +278,36 @@ fn mismatches(scene: &Scene, row: &Run) -> Mismatches {
     out
 }
 
+/// The scene is the one sphere above the origin, inside a fixed cylinder of its own
+/// material of radius `r_c` with `"curvature": "mean"`, axis along y through (0, ·, r_c)
+/// (its lowest line through the origin), and nothing else but planes normal to y
+/// (the closed ends, out of the sphere's reach).
+fn check_sphere_in_cylinder(out: &mut Mismatches, scene: &Scene, row: &Run, r_c: f64) {
+    let Some(p) = out.check_sphere_above_origin(scene, row.radius, row.initial_gap) else {
+        return;
+    };
+    let cylinders: Vec<_> = scene
+        .walls
+        .iter()
+        .filter(|w| matches!(w.shape, ShapeSpec::Cylinder { .. }))
+        .collect();
+    let cylinder_ok = matches!(cylinders.as_slice(), [w] if w.material == p.material
+        && matches!(w.motion, MotionSpec::Fixed)
+        && matches!(&w.shape, ShapeSpec::Cylinder { origin, axis, radius, curvature, .. }
+            if *origin == [0.0, 0.0, r_c] && *axis == [0.0, 1.0, 0.0] && *radius == r_c
+                && *curvature == Curvature::Mean));
+    let others_ok = scene.walls.iter().all(|w| match &w.shape {
+        ShapeSpec::Cylinder { .. } => true,
+        ShapeSpec::Plane { normal, .. } => normal[0] == 0.0 && normal[2] == 0.0,
+        _ => false,
+    });
+    if !(cylinder_ok && others_ok) {
+        out.0.push(format!(
+            "walls: the peer ran one fixed cylinder of the sphere's material, radius {r_c:e}, axis y through (0, 0, {r_c:e}), curvature 'mean', its ends closed by planes normal to y"
+        ));
+    }
+}
+
 fn deviation(tamp: f64, lammps: f64) -> f64 {
     (tamp - lammps).abs() / lammps.abs()
 }
@@ -264,6 +319,24 @@ pub fn mindlin(ctx: &CaseContext) -> Result<Vec<Measured>> {
         .into_iter()
         .map(MindlinRow::run)
         .collect::<Result<Vec<_>>>()?;
+    compare(ctx, &runs, "tangential,damping")
+}
+
+/// `lammps_cylinder_wall_impact`.
+pub fn cylinder(ctx: &CaseContext) -> Result<Vec<Measured>> {
+    let rows: Vec<MindlinRow> = ctx.peer_results("lammps")?;
+    let runs = rows
+        .into_iter()
+        .map(MindlinRow::run)
+        .collect::<Result<Vec<_>>>()?;
+    if runs
+        .iter()
+        .any(|r| r.cylinder_radius.is_none() || r.contact_steps.is_none())
+    {
+        return Err(TampError::Other(
+            "results.csv: every run needs cylinder_radius and contact_steps".into(),
+        ));
+    }
     compare(ctx, &runs, "tangential,damping")
 }
 
@@ -282,9 +355,15 @@ pub fn linear(ctx: &CaseContext) -> Result<Vec<Measured>> {
 fn compare(ctx: &CaseContext, runs: &[Run], columns: &str) -> Result<Vec<Measured>> {
     let base = ctx.scene()?;
     let mut worst = [0.0_f64; 3];
+    let mut worst_steps = 0_u64;
     let mut table = format!(
-        "{columns},angle_deg,tamp_law,lammps_vt,tamp_vt,deviation_vt,lammps_omega_r,tamp_omega_r,deviation_omega_r,lammps_vn,tamp_vn,deviation_vn\n",
+        "{columns},angle_deg,tamp_law,lammps_vt,tamp_vt,deviation_vt,lammps_omega_r,tamp_omega_r,deviation_omega_r,lammps_vn,tamp_vn,deviation_vn",
     );
+    let counted = runs.iter().all(|r| r.contact_steps.is_some());
+    if counted {
+        table.push_str(",lammps_contact_steps,tamp_contact_steps,flat_contact_steps,flat_over_lammps,flat_deviation_vt,flat_deviation_omega_r,flat_deviation_vn");
+    }
+    table.push('\n');
     for row in runs {
         mismatches(&base, row).refuse_any(&row.label)?;
         let mut s = base.clone();
@@ -295,17 +374,9 @@ fn compare(ctx: &CaseContext, runs: &[Run], columns: &str) -> Result<Vec<Measure
             t.law = row.tangential;
         }
         s.contact.damping = row.damping;
-        let (vx, vz, omega_r) = rebound(
-            &s,
-            [row.tangential_speed, row.normal_speed],
-            row.steps,
-            &row.label,
-        )?;
-        let pairs = [
-            (vx, row.vx),
-            (omega_r, row.omega_y * row.radius),
-            (vz, row.vz),
-        ];
+        let v = [row.tangential_speed, row.normal_speed];
+        let (vx, vz, omega_r, steps) = rebound_and_contact_steps(&s, v, row.steps, &row.label)?;
+        let lammps = [row.vx, row.omega_y * row.radius, row.vz];
         let _ = write!(
             table,
             "{},{},{}",
@@ -313,10 +384,28 @@ fn compare(ctx: &CaseContext, runs: &[Run], columns: &str) -> Result<Vec<Measure
             row.angle_deg,
             row.tangential.name()
         );
-        for (k, (tamp, lammps)) in pairs.into_iter().enumerate() {
+        for (k, (tamp, lammps)) in [vx, omega_r, vz].into_iter().zip(lammps).enumerate() {
             let d = deviation(tamp, lammps);
             worst[k] = worst[k].max(d);
             let _ = write!(table, ",{lammps:.17e},{tamp:.17e},{d:e}");
+        }
+        if let Some(lammps_steps) = row.contact_steps {
+            worst_steps = worst_steps.max(steps.abs_diff(lammps_steps));
+            // tamp's default flat cylinder against the same LAMMPS run.
+            for w in &mut s.walls {
+                if let ShapeSpec::Cylinder { curvature, .. } = &mut w.shape {
+                    *curvature = Curvature::Flat;
+                }
+            }
+            let (fx, fz, fw, flat_steps) = rebound_and_contact_steps(&s, v, row.steps, &row.label)?;
+            let _ = write!(
+                table,
+                ",{lammps_steps},{steps},{flat_steps},{:.6},{:e},{:e},{:e}",
+                flat_steps as f64 / lammps_steps as f64,
+                deviation(fx, lammps[0]),
+                deviation(fw, lammps[1]),
+                deviation(fz, lammps[2])
+            );
         }
         table.push('\n');
     }
@@ -325,9 +414,17 @@ fn compare(ctx: &CaseContext, runs: &[Run], columns: &str) -> Result<Vec<Measure
         &ctx.report_dir.join(format!("{}.csv", ctx.spec.name)),
         table.as_bytes(),
     )?;
-    Ok(vec![
+    let mut out = vec![
         Measured::new("max_tangential_velocity_deviation", worst[0], 0.0),
         Measured::new("max_angular_velocity_deviation", worst[1], 0.0),
         Measured::new("max_normal_velocity_deviation", worst[2], 0.0),
-    ])
+    ];
+    if counted {
+        out.push(Measured::new(
+            "max_contact_steps_difference",
+            worst_steps as f64,
+            0.0,
+        ));
+    }
+    Ok(out)
 }

@@ -115,18 +115,9 @@ impl Mismatches {
     /// One sphere of `radius` at (0, 0, radius + initial_gap) above one fixed plane
     /// z = 0 (normal +z) of its own material.
     pub fn check_sphere_on_floor(&mut self, scene: &Scene, radius: f64, initial_gap: f64) {
-        let [p] = scene.particles.as_slice() else {
-            self.0.push("particles: the peer ran one sphere".into());
+        let Some(p) = self.check_sphere_above_origin(scene, radius, initial_gap) else {
             return;
         };
-        self.check("particles[0].radius", p.radius, radius);
-        self.check("particles[0].position.x", p.position[0], 0.0);
-        self.check("particles[0].position.y", p.position[1], 0.0);
-        self.check(
-            "particles[0].position.z",
-            p.position[2],
-            radius + initial_gap,
-        );
         let plane_ok = matches!(scene.walls.as_slice(), [w] if w.material == p.material
             && matches!(w.motion, MotionSpec::Fixed)
             && matches!(&w.shape, ShapeSpec::Plane { point, normal }
@@ -137,5 +128,28 @@ impl Mismatches {
                     .into(),
             );
         }
+    }
+
+    /// The scene's one sphere, checked to be the peer's: radius `radius`, centre at
+    /// (0, 0, radius + initial_gap) above the wall's point at the origin.
+    pub fn check_sphere_above_origin<'s>(
+        &mut self,
+        scene: &'s Scene,
+        radius: f64,
+        initial_gap: f64,
+    ) -> Option<&'s crate::scene::schema::ParticleSpec> {
+        let [p] = scene.particles.as_slice() else {
+            self.0.push("particles: the peer ran one sphere".into());
+            return None;
+        };
+        self.check("particles[0].radius", p.radius, radius);
+        self.check("particles[0].position.x", p.position[0], 0.0);
+        self.check("particles[0].position.y", p.position[1], 0.0);
+        self.check(
+            "particles[0].position.z",
+            p.position[2],
+            radius + initial_gap,
+        );
+        Some(p)
     }
 }

@@ -105,15 +105,28 @@ fn rigid_body(v_t: f64, v_n: f64, mu: f64, e: f64) -> (f64, f64) {
 /// (v_x, v_z, ω_y R), refused if it still touches the wall (`run` names the run).
 pub(super) fn rebound(
     scene: &Scene,
-    [v_t, v_n]: [f64; 2],
+    v: [f64; 2],
     steps: u64,
     run: &str,
 ) -> Result<(f64, f64, f64)> {
+    rebound_and_contact_steps(scene, v, steps, run).map(|(vx, vz, w, _)| (vx, vz, w))
+}
+
+/// `rebound`, and the number of steps after which the sphere touches a wall (the
+/// contact's duration in steps).
+pub(super) fn rebound_and_contact_steps(
+    scene: &Scene,
+    [v_t, v_n]: [f64; 2],
+    steps: u64,
+    run: &str,
+) -> Result<(f64, f64, f64, u64)> {
     let mut s = scene.clone();
     s.particles[0].velocity = Some([v_t, 0.0, -v_n]);
     let mut sim = scene::build(&s)?.sim;
+    let mut touching = 0;
     for _ in 0..steps {
         sim.step()?;
+        touching += u64::from(sim.contact_count() != 0);
     }
     if sim.contact_count() != 0 {
         return Err(TampError::Other(format!(
@@ -121,7 +134,12 @@ pub(super) fn rebound(
         )));
     }
     let p = &sim.particles;
-    Ok((p.velocity[0].x, p.velocity[0].z, p.omega[0].y * p.radius[0]))
+    Ok((
+        p.velocity[0].x,
+        p.velocity[0].z,
+        p.omega[0].y * p.radius[0],
+        touching,
+    ))
 }
 
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {

@@ -115,6 +115,10 @@ pub const CASES: &[(&str, CaseFn)] = &[
         lammps_oblique_wall_impact::linear,
     ),
     (
+        "lammps_cylinder_wall_impact",
+        lammps_oblique_wall_impact::cylinder,
+    ),
+    (
         "lammps_three_sphere_trajectory",
         liggghts_three_sphere_trajectory::run,
     ),
