@@ -20,12 +20,22 @@
 //!
 //! Each quantity is tamp's value against the peer's, averaged over the seeds. The
 //! report gets both codes' curves (`<case>_curves.csv`).
+//!
+//! The live cross-check runs the peer on the recorded deck (`seed<S>/in.tamp`,
+//! `particles.data`, `stroke.json`) rather than exporting it again, since the
+//! export presses in tamp once more; so this case checks that the recorded deck is
+//! still what tamp would export: the scene file's sha256 in its header, the
+//! specimen's H₀, and its stroke equal to the one results.csv holds and tamp
+//! replays. A change of tamp's pressing alone (not of the scene, fill or law) would
+//! give another stroke but not a wrong comparison: both codes replay the recorded
+//! one.
 
 use crate::error::{Result, TampError};
 use crate::process::die_replay::{self, ReplayRecord, Stroke};
 use crate::verify::{CaseContext, Measured};
 use serde::Deserialize;
 use std::fmt::Write as _;
+use std::path::Path;
 
 /// One record of the peer's replay (regenerate.sh joins the thermo output of the
 /// deck and `import-liggghts-dump --die-stroke`'s die.csv).
@@ -99,6 +109,8 @@ pub fn lammps(ctx: &CaseContext) -> Result<Vec<Measured>> {
 fn compare(ctx: &CaseContext, peer: &str) -> Result<Vec<Measured>> {
     let rows: Vec<Row> = ctx.peer_results(peer)?;
     let base = ctx.scene()?;
+    let scene_file = ctx.spec.scene.as_deref().unwrap_or_default();
+    let sha = crate::scene::load(&ctx.dir.join(scene_file))?.1;
     let mut seeds: Vec<u64> = rows.iter().map(|r| r.seed).collect();
     seeds.dedup();
     let mut curves = String::from(
@@ -114,24 +126,23 @@ fn compare(ctx: &CaseContext, peer: &str) -> Result<Vec<Measured>> {
                 "results.csv: seed {seed} needs records 0, 1, 2, … in full"
             )));
         }
+        let stroke = stroke_of(&mine);
+        let deck = ctx
+            .reference_data_dir()
+            .join(peer)
+            .join(&ctx.spec.name)
+            .join(format!("seed{seed}"));
+        recorded_deck_is_current(&deck, &sha, &stroke)?;
         let mut scene = base.clone();
         scene.seed = seed;
         let specimen = super::die_specimen::prepare(&scene)?;
-        let h0 = mine[0].h0;
+        let h0 = stroke.h0;
         if (specimen.h0 - h0).abs() > 1e-12 * h0 {
             return Err(TampError::Other(format!(
                 "results.csv: seed {seed} was recorded for a specimen of H0 = {h0:e} m; tamp now fills one of {:e} m: re-record (regenerate.sh)",
                 specimen.h0
             )));
         }
-        let stroke = Stroke {
-            h0,
-            interval: mine[1].time - mine[0].time,
-            steps_per_record: mine[0].steps_per_record,
-            dt: mine[0].dt,
-            heights: mine[1..].iter().map(|r| r.height).collect(),
-            pressures: mine[1..].iter().map(|r| r.tamp_pressure).collect(),
-        };
         let solid = die_replay::solid_sphere_scene(&scene);
         let tamp = die_replay::replay(&solid, &specimen, &stroke)?;
         let theirs: Vec<ReplayRecord> = mine
@@ -180,4 +191,86 @@ fn compare(ctx: &CaseContext, peer: &str) -> Result<Vec<Measured>> {
         .zip(&peer_sum)
         .map(|((name, a), b)| Measured::new(name, a / n, b / n))
         .collect())
+}
+
+/// The stroke of one seed's rows (records 0, 1, 2, … in order).
+fn stroke_of(rows: &[&Row]) -> Stroke {
+    Stroke {
+        h0: rows[0].h0,
+        interval: rows[1].time - rows[0].time,
+        steps_per_record: rows[0].steps_per_record,
+        dt: rows[0].dt,
+        heights: rows[1..].iter().map(|r| r.height).collect(),
+        pressures: rows[1..].iter().map(|r| r.tamp_pressure).collect(),
+    }
+}
+
+/// The deck the peer ran for a seed (`dir` = `seed<S>/`: `in.tamp`, `stroke.json`,
+/// recorded beside results.csv and run as it is by the live cross-check) must be the one
+/// tamp would export now: written from this scene file (its sha256 in the deck's
+/// header) and along the stroke results.csv holds and tamp replays. The specimen's
+/// H₀ is checked by the caller.
+fn recorded_deck_is_current(dir: &Path, sha: &str, stroke: &Stroke) -> Result<()> {
+    let read = |file: &str| {
+        let path = dir.join(file);
+        std::fs::read_to_string(&path)
+            .map_err(|e| TampError::io(format!("reading {}", path.display()), e))
+    };
+    let stale = |what: String| {
+        TampError::Other(format!(
+            "{}: {what}: the recorded deck is stale, re-record (regenerate.sh)",
+            dir.display()
+        ))
+    };
+    if !read("in.tamp")?.contains(&format!("sha256 {sha}")) {
+        return Err(stale(format!(
+            "in.tamp was exported from another version of the scene (now sha256 {sha})"
+        )));
+    }
+    let ran: crate::liggghts::die_compaction::DieStroke =
+        serde_json::from_str(&read("stroke.json")?)
+            .map_err(|e| stale(format!("stroke.json: {e}")))?;
+    let ran = ran.stroke;
+    // die_replay_rows.py copies stroke.json's numbers into results.csv with
+    // Python's repr, which reads back to the same double: equal to the bit.
+    if ran.steps_per_record != stroke.steps_per_record
+        || ran.dt != stroke.dt
+        || ran.h0 != stroke.h0
+        || ran.heights != stroke.heights
+    {
+        return Err(stale(
+            "stroke.json differs from the stroke in results.csv".into(),
+        ));
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Cheap staleness check of both recorded decks (no fill, no replay): what the
+    /// case checks before it presses, so a scene edit fails `cargo test` too.
+    #[test]
+    fn the_recorded_decks_are_the_scenes_and_strokes_of_results_csv() {
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+        for peer in ["liggghts", "lammps"] {
+            let case = format!("{peer}_die_compaction_small");
+            let recorded = root.join("reference_data").join(peer).join(&case);
+            let rows: Vec<Row> = csv::Reader::from_path(recorded.join("results.csv"))
+                .unwrap()
+                .deserialize()
+                .collect::<std::result::Result<_, _>>()
+                .unwrap();
+            let seed1: Vec<&Row> = rows.iter().filter(|r| r.seed == 1).collect();
+            let scene = root.join("verification").join(format!("{case}.scene.json"));
+            let sha = crate::scene::load(&scene).unwrap().1;
+            let stroke = stroke_of(&seed1);
+            recorded_deck_is_current(&recorded.join("seed1"), &sha, &stroke).unwrap();
+            let mut moved = stroke.clone();
+            moved.heights[7] *= 1.0 + 1e-15;
+            assert!(recorded_deck_is_current(&recorded.join("seed1"), &sha, &moved).is_err());
+            assert!(recorded_deck_is_current(&recorded.join("seed1"), "0", &stroke).is_err());
+        }
+    }
 }
