@@ -152,6 +152,33 @@ fn accuracy_refuses_a_walton_braun_unloading_stiffer_than_calibrated() {
     assert!(built.is_ok(), "{:?}", built.err());
 }
 
+/// A law without an error model is refused with exit 2 naming `time_step.accuracy` and
+/// the law (`kuwabara_kono`; `thornton` with the `liggghts` unloading, whose first-order
+/// increments converge to another closed form); Thornton's own unloading is modelled up
+/// to 30 times the yield velocity (glass 1 mm pair at p_y = 1 MPa: v_y = 1.5 cm/s).
+#[test]
+fn accuracy_refuses_laws_without_an_error_model() {
+    for (normal, named) in [
+        (
+            json!({"law": "kuwabara_kono", "dissipation_time": 1e-8}),
+            "(kuwabara_kono) has no error model",
+        ),
+        (
+            json!({"law": "thornton", "yield_pressure": 1e7, "unloading": "liggghts"}),
+            "(thornton) has no error model",
+        ),
+        (
+            json!({"law": "thornton", "yield_pressure": 1e6}),
+            "times its yield velocity, above 30",
+        ),
+    ] {
+        let mut s = base();
+        s["contact"] = json!({ "normal": normal });
+        s["time_step"] = json!({"accuracy": 1e-3, "characteristic_velocity": 1.0});
+        expect_input_error(s, &["time_step.accuracy", named]);
+    }
+}
+
 #[test]
 fn hertz_accuracy_without_characteristic_velocity_states_its_step() {
     let mut s = base();

@@ -10,6 +10,7 @@ use super::model::{ErrorModel, ErrorTerm};
 use super::trial::{Partner, Trial};
 use crate::contact::damping::liggghts::LiggghtsModel;
 use crate::contact::normal::linear::LinearCollision;
+use crate::error::Result;
 use serde_json::json;
 
 const RADIUS: f64 = 1e-3;
@@ -32,8 +33,17 @@ pub fn hertz_damped_xi_max() -> f64 {
 const DENSITY: f64 = 7800.0;
 const STIFFNESS: f64 = 1e6;
 
+/// Thornton's limiting contact pressure of the calibration, Pa: about a hardened
+/// steel's (v_y = 2.3 cm/s for the calibration's spheres).
+pub const THORNTON_YIELD_PRESSURE: f64 = 1e9;
+/// The approach speeds of the Thornton calibration over the yield velocity: one elastic
+/// (Hertz) impact and plastic ones over the range of `thornton_restitution`.
+pub const THORNTON_SPEED_RATIOS: [f64; 5] = [0.5, 1.5, 3.0, 10.0, 30.0];
+/// The largest v/v_y calibrated: beyond it an explicit accuracy is refused.
+pub const THORNTON_SPEED_RATIO_MAX: f64 = 30.0;
+
 /// Each law's calibration impacts, by the law's name in `MODELS`.
-pub fn trials() -> Vec<(&'static str, Trial)> {
+pub fn trials() -> Result<Vec<(&'static str, Trial)>> {
     let steel = json!([{"name": "steel", "density": DENSITY, "youngs_modulus": 2e11, "poisson_ratio": 0.3}]);
     let trial = |name, contact| Trial {
         name,
@@ -67,8 +77,16 @@ pub fn trials() -> Vec<(&'static str, Trial)> {
                                "xi": LiggghtsModel::Hertz.critical_fraction(e)}}),
         )
     };
+    let thornton = |name, v_over_vy| {
+        trial(
+            name,
+            json!({"normal": {"law": "thornton", "yield_pressure": THORNTON_YIELD_PRESSURE}}),
+        )
+        .at_yield_ratio(v_over_vy)
+    };
     let [r0, r1, r2, r3] = WALTON_BRAUN_RATIOS;
-    vec![
+    let [t0, t1, t2, t3, t4] = THORNTON_SPEED_RATIOS;
+    Ok(vec![
         (
             "linear",
             trial(
@@ -96,7 +114,12 @@ pub fn trials() -> Vec<(&'static str, Trial)> {
             "hertz_damped",
             hertz_damped("hertz, xi for e = 0.1", DAMPED_RESTITUTION_MIN),
         ),
-    ]
+        ("thornton", thornton("thornton, v = 0.5 v_y", t0)?),
+        ("thornton", thornton("thornton, v = 1.5 v_y", t1)?),
+        ("thornton", thornton("thornton, v = 3 v_y", t2)?),
+        ("thornton", thornton("thornton, v = 10 v_y", t3)?),
+        ("thornton", thornton("thornton, v = 30 v_y", t4)?),
+    ])
 }
 
 /// The steps of the sweep, as Δt/t_c: 1/4 to 1/1024 by halves.
@@ -112,7 +135,7 @@ const fn term(quantity: &'static str, c: f64, p: f64) -> ErrorTerm {
 }
 
 /// Measured by `tamp study accuracy-calibration --out docs` (docs/accuracy-cost.md).
-pub const MODELS: [ErrorModel; 5] = [
+pub const MODELS: [ErrorModel; 6] = [
     ErrorModel {
         law: "linear",
         terms: [
@@ -156,6 +179,15 @@ pub const MODELS: [ErrorModel; 5] = [
             term("max_force", 9.082, 1.151),
             term("contact_duration", 1.015, 1.135),
             term("rebound_velocity", 4.247, 1.017),
+        ],
+    },
+    ErrorModel {
+        law: "thornton",
+        terms: [
+            term("max_overlap", 2.406, 2.165),
+            term("max_force", 6.467, 1.975),
+            term("contact_duration", 3.47, 2.057),
+            term("rebound_velocity", 6.782, 2.137),
         ],
     },
 ];

@@ -16,7 +16,12 @@
 //! - Walton–Braun (Zhong eq 16): δ_max = v √(m*/k₁), F_max = k₁ δ_max,
 //!   e = √(k₁/k₂); the force lasts a quarter period on each branch,
 //!   (π/2)(√(m*/k₁) + √(m*/k₂)), and ends at the permanent set δ₀ = δ_max (1 − k₁/k₂),
-//!   which the bodies then leave at e v: the overlap lasts δ₀/(e v) longer.
+//!   which the bodies then leave at e v: the overlap lasts δ₀/(e v) longer;
+//! - Thornton 1997 (elastic–perfectly-plastic, `unloading: thornton_1997`), with
+//!   V = v/v_y: δ_max/δ_y = 1/3 + (2√5/15)√(6V² − 1), F_max = F_y (3x − 1)/2 on the
+//!   plastic line, e = Thornton's printed formula (Hertz for V ≤ 1); its duration has
+//!   no closed form, it is the sum of four phases on the law's own curves, one of them
+//!   a quadrature (`ThorntonContact::impact_duration`).
 //!
 //! The contact duration is the time the overlap is positive (what the probe measures).
 
@@ -25,6 +30,9 @@ use crate::contact::ContactLaw;
 use crate::contact::damping::{Damping, critical_damping};
 use crate::contact::normal::hertz::{hertz_contact_duration, hertz_force, hertz_max_overlap};
 use crate::contact::normal::linear::LinearCollision;
+use crate::contact::normal::thornton::{
+    Thornton, Unloading, thornton_1997_restitution, yield_velocity,
+};
 use crate::contact::normal::{Linear, NormalLaw, WaltonBraun};
 use crate::material::PairProperties;
 use std::f64::consts::PI;
@@ -143,6 +151,28 @@ pub fn closed_form(
                 max_overlap: u.max_overlap * overlap,
                 max_force: u.max_force * k * overlap.powf(1.5),
                 restitution: u.restitution,
+            })
+        }
+        (
+            NormalLaw::Thornton(
+                law @ Thornton {
+                    unloading: Unloading::Thornton1997,
+                    ..
+                },
+            ),
+            None,
+        ) => {
+            pair.effective_modulus?;
+            let c = law.at(r, pair);
+            let v_y = yield_velocity(c.yield_pressure, c.effective_modulus, r, m);
+            let max_overlap = c.impact_max_overlap(m, v);
+            let duration = c.impact_duration(m, v);
+            Some(Impact {
+                time_scale: duration,
+                duration,
+                max_overlap,
+                max_force: c.loading(max_overlap).0,
+                restitution: thornton_1997_restitution(v / v_y),
             })
         }
         _ => None,

@@ -14,6 +14,7 @@
 use crate::contact::ContactLaw;
 use crate::contact::damping::Damping;
 use crate::contact::normal::NormalLaw;
+use crate::contact::normal::thornton::{Thornton, Unloading};
 
 /// The largest Δt/t_c the model gives: the calibration's coarser steps are not yet
 /// on the power law.
@@ -76,6 +77,14 @@ pub fn for_law(law: &ContactLaw) -> Option<&'static ErrorModel> {
             ),
             None,
         ) => "hertz_damped",
+        (
+            NormalLaw::Thornton(Thornton {
+                unloading: Unloading::Thornton1997,
+                ..
+            }),
+            None,
+            None,
+        ) => "thornton",
         _ => return None,
     };
     super::calibration::MODELS.iter().find(|m| m.law == name)

@@ -8,9 +8,12 @@
 //! The step never exceeds the default α = 0.2 times the critical step (Rojek eq 26):
 //! at a loose accuracy, stability and not accuracy sets it.
 
-use super::calibration::{DAMPED_RESTITUTION_MIN, WALTON_BRAUN_RATIO_MAX, hertz_damped_xi_max};
+use super::calibration::{
+    DAMPED_RESTITUTION_MIN, THORNTON_SPEED_RATIO_MAX, WALTON_BRAUN_RATIO_MAX, hertz_damped_xi_max,
+};
 use super::impact::{closed_form, hertz_dashpot_fraction};
 use super::model::{ErrorModel, for_law};
+use crate::contact::normal::thornton::yield_velocity;
 use crate::contact::normal::{NormalLaw, WaltonBraun};
 use crate::material::PairProperties;
 use crate::simulation::Simulation;
@@ -56,7 +59,7 @@ pub fn choose(
     let law = &sim.law;
     let model = for_law(law).ok_or_else(|| {
         format!(
-            "the contact law ({}{}{}) has no error model: only linear (undamped, or with constant or critical_fraction damping), hertz (undamped, or with critical_fraction, liggghts_restitution or tsuji damping) and walton_braun, without cohesion, are calibrated (docs/accuracy-cost.md); give time_step.alpha or time_step.fixed",
+            "the contact law ({}{}{}) has no error model: only linear (undamped, or with constant or critical_fraction damping), hertz (undamped, or with critical_fraction, liggghts_restitution or tsuji damping), walton_braun and thornton (unloading thornton_1997), without cohesion, are calibrated (docs/accuracy-cost.md); give time_step.alpha or time_step.fixed",
             law.normal.name(),
             law.damping.map_or(String::new(), |d| format!(" + {} damping", d.name())),
             law.cohesion.map_or("", |_| " + cohesion"),
@@ -105,6 +108,15 @@ pub fn choose(
     }
     let duration = |m: f64, r: f64, pair: &PairProperties| {
         closed_form(law, m, r, pair, speed).map(|i| {
+            if let NormalLaw::Thornton(t) = law.normal {
+                let c = t.at(r, pair);
+                let ratio = speed / yield_velocity(c.yield_pressure, c.effective_modulus, r, m);
+                if ratio > THORNTON_SPEED_RATIO_MAX {
+                    return Err(format!(
+                        "the thornton impact of a body of radius {r:e} m at {speed:e} m/s is {ratio:.1} times its yield velocity, above {THORNTON_SPEED_RATIO_MAX}, the fastest the error model is calibrated for (docs/accuracy-cost.md); give time_step.alpha or time_step.fixed"
+                    ));
+                }
+            }
             if model.law == "linear_damped" && i.restitution < DAMPED_RESTITUTION_MIN {
                 Err(format!(
                     "the damping gives a restitution of {:.3} to a body of radius {r:e} m, below {DAMPED_RESTITUTION_MIN}, the strongest damping the error model is calibrated for (docs/accuracy-cost.md); give time_step.alpha or time_step.fixed",

@@ -4,7 +4,10 @@
 //! gravity), so the probe's largest force is the contact's.
 
 use super::impact::{Impact, closed_form};
+use crate::contact::normal::NormalLaw;
+use crate::contact::normal::thornton::yield_velocity;
 use crate::error::{Result, TampError};
+use crate::material::PairProperties;
 use crate::material::{effective_mass, effective_radius};
 use crate::particles::Vec3;
 use crate::scene;
@@ -97,9 +100,31 @@ impl Trial {
         self.closed_form(&scene::build(&s)?.sim)
     }
 
-    fn closed_form(&self, sim: &crate::simulation::Simulation) -> Result<Impact> {
+    /// This impact at the approach speed v/v_y = `v_over_vy` times Thornton's yield
+    /// velocity of its contact (the scene's law must be `thornton`).
+    pub fn at_yield_ratio(mut self, v_over_vy: f64) -> Result<Trial> {
+        let s = scene::parse(
+            &self
+                .scene(json!({"fixed": 1e-15}), self.radius * 1e-3)
+                .to_string(),
+        )?;
+        let sim = scene::build(&s)?.sim;
+        let NormalLaw::Thornton(law) = sim.law.normal else {
+            return Err(TampError::Other(format!(
+                "{}: not a thornton law",
+                self.name
+            )));
+        };
+        let (m, r, pair) = self.effective(&sim);
+        let c = law.at(r, &pair);
+        self.speed = v_over_vy * yield_velocity(c.yield_pressure, c.effective_modulus, r, m);
+        Ok(self)
+    }
+
+    /// Effective mass and radius of the impact, and its pair's properties.
+    fn effective(&self, sim: &crate::simulation::Simulation) -> (f64, f64, PairProperties) {
         let p = &sim.particles;
-        let (m, r, pair) = match self.partner {
+        match self.partner {
             Partner::Sphere(_) => (
                 effective_mass(p.mass[0], p.mass[1]),
                 effective_radius(p.radius[0], p.radius[1]),
@@ -110,7 +135,11 @@ impl Trial {
                 p.radius[0],
                 *sim.pair_table.get(p.material[0], sim.walls[0].material),
             ),
-        };
+        }
+    }
+
+    fn closed_form(&self, sim: &crate::simulation::Simulation) -> Result<Impact> {
+        let (m, r, pair) = self.effective(sim);
         closed_form(&sim.law, m, r, &pair, self.speed).ok_or_else(|| {
             TampError::Other(format!("{}: the law has no impact closed form", self.name))
         })
