@@ -222,7 +222,14 @@ fn recorded_deck_is_current(dir: &Path, sha: &str, stroke: &Stroke) -> Result<()
             dir.display()
         ))
     };
-    if !read("in.tamp")?.contains(&format!("sha256 {sha}")) {
+    // The header names the scene's whole hash: compare it as a token, not a prefix.
+    let deck = read("in.tamp")?;
+    let recorded_sha = deck.split("sha256 ").nth(1).map(|rest| {
+        rest.split(|c: char| !c.is_ascii_hexdigit())
+            .next()
+            .unwrap_or_default()
+    });
+    if recorded_sha != Some(sha) {
         return Err(stale(format!(
             "in.tamp was exported from another version of the scene (now sha256 {sha})"
         )));
@@ -270,6 +277,8 @@ mod tests {
             let mut moved = stroke.clone();
             moved.heights[7] *= 1.0 + 1e-15;
             assert!(recorded_deck_is_current(&recorded.join("seed1"), &sha, &moved).is_err());
+            // A prefix of the right hash is another hash (the LAMMPS scene's starts "0").
+            assert!(recorded_deck_is_current(&recorded.join("seed1"), &sha[..1], &stroke).is_err());
             assert!(recorded_deck_is_current(&recorded.join("seed1"), "0", &stroke).is_err());
         }
     }
