@@ -225,7 +225,10 @@ pub fn run_cli(
                     let Some((name, peer, recorded, out)) = runs.get(k) else {
                         break;
                     };
-                    eprintln!("{name}: running {peer} ({}/regenerate.sh)", recorded.display());
+                    eprintln!(
+                        "{name}: running {peer} ({}/regenerate.sh)",
+                        recorded.display()
+                    );
                     let outcome = run_script(recorded, out, &tamp);
                     *outcomes[k].lock().expect("no run panics holding it") = Some(outcome);
                 }
@@ -270,7 +273,7 @@ pub fn run_cli(
             tier,
             &to_check,
             None,
-        report_dir,
+            report_dir,
             Some(&live_root),
             verify::default_jobs(),
         )?
