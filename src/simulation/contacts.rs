@@ -6,6 +6,7 @@ use crate::contact::model::{
     CohesionModel, Composed, DampingModel, LawVisitor, NormalModel, StateOf, TangentialModel,
 };
 use crate::contact::states::{ContactStates, StateStore};
+use crate::material::{PairProperties, effective_radius};
 use crate::particles::Vec3;
 
 /// An empty state store of the scene's laws' state type.
@@ -59,6 +60,25 @@ impl Simulation {
             }
         }
         out
+    }
+
+    /// The material pair and effective radius R* of particles `i` and `j`.
+    pub(super) fn pair_of(&self, i: usize, j: usize) -> (&PairProperties, f64) {
+        let p = &self.particles;
+        (
+            self.pair_table.get(p.material[i], p.material[j]),
+            effective_radius(p.radius[i], p.radius[j]),
+        )
+    }
+
+    /// The material pair and effective radius R* of particle `i` against boundary `w`
+    /// (R* by the boundary's curvature at the particle).
+    pub(super) fn wall_pair_of(&self, w: usize, i: usize) -> (&PairProperties, f64) {
+        let (p, wall) = (&self.particles, &self.walls[w]);
+        (
+            self.pair_table.get(p.material[i], wall.material),
+            wall.effective_radius(&p.position[i], p.radius[i]),
+        )
     }
 
     /// The state of the scene's laws, as the type `S` the force loop knows.

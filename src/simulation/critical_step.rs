@@ -5,7 +5,6 @@ use super::Simulation;
 use crate::contact::model::{
     CohesionModel, Composed, DampingModel, LawVisitor, NormalModel, StateOf, TangentialModel,
 };
-use crate::material::effective_radius;
 use crate::timestep::critical_time_step;
 
 /// `Simulation::critical_time_step` for the scene's laws as types.
@@ -57,17 +56,14 @@ impl Simulation {
         let states = self.states_as::<StateOf<N, T>>();
         let mut met = vec![ContactsMet::default(); p.len()];
         for (k, i, j, overlap) in self.touching_pairs(0.0) {
-            let pair = self.pair_table.get(p.material[i], p.material[j]);
-            let r_eff = effective_radius(p.radius[i], p.radius[j]);
+            let (pair, r_eff) = self.pair_of(i, j);
             let (k_n, k_t) = law.stiffness(overlap, r_eff, pair, &states.pair(k));
             for b in [i, j] {
                 met[b].add(k_n, k_t);
             }
         }
         for (w, i, facet, overlap) in self.touching_walls(0.0) {
-            let wall = &self.walls[w];
-            let pair = self.pair_table.get(p.material[i], wall.material);
-            let r_eff = wall.effective_radius(&p.position[i], p.radius[i]);
+            let (pair, r_eff) = self.wall_pair_of(w, i);
             let (k_n, k_t) = law.stiffness(overlap, r_eff, pair, &states.wall(w, i, facet));
             met[i].add(k_n, k_t);
         }

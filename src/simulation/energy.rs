@@ -6,7 +6,6 @@ use crate::contact::model::{
     CohesionModel, Composed, DampingModel, LawVisitor, NormalModel, StateOf, TangentialModel,
 };
 use crate::error::Result;
-use crate::material::effective_radius;
 
 /// `Simulation::stored_energy` for the scene's laws as types.
 pub(super) struct StoredEnergy<'a>(&'a Simulation);
@@ -61,14 +60,12 @@ impl Simulation {
         T: TangentialModel,
         C: CohesionModel,
     {
-        let p = &self.particles;
         let reach = law.cohesion.reach();
         let states = self.states_as::<StateOf<N, T>>();
         let pairs: f64 = self
             .touching_pairs(reach)
             .map(|(k, i, j, overlap)| {
-                let pair = self.pair_table.get(p.material[i], p.material[j]);
-                let r_eff = effective_radius(p.radius[i], p.radius[j]);
+                let (pair, r_eff) = self.pair_of(i, j);
                 law.stored_energy(overlap, r_eff, pair, &states.pair(k))
             })
             .sum();
@@ -76,9 +73,7 @@ impl Simulation {
             .touching_walls(reach)
             .into_iter()
             .map(|(w, i, facet, overlap)| {
-                let wall = &self.walls[w];
-                let pair = self.pair_table.get(p.material[i], wall.material);
-                let r_eff = wall.effective_radius(&p.position[i], p.radius[i]);
+                let (pair, r_eff) = self.wall_pair_of(w, i);
                 law.stored_energy(overlap, r_eff, pair, &states.wall(w, i, facet))
             })
             .sum();
