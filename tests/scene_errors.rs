@@ -213,6 +213,29 @@ fn implied_velocity_names_particles_by_scene_id() {
     );
 }
 
+/// A punch under a pressure ramp implies a speed (accuracy/velocity.rs): here the
+/// mean speed that closes the bed's 4.5 mm within the 10 ms ramp, 0.45 m/s, which is
+/// above its free-flight speed across the 1.5 mm gap, 0.171 m/s.
+#[test]
+fn a_pressed_punch_implies_its_speed() {
+    let mut s = base();
+    s["time_step"] = json!({"accuracy": 1e-3});
+    s.as_object_mut().unwrap().remove("gravity");
+    s["walls"].as_array_mut().unwrap().push(json!({
+        "name": "punch", "material": "glass",
+        "shape": {"kind": "plane", "point": [0, 0, 0.007], "normal": [0, 0, -1]},
+        "motion": {"kind": "pressure", "direction": [0, 0, -1], "pressure": 1e3, "area": 1e-5,
+                   "ramp_time": 0.01, "mass": 1e-3}
+    }));
+    s["run"] = json!({"steps": 1});
+    let (code, stderr) = run_text(&s.to_string());
+    assert_eq!(code, 0, "{stderr}");
+    assert!(
+        stderr.contains("characteristic velocity 4.5000e-1 m/s: the mean speed at which punch 'punch' would close the bed's height 4.500e-3 m"),
+        "{stderr}"
+    );
+}
+
 #[test]
 fn several_errors_are_all_listed() {
     let mut s = base();
