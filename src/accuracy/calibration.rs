@@ -159,8 +159,8 @@ pub const MODELS: [ErrorModel; 6] = [
         terms: [
             term("max_overlap", 6.591e-1, 2.04),
             term("max_force", 9.903e-1, 2.04),
-            term("contact_duration", 3.311e-1, 1.739),
-            term("rebound_velocity", 8.657e-1, 2.522),
+            term("contact_duration", 5.839e-1, 2.012),
+            term("rebound_velocity", 8.674e-1, 2.523),
         ],
     },
     ErrorModel {
@@ -186,8 +186,8 @@ pub const MODELS: [ErrorModel; 6] = [
         terms: [
             term("max_overlap", 2.406, 2.165),
             term("max_force", 6.467, 1.975),
-            term("contact_duration", 3.47, 2.057),
-            term("rebound_velocity", 6.782, 2.137),
+            term("contact_duration", 4.154, 2.091),
+            term("rebound_velocity", 6.784, 2.137),
         ],
     },
 ];

@@ -7,7 +7,7 @@
 //!   δ_max of δ(t) = (v/ω) e^{−βt} sin ωt, ω = √(k/m* − β²), β = γ_n/(2m*);
 //!   F(t) = k δ + γ_n dδ/dt, largest at first touch (γ_n v) or where dF/dt = 0;
 //! - Hertz (Johnson 1985 §11.4): δ_max = (15 m* v²/(16 E* √R*))^{2/5},
-//!   t_c = 3.21807 (m*/k̃)^{2/5} v^{−1/5}, F_max = 4/3 E* √R* δ_max^{3/2}, e = 1;
+//!   t_c = 3.2180655 (m*/k̃)^{2/5} v^{−1/5}, F_max = 4/3 E* √R* δ_max^{3/2}, e = 1;
 //! - Hertz with the dashpot ξ · 2√(m* k_n) (`critical_fraction`, and the
 //!   `liggghts_restitution` and `tsuji` kinds that run as one): the four quantities
 //!   scale with δ_s = (m* v²/K)^{2/5}, δ_s/v and K δ_s^{3/2} (K = 4/3 E*√R*), times

@@ -186,8 +186,8 @@ and 30; its references are Thornton 1997's closed forms (V = v/v_y: δ_max/δ_y 
 four phases on the law's own curves (Hertz loading to δ_y by a quadrature, the plastic
 line as a harmonic oscillation, Hertz unloading of radius R_p as half Johnson's duration
 at e v, the flight through the permanent set; `ThorntonContact::impact_duration`, which
-a velocity-Verlet integration at 40 000 steps per contact meets within 1.4e-6, the
-rounding of the Hertz constant 3.21807). t_c is that duration; impacts above 30 v_y are
+a velocity-Verlet integration at 40 000 steps per contact meets to its own
+discretisation error). t_c is that duration; impacts above 30 v_y are
 refused.
 
 | law | quantity | p | C | Δt/t_c at 1e-2 | 1e-3 | 1e-4 | 1e-5 |
