@@ -726,6 +726,19 @@ fn a_die_compaction_of_rigid_particles_is_named() {
 }
 
 #[test]
+fn a_bad_die_curvature_is_named() {
+    let mut die: Value = serde_json::from_str(include_str!(
+        "../verification/nial_die_compaction_small.scene.json"
+    ))
+    .unwrap();
+    die["die_compaction"]["die_curvature"] = json!("round");
+    expect_input_error(
+        die,
+        &["die_compaction.die_curvature", "unknown variant `round`"],
+    );
+}
+
+#[test]
 fn bad_contact_outputs_are_named() {
     for (field, value, rule) in [
         ("contacts_every", json!(-1), "invalid value: integer `-1`"),

@@ -11,7 +11,9 @@
 //!   (`pair granular`, `lammps::export::pair_model`), μ between particles;
 //! - the die as `fix wall/gran granular … zcylinder R` (LAMMPS's cylinder about the
 //!   z axis, infinite; tamp's ends above the punch: the same while no particle
-//!   leaves), the floor as `zplane 0 NULL`, both fixed;
+//!   leaves), the floor as `zplane 0 NULL`, both fixed. LAMMPS gives a zcylinder
+//!   contact the wall radius r_w = −2R inside (+2R outside), tamp's
+//!   `"die_curvature": "mean"`, so a flat die is refused;
 //! - the punch as `fix wall/gran/region` on a `region plane` whose `move` is the
 //!   displacement variable `dz`, the piecewise linear stroke tamp's replay evaluates
 //!   (`Stroke::displacement`) written as a table lookup (`punch_displacement`);
@@ -30,6 +32,7 @@ use crate::error::{Result, TampError};
 use crate::liggghts::die_compaction::DieStroke;
 use crate::liggghts::export::{DUMP_COLUMNS, Exported, neighbor_skin};
 use crate::process::die_replay;
+use crate::scene::walls::Curvature;
 use crate::scene::{self, Scene};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -88,6 +91,12 @@ pub fn die_refusals(scene: &Scene) -> Vec<(String, String)> {
         out.push((
             "die_compaction.wall_material".into(),
             "LAMMPS's fix wall/gran takes one E and ν for the wall and the sphere; give the wall material the particles' E and ν".into(),
+        ));
+    }
+    if dc.die_curvature != Curvature::Mean {
+        out.push((
+            "die_compaction.die_curvature".into(),
+            "LAMMPS's zcylinder wall gives the die contact the effective radius R r_w/(R + r_w) with r_w = -2 R_c (fix_wall_gran.cpp); tamp's default \"flat\" die takes R, a different Hertz stiffness; set \"die_curvature\": \"mean\" for LAMMPS's contact".into(),
         ));
     }
     out
@@ -210,7 +219,7 @@ pub fn export_pressing(scene: &Scene, sha: &str, out_dir: &Path) -> Result<Expor
             n,
             g(stroke.dt)
         ),
-        "the die is LAMMPS's infinite zcylinder wall; the floor a zplane; the punch a moving region plane".into(),
+        "the die is LAMMPS's infinite zcylinder wall, its contacts with the wall radius -2 R_c (tamp's die_curvature mean); the floor a zplane; the punch a moving region plane".into(),
     ];
     let mut notes = notes;
     if let Some(r) = scene.rotation.as_ref().filter(|r| r.inertia_scale != 1.0) {
@@ -314,11 +323,68 @@ mod tests {
             .into_iter()
             .map(|(p, _)| p)
             .collect();
-        assert_eq!(paths, ["contact.tangential.law", "contact.lever_arm"]);
+        // ... and its die is flat, where LAMMPS's zcylinder has the wall's curvature.
+        assert_eq!(
+            paths,
+            [
+                "contact.tangential.law",
+                "contact.lever_arm",
+                "die_compaction.die_curvature"
+            ]
+        );
         let mut other = scene("lammps_die_compaction_small");
         other.materials[1].youngs_modulus = Some(2e11);
         let paths: Vec<String> = die_refusals(&other).into_iter().map(|(p, _)| p).collect();
         assert_eq!(paths, ["die_compaction.wall_material"]);
+        let mut flat = scene("lammps_die_compaction_small");
+        flat.die_compaction.as_mut().unwrap().die_curvature = Curvature::Flat;
+        let paths: Vec<String> = die_refusals(&flat).into_iter().map(|(p, _)| p).collect();
+        assert_eq!(paths, ["die_compaction.die_curvature"]);
+    }
+
+    /// The replay's die is the pressing's: a cylinder of the die's radius with the
+    /// scene's curvature, which is what the deck's zcylinder line stands for.
+    #[test]
+    fn the_replayed_die_has_the_scenes_curvature() {
+        let s = scene("lammps_die_compaction_small");
+        let dc = s.die_compaction.as_ref().unwrap();
+        assert_eq!(dc.die_curvature, Curvature::Mean);
+        let specimen = crate::process::die_compaction::Specimen {
+            h0: 6e-5,
+            density_specimen: 0.6,
+            density_rve: 0.7,
+            particles: vec![crate::scene::schema::ParticleSpec {
+                position: [0.0, 0.0, 3e-6],
+                radius: 2e-6,
+                material: "NiAl".into(),
+                velocity: None,
+                omega: None,
+                prescribed_velocity: None,
+            }],
+            fill_time: 0.0,
+            fill_at_rest: true,
+            steps: [0, 0],
+            dt: [0.0, 0.0],
+        };
+        let stroke = die_replay::Stroke {
+            h0: 6e-5,
+            interval: 2e-6,
+            steps_per_record: 10,
+            dt: 2e-7,
+            heights: vec![5.9e-5, 5.8e-5],
+            pressures: vec![1e6, 2e6],
+        };
+        let replay = die_replay::replay_scene(&s, &specimen, &stroke).unwrap();
+        let crate::scene::walls::ShapeSpec::Cylinder {
+            radius, curvature, ..
+        } = &replay.walls[0].shape
+        else {
+            panic!("the die is the first wall, a cylinder");
+        };
+        assert_eq!(
+            (*radius, *curvature),
+            (0.5 * dc.die_diameter, Curvature::Mean)
+        );
     }
 
     /// LAMMPS's value of `dz` at step `s`, read back from the deck's lines: the

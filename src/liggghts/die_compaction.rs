@@ -16,7 +16,9 @@
 //!
 //! The deck:
 //! - the die as the primitive `zcylinder` of the die's radius (infinite in
-//!   LIGGGHTS, tamp's ends above the punch: the same while no particle leaves);
+//!   LIGGGHTS, tamp's ends above the punch: the same while no particle leaves),
+//!   whose contacts LIGGGHTS takes as flat (R* = R_i, normal_model_hertz.h `is_wall`;
+//!   docs/liggghts.md), so a die with `"die_curvature": "mean"` is refused;
 //! - floor and punch as two-triangle STL squares with `fix mesh/surface/stress`,
 //!   whose force vectors (`f_floor[3]`, `f_punch[3]`) thermo prints at every
 //!   record; the punch moved by `fix move/mesh linear/variable` at the speed of
@@ -35,6 +37,7 @@ use crate::error::{Result, TampError};
 use crate::particles::Vec3;
 use crate::process::die_replay::{self, Stroke};
 use crate::scene::die_compaction::DieCompactionSpec;
+use crate::scene::walls::Curvature;
 use crate::scene::{self, Scene};
 use serde::{Deserialize, Serialize};
 use std::fmt::Write as _;
@@ -62,10 +65,24 @@ impl DieStroke {
     }
 }
 
+/// The die-compaction fields LIGGGHTS's replay cannot express (the law's are the
+/// ordinary export's `refusals`): a die with its curvature, since LIGGGHTS's wall
+/// contacts take R* = R_i.
+fn die_refusals(scene: &Scene) -> Vec<(String, String)> {
+    match scene.die_compaction.as_ref() {
+        Some(dc) if dc.die_curvature != Curvature::Flat => vec![(
+            "die_compaction.die_curvature".into(),
+            "LIGGGHTS's zcylinder wall gives the die contact R* = R_i (normal_model_hertz.h, is_wall), a flat wall; set \"die_curvature\": \"flat\"".into(),
+        )],
+        _ => Vec::new(),
+    }
+}
+
 /// Fill, flatten and press `scene` in tamp, then write the replay deck into `out_dir`.
 pub fn export_pressing(scene: &Scene, sha: &str, out_dir: &Path) -> Result<Exported> {
     let solid = die_replay::solid_sphere_scene(scene);
-    let list = refusals(&solid);
+    let mut list = refusals(&solid);
+    list.extend(die_refusals(scene));
     if !list.is_empty() {
         return Err(refuse_all(list));
     }
@@ -175,4 +192,26 @@ pub fn export_pressing(scene: &Scene, sha: &str, out_dir: &Path) -> Result<Expor
         files,
         notes,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scene(name: &str) -> Scene {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("verification")
+            .join(format!("{name}.scene.json"));
+        scene::load(&path).expect("a valid scene").0
+    }
+
+    #[test]
+    fn a_die_with_its_curvature_is_refused_and_a_flat_one_is_not() {
+        assert!(die_refusals(&scene("liggghts_die_compaction_small")).is_empty());
+        let paths: Vec<String> = die_refusals(&scene("lammps_die_compaction_small"))
+            .into_iter()
+            .map(|(p, _)| p)
+            .collect();
+        assert_eq!(paths, ["die_compaction.die_curvature"]);
+    }
 }

@@ -21,7 +21,9 @@
 //!    sphere of `rve_diameter` centred on the axis at H₀/2 (Rojek §5, Fig 15).
 //! 3. **Press** (`press`): the punch, of mass `punch_mass`, is loaded by the
 //!    pressure p(t) = p_max t / t_ramp (`BoundaryMotion::Pressed`) under the scene's
-//!    own contact law, damping, rotation and (unscaled) gravity. The time step is
+//!    own contact law, damping, rotation and (unscaled) gravity, the die's contacts
+//!    with `die_curvature` (flat by default, as in the fill and flatten; `mean` for
+//!    LAMMPS's cylinder wall, `boundary::Boundary::effective_radius`). The time step is
 //!    re-estimated every `dt_every` steps from the contacts as they stiffen (Rojek
 //!    §3.4: α times the critical step). At `records` equal pressure increments the
 //!    height H (the punch face), ΔH/H₀, both densities (the RVE centred at H/2) and
@@ -462,16 +464,20 @@ pub fn press_scene(scene: &Scene, specimen: &Specimen) -> Result<Scene> {
         ramp_time: dc.press.ramp_time,
         mass: dc.press.punch_mass,
     };
+    // The pressing's die takes `die_curvature`; the fill's and flatten's stay flat, so
+    // scenes that differ only in it (and the press law) share one specimen
+    // (verify/cases/die_specimen.rs) and the peer replays, which start from tamp's
+    // flattened specimen, compare the pressing alone.
+    let mut die = die_wall(dc, 2.0 * specimen.h0);
+    if let ShapeSpec::Cylinder { curvature, .. } = &mut die.shape {
+        *curvature = dc.die_curvature;
+    }
     stage_scene(
         scene,
         "press",
         &scene.contact,
         specimen.particles.clone(),
-        vec![
-            die_wall(dc, 2.0 * specimen.h0),
-            floor_wall(dc),
-            punch_wall(dc, specimen.h0, motion),
-        ],
+        vec![die, floor_wall(dc), punch_wall(dc, specimen.h0, motion)],
         gravity(scene)?,
         dc.press.ramp_time,
     )

@@ -11,17 +11,20 @@
 //!   "flatten": {"depth": 3e-6, "duration": 1e-5},
 //!   "press": {"pressure": 50e6, "ramp_time": 1e-4, "punch_mass": 1e-9,
 //!             "records": 200, "dt_every": 100},
-//!   "rve_diameter": 54e-6
+//!   "rve_diameter": 54e-6, "die_curvature": "flat"
 //! }
 //! ```
 //! The scene's own `contact`, `rotation`, `time_step` and `gravity` are those of the
 //! pressing stage; `fill.contact` is the law used while the die is filled and the
 //! top flattened (frictionless Hertz in the paper). The die, its floor and the punch
 //! are made of `wall_material`, so particle–wall friction is set through
-//! `friction_pairs` of each contact block.
+//! `friction_pairs` of each contact block. `die_curvature` is how the die's curvature
+//! enters the pressing's wall contacts (`walls::Curvature`); the fill and flatten keep
+//! a flat die (`process::die_compaction::press_scene` says why).
 
 use super::schema::{ContactSpec, RadiusSpec};
 use super::validate::Errors;
+use super::walls::Curvature;
 use serde::{Deserialize, Serialize};
 
 #[derive(Clone, Debug, Deserialize, Serialize)]
@@ -37,6 +40,15 @@ pub struct DieCompactionSpec {
     pub press: PressSpec,
     /// Diameter of the spherical RVE centred in the specimen, m (Rojek: 54 µm).
     pub rve_diameter: f64,
+    /// The die's curvature in the contacts of the pressing and its replays: `flat`
+    /// (R* = R) or `mean` (LAMMPS's cylinder wall). Left out of a flat scene's
+    /// serialised form, so the scenes written before it keep their form.
+    #[serde(default, skip_serializing_if = "is_flat")]
+    pub die_curvature: Curvature,
+}
+
+fn is_flat(c: &Curvature) -> bool {
+    *c == Curvature::Flat
 }
 
 #[derive(Clone, Debug, Deserialize, Serialize)]
