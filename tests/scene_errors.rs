@@ -753,7 +753,7 @@ fn bad_funnel_fillings_are_named() {
         ("outlet_length", json!(0), "must be > 0 and finite"),
         ("outlet_height", json!(-1e-6), "must be > 0 and finite"),
     ] {
-        expect_input_error(funnel(field, value), &[&format!("{}{rule}", at(field))]);
+        expect_input_error(funnel(field, value), &[&at(field), rule]);
     }
     let mut s = die();
     s["die_compaction"]["fill"]["method"] = json!("settled_column");

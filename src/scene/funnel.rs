@@ -18,7 +18,7 @@
 //!   funnel rests in the die's mouth: the die wall rises to where the cone's radius
 //!   equals the die's, so die and funnel close the space the particles fall through;
 //! - `outlet_height` (the height of the particles' expected solid volume spread over
-//!   the die's cross-section at solid fraction 0.5): where the tube ends above the
+//!   the die's cross-section at solid fraction 0.3): where the tube ends above the
 //!   floor, which the settled bed must stay below.
 
 use super::die_compaction::DieCompactionSpec;
@@ -76,7 +76,7 @@ pub struct Funnel {
 /// Solid fraction at which the expected solid volume, spread over the die's
 /// cross-section, sets the default outlet height (a settled bed is denser, so the
 /// outlet clears it).
-const OUTLET_CLEAR_FRACTION: f64 = 0.5;
+const OUTLET_CLEAR_FRACTION: f64 = 0.3;
 
 impl Funnel {
     pub fn of(dc: &DieCompactionSpec) -> Funnel {
