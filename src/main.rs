@@ -199,6 +199,26 @@ enum Study {
         #[arg(long, default_value = "study")]
         out: PathBuf,
     },
+    /// Fill one die-compaction scene as a settled column and through the funnel, for
+    /// several seeds: specimen and RVE densities after flattening
+    /// (docs/paper-discrepancies.md §21).
+    DieFilling {
+        /// The die-compaction scene (default: the quick NiAl case's).
+        #[arg(long)]
+        scene: Option<PathBuf>,
+        #[arg(long, value_delimiter = ',', default_value = "1,2,3")]
+        seeds: Vec<u64>,
+        /// Fillings to run: settled_column, funnel.
+        #[arg(long, value_delimiter = ',', default_value = "settled_column,funnel")]
+        methods: Vec<String>,
+        /// Narrow the scene's log-normal size law to this σ of ln r, keeping its mean
+        /// volume and bounds.
+        #[arg(long)]
+        sigma: Option<f64>,
+        /// Directory of die-filling/<scene>.csv.
+        #[arg(long, default_value = "study")]
+        out: PathBuf,
+    },
 }
 
 const RUN_HELP: &str = "Files written to DIR (each under a temporary name, then renamed):
@@ -348,6 +368,38 @@ fn main() -> ExitCode {
             });
             tamp::study::die_compaction::run(&scene, &out)
         }
+        Command::Study {
+            study:
+                Study::DieFilling {
+                    scene,
+                    seeds,
+                    methods,
+                    sigma,
+                    out,
+                },
+        } => (|| {
+            let scene = scene.unwrap_or_else(|| {
+                tamp::verify::verification_dir().join("nial_die_compaction_small.scene.json")
+            });
+            let methods = methods
+                .iter()
+                .map(|m| {
+                    serde_json::from_value(serde_json::Value::String(m.clone())).map_err(|_| {
+                        tamp::error::TampError::input(
+                            "--methods",
+                            format!("'{m}' is not a filling: settled_column or funnel"),
+                        )
+                    })
+                })
+                .collect::<tamp::error::Result<Vec<_>>>()?;
+            tamp::study::die_filling::run(&tamp::study::die_filling::Options {
+                scene,
+                seeds,
+                methods,
+                sigma,
+                out,
+            })
+        })(),
     };
     match result {
         Ok(code) => ExitCode::from(code),

@@ -102,6 +102,47 @@ fn killed_compaction_resumes_to_identical_outputs() {
     fresh(&base);
 }
 
+/// Issue 29 point 4: the funnel pour (Rojek Fig 13a) loses no particle and leaves
+/// every one whole inside the die after settling and flattening: the count is
+/// conserved, and each sphere lies inside the die's cylinder (radius R), above the
+/// floor and below H₀, up to the overlap a wall contact may press it in by. That
+/// overlap is bounded by the Hertz overlap under the bed's whole weight on one
+/// contact, F = M g′: δ = (3F/(4E*√r))^(2/3) ≈ 7e-9 m for the 60 particles at g′ =
+/// 9.81e6 m/s² (r = 2 µm, E* = 1.0e11 Pa); 2e-8 m is about three times that. The settled column of the same seed is
+/// the other filling; the two must be different beds (the funnel is really used).
+#[test]
+fn a_funnel_pour_fills_the_die_with_every_particle() {
+    use tamp::scene::die_compaction::FillMethod;
+    let (mut scene, _) = tamp::scene::load(&scene()).unwrap();
+    let column = tamp::process::die_compaction::prepare(&scene, true).unwrap();
+    let dc = scene.die_compaction.as_mut().unwrap();
+    dc.fill.method = FillMethod::Funnel;
+    let (count, die_radius) = (dc.particles.count, 0.5 * dc.die_diameter);
+    tamp::scene::validate::validate(&scene).unwrap();
+    let poured = tamp::process::die_compaction::prepare(&scene, true).unwrap();
+    assert!(poured.fill_at_rest, "the poured bed did not come to rest");
+    assert_eq!(poured.particles.len(), count);
+    let tol = 2e-8;
+    for (i, p) in poured.particles.iter().enumerate() {
+        let [x, y, z] = p.position;
+        let r = p.radius;
+        assert!(
+            x.hypot(y) + r <= die_radius + tol,
+            "particle {i} outside the die wall: {p:?}"
+        );
+        assert!(z - r >= -tol, "particle {i} below the floor: {p:?}");
+        assert!(
+            z + r <= poured.h0 + tol,
+            "particle {i} above H0 {}: {p:?}",
+            poured.h0
+        );
+    }
+    assert_ne!(
+        column.particles[0].position, poured.particles[0].position,
+        "the funnel pour made the settled column's bed"
+    );
+}
+
 #[test]
 fn broken_die_compaction_rules_exit_2_naming_the_field() {
     let text = std::fs::read_to_string(scene()).unwrap();

@@ -754,3 +754,61 @@ fn bad_contact_outputs_are_named() {
         expect_input_error(s, &[&format!("output.{field}"), rule]);
     }
 }
+
+/// Issue 29: the funnel filling's dimensions are refused with exit 2 naming the path
+/// and the rule: an outlet that cannot pass the largest particle (18.5 µm) or does not
+/// fit in the die, a cone no wider than the die (it could not rest in the die's
+/// mouth), a flat or inverted cone, non-positive lengths, a funnel block without the
+/// funnel method, and an unknown method or field.
+#[test]
+fn bad_funnel_fillings_are_named() {
+    let die = || -> Value {
+        let mut s: Value = serde_json::from_str(include_str!(
+            "../verification/nial_die_compaction_small.scene.json"
+        ))
+        .unwrap();
+        s["die_compaction"]["fill"]["method"] = json!("funnel");
+        s
+    };
+    let funnel = |field: &str, value: Value| {
+        let mut s = die();
+        s["die_compaction"]["fill"]["funnel"] = json!({ field: value });
+        s
+    };
+    let at = |f: &str| format!("die_compaction.fill.funnel.{f}: ");
+    for (field, value, rule) in [
+        (
+            "outlet_diameter",
+            json!(10e-6),
+            "must exceed the largest particle diameter",
+        ),
+        ("outlet_diameter", json!(40e-6), "be smaller than the die"),
+        ("top_diameter", json!(30e-6), "must exceed the die diameter"),
+        ("cone_angle", json!(180), "must be in (0, 180) degrees"),
+        ("cone_angle", json!(0), "must be in (0, 180) degrees"),
+        ("outlet_length", json!(0), "must be > 0 and finite"),
+        ("outlet_height", json!(-1e-6), "must be > 0 and finite"),
+    ] {
+        expect_input_error(funnel(field, value), &[&at(field), rule]);
+    }
+    let mut s = die();
+    s["die_compaction"]["fill"]["method"] = json!("settled_column");
+    s["die_compaction"]["fill"]["funnel"] = json!({});
+    expect_input_error(
+        s,
+        &["die_compaction.fill.funnel: applies only to fill.method \"funnel\""],
+    );
+    let mut s = die();
+    s["die_compaction"]["fill"]["method"] = json!("hopper");
+    expect_input_error(
+        s,
+        &["die_compaction.fill.method", "unknown variant `hopper`"],
+    );
+    expect_input_error(
+        funnel("outlet_radius", json!(1e-5)),
+        &[
+            "die_compaction.fill.funnel",
+            "unknown field `outlet_radius`",
+        ],
+    );
+}

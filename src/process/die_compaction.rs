@@ -6,13 +6,15 @@
 //! spins), so a stage can be written out and rerun, or exported, on its own:
 //!
 //! 1. **Fill** (`fill`): the particles' radii are drawn from the size distribution
-//!    and placed, largest first, by random sequential insertion in a loose column
-//!    over the die floor at `fill.loose_fraction`; they then settle under gravity
-//!    times `fill.gravity_scale` with the fill contact law until the kinetic energy
-//!    is below `rest_fraction` · M g′ ⟨d⟩. The paper pours through a funnel (Fig 13);
-//!    the funnel's shape is not given, and its only role is to bring the particles
-//!    into a 58 µm die, which the column does directly. Settling from a random loose
-//!    column is what LIGGGHTS users do (`insert/pack` in the die, then run).
+//!    and placed, largest first, by random sequential insertion in a loose cloud at
+//!    `fill.loose_fraction`; they then settle under gravity times `fill.gravity_scale`
+//!    with the fill contact law until the kinetic energy is below `rest_fraction` ·
+//!    M g′ ⟨d⟩. With `fill.method: "settled_column"` (the default) the cloud is a
+//!    column over the die floor, as LIGGGHTS users fill a die (`insert/pack` in the
+//!    die, then run). With `"funnel"` it stands on the rim of a funnel resting in the
+//!    die's mouth and pours through it, as Rojek pours (Fig 13a; the funnel's
+//!    dimensions, which the paper does not give, are `scene::funnel`); the fill then
+//!    fails, naming the funnel field, if any particle is left above the outlet.
 //! 2. **Flatten** (`flatten`): a flat punch is put at the top of the highest
 //!    particle (first contact), moved down `depth` over `duration`, back up over the
 //!    same time, and the bed relaxes for a third `duration`. H₀ is then the top of
@@ -36,7 +38,8 @@ use crate::generate::rsi::{InsertionBox, Placed};
 use crate::measure::{Region, packing::packing_fraction};
 use crate::output::progress::Progress;
 use crate::particles::Vec3;
-use crate::scene::die_compaction::DieCompactionSpec;
+use crate::scene::die_compaction::{DieCompactionSpec, FillMethod};
+use crate::scene::funnel::Funnel;
 use crate::scene::schema::{ContactSpec, ParticleSpec, RunSpec, Scene};
 use crate::scene::walls::{MotionSpec, ShapeSpec, WallSpec};
 use crate::scene::{self, validate};
@@ -47,7 +50,7 @@ use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
-/// Attempts per particle in the loose column before insertion gives up.
+/// Attempts per particle in the loose cloud before insertion gives up.
 const INSERTION_ATTEMPTS: usize = 100_000;
 /// Steps between checks of whether the settling bed is at rest.
 const REST_CHECK_EVERY: u64 = 1000;
@@ -293,23 +296,29 @@ pub fn wall_lens_volume(positions: &[Vec3], radii: &[f64], die_radius: f64, heig
         .sum()
 }
 
-/// Radii drawn from the distribution, placed largest first in a loose column over
-/// the floor; returned sorted by height so neighbours in space are near in memory.
-fn loose_column(scene: &Scene, dc: &DieCompactionSpec) -> Result<(Vec<ParticleSpec>, f64)> {
+/// Radii drawn from the distribution, placed largest first in a loose cylindrical
+/// cloud of `radius` standing on the height `bottom` (the die floor for the settled
+/// column, the funnel's rim for the pour); returned sorted by height so neighbours in
+/// space are near in memory, with the cloud's height.
+fn loose_cloud(
+    scene: &Scene,
+    dc: &DieCompactionSpec,
+    radius: f64,
+    bottom: f64,
+) -> Result<(Vec<ParticleSpec>, f64)> {
     let mut rng = ChaCha8Rng::seed_from_u64(scene.seed);
     let law = dc.particles.radius.distribution();
     let mut radii: Vec<f64> = (0..dc.particles.count)
         .map(|_| law.sample(&mut rng))
         .collect();
     radii.sort_by(|a, b| b.total_cmp(a));
-    let die_radius = 0.5 * dc.die_diameter;
     let solid: f64 = radii.iter().map(|r| 4.0 / 3.0 * PI * r.powi(3)).sum();
-    let height = solid / (dc.fill.loose_fraction * PI * die_radius * die_radius);
+    let height = solid / (dc.fill.loose_fraction * PI * radius * radius);
     let region = InsertionBox {
-        lower: Vec3::new(-die_radius, -die_radius, 0.0),
-        upper: Vec3::new(die_radius, die_radius, height),
+        lower: Vec3::new(-radius, -radius, bottom),
+        upper: Vec3::new(radius, radius, bottom + height),
     };
-    let inside = |x: &Vec3, r: f64| x.x.hypot(x.y) + r <= die_radius;
+    let inside = |x: &Vec3, r: f64| x.x.hypot(x.y) + r <= radius;
     let mut placed = Placed::new(&Space::open(), 2.0 * radii.first().copied().unwrap_or(0.0));
     let mut progress = Progress::new("place", radii.len() as u64, false);
     for (k, &r) in radii.iter().enumerate() {
@@ -320,7 +329,7 @@ fn loose_column(scene: &Scene, dc: &DieCompactionSpec) -> Result<(Vec<ParticleSp
             return Err(TampError::input(
                 "die_compaction.fill.loose_fraction",
                 format!(
-                    "particle {k} (radius {r:e} m) found no room in the loose column after {INSERTION_ATTEMPTS} attempts; lower the loose fraction (got {})",
+                    "particle {k} (radius {r:e} m) found no room in the loose cloud after {INSERTION_ATTEMPTS} attempts; lower the loose fraction (got {})",
                     dc.fill.loose_fraction
                 ),
             ));
@@ -349,26 +358,125 @@ fn loose_column(scene: &Scene, dc: &DieCompactionSpec) -> Result<(Vec<ParticleSp
     Ok((particles, height))
 }
 
+/// How the fill stage starts: the particles, the walls, the highest point a particle
+/// falls from, and the top of the die wall (kept for the flatten stage).
+struct FillStart {
+    particles: Vec<ParticleSpec>,
+    walls: Vec<WallSpec>,
+    fall_height: f64,
+    die_top: f64,
+}
+
+fn fill_start(scene: &Scene, dc: &DieCompactionSpec) -> Result<FillStart> {
+    let die_radius = 0.5 * dc.die_diameter;
+    match dc.fill.method {
+        FillMethod::SettledColumn => {
+            let (particles, height) = loose_cloud(scene, dc, die_radius, 0.0)?;
+            let die_top = 1.5 * height;
+            Ok(FillStart {
+                particles,
+                walls: vec![die_wall(dc, die_top), floor_wall(dc)],
+                fall_height: height,
+                die_top,
+            })
+        }
+        FillMethod::Funnel => {
+            let f = Funnel::of(dc);
+            let (particles, height) = loose_cloud(scene, dc, 0.5 * f.top_diameter, f.top())?;
+            let die_top = f.die_top(dc.die_diameter);
+            Ok(FillStart {
+                particles,
+                walls: vec![die_wall(dc, die_top), floor_wall(dc), funnel_wall(dc, &f)],
+                fall_height: f.top() + height,
+                die_top,
+            })
+        }
+    }
+}
+
+fn funnel_wall(dc: &DieCompactionSpec, f: &Funnel) -> WallSpec {
+    WallSpec {
+        name: Some("funnel".into()),
+        material: dc.wall_material.clone(),
+        shape: ShapeSpec::Funnel {
+            origin: [0.0; 3],
+            axis: [0.0, 0.0, 1.0],
+            outlet_radius: 0.5 * f.outlet_diameter,
+            outlet_bottom: f.outlet_height,
+            outlet_top: f.knee(),
+            top_radius: 0.5 * f.top_diameter,
+            top: f.top(),
+        },
+        motion: MotionSpec::Fixed,
+    }
+}
+
+/// The kinetic energy the rest test of the fill reads. The column counts spin too.
+/// The pour does not: every particle slides down the cone, whose friction (0.02)
+/// spins it up, and between frictionless particles nothing spins it down again, so
+/// the spin outlives the settling; it does not move the packing, which only the
+/// die wall's 0.02 couples it to.
+fn moving_energy(sim: &Simulation, method: FillMethod) -> f64 {
+    match method {
+        FillMethod::SettledColumn => sim.kinetic_energy(),
+        FillMethod::Funnel => sim.particles.translational_kinetic_energy(),
+    }
+}
+
+/// After a funnel pour every particle must lie whole in the die below the outlet: a
+/// particle left in the funnel (a clogged outlet) or a bed reaching the tube would
+/// make a specimen the flatten stage cannot mean.
+fn check_poured(sim: &Simulation, dc: &DieCompactionSpec) -> Result<()> {
+    let f = Funnel::of(dc);
+    let p = &sim.particles;
+    let above = (0..p.len())
+        .filter(|&i| p.position[i].z + p.radius[i] > f.outlet_height)
+        .count();
+    if above == 0 {
+        return Ok(());
+    }
+    let in_funnel = (0..p.len())
+        .filter(|&i| p.position[i].z > f.outlet_height)
+        .count();
+    Err(if in_funnel > 0 {
+        TampError::input(
+            "die_compaction.fill.funnel.outlet_diameter",
+            format!(
+                "{in_funnel} of {} particles did not leave the funnel by the end of the fill (the outlet clogged, or fill.max_duration is too short); widen the outlet",
+                p.len()
+            ),
+        )
+    } else {
+        TampError::input(
+            "die_compaction.fill.funnel.outlet_height",
+            format!(
+                "the settled bed reaches the outlet ({above} particles above its lower end at {:e} m); raise the outlet",
+                f.outlet_height
+            ),
+        )
+    })
+}
+
 /// Fill and flatten: the specimen the press stage starts from.
 pub fn prepare(scene: &Scene, quiet: bool) -> Result<Specimen> {
     let dc = spec(scene)?;
     crate::scene::memory::check(scene, None)?;
     let g = gravity(scene)? * dc.fill.gravity_scale;
-    let (column, column_height) = loose_column(scene, dc)?;
+    let start = fill_start(scene, dc)?;
+    let die_top = start.die_top;
 
     // Fill: settle under scaled gravity. The fastest impact is a free fall from the
-    // top of the column, which sets the step of the (overlap-dependent) law.
-    let die_top = 1.5 * column_height;
+    // top of the loose cloud, which sets the step of the (overlap-dependent) law.
     let mut fill = stage_scene(
         scene,
         "fill",
         &dc.fill.contact,
-        column,
-        vec![die_wall(dc, die_top), floor_wall(dc)],
+        start.particles,
+        start.walls,
         g,
         dc.fill.max_duration,
     )?;
-    fill.time_step.characteristic_velocity = Some((2.0 * g.norm() * column_height).sqrt());
+    fill.time_step.characteristic_velocity = Some((2.0 * g.norm() * start.fall_height).sqrt());
     fill.time_step.alpha = Some(dc.fill.alpha.unwrap_or(scene.time_step.alpha()));
     let built = scene::build(&fill)?;
     let mut sim = built.sim;
@@ -383,13 +491,20 @@ pub fn prepare(scene: &Scene, quiet: bool) -> Result<Specimen> {
         stop_if_signalled(&sim, "filling")?;
         if sim.step % REST_CHECK_EVERY == 0 {
             progress.set(sim.step);
-            if sim.kinetic_energy() < at_rest {
+            if moving_energy(&sim, dc.fill.method) < at_rest {
                 fill_at_rest = true;
                 break;
             }
         }
     }
     progress.finish();
+    if dc.fill.method == FillMethod::Funnel {
+        check_poured(&sim, dc)?;
+        // The spin the cone gave (see `moving_energy`) is not carried on: the flatten
+        // punch's friction would turn it back into speed (tens of m/s under g′, where
+        // the bed's own settling speeds are mm/s) and throw the top layer about.
+        sim.particles.omega.fill(Vec3::zeros());
+    }
     let (fill_time, fill_steps, fill_dt) = (sim.time, sim.step, sim.dt);
     if !quiet {
         eprintln!(

@@ -7,7 +7,7 @@
 //!   "die_diameter": 58e-6, "wall_material": "die",
 //!   "particles": {"count": 1751, "material": "NiAl", "radius": {"law": "log_normal", ...}},
 //!   "fill": {"contact": {...}, "gravity_scale": 1e4, "loose_fraction": 0.25,
-//!            "max_duration": 1e-3},
+//!            "max_duration": 1e-3, "method": "settled_column"},
 //!   "flatten": {"depth": 3e-6, "duration": 1e-5},
 //!   "press": {"pressure": 50e6, "ramp_time": 1e-4, "punch_mass": 1e-9,
 //!             "records": 200, "dt_every": 100},
@@ -21,7 +21,13 @@
 //! `friction_pairs` of each contact block. `die_curvature` is how the die's curvature
 //! enters the pressing's wall contacts (`walls::Curvature`); the fill and flatten keep
 //! a flat die (`process::die_compaction::press_scene` says why).
+//!
+//! `fill.method` is how the particles reach the die: `settled_column` (the default)
+//! places them in a loose column inside the die; `funnel` places them in a loose cloud
+//! above a funnel that rests in the die's mouth, as Rojek's Fig 13a pours them
+//! (`fill.funnel`, every dimension optional, `scene::funnel`; the pour in `process::die_compaction`).
 
+pub use super::funnel::{FillMethod, FunnelSpec};
 use super::schema::{ContactSpec, RadiusSpec};
 use super::validate::Errors;
 use super::walls::Curvature;
@@ -80,6 +86,12 @@ pub struct FillSpec {
     /// M g' ⟨d⟩ (total mass, scaled gravity, mean diameter).
     #[serde(default = "default_rest_fraction")]
     pub rest_fraction: f64,
+    /// How the particles reach the die; absent: `settled_column`.
+    #[serde(default, skip_serializing_if = "FillMethod::is_default")]
+    pub method: FillMethod,
+    /// The funnel of `method: "funnel"` (absent: every dimension at its default).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub funnel: Option<FunnelSpec>,
 }
 
 fn default_loose_fraction() -> f64 {
@@ -170,6 +182,7 @@ impl DieCompactionSpec {
             e.push(at("fill.alpha"), format!("must be in (0, 1], got {alpha}"));
         }
         e.positive(at("fill.rest_fraction"), self.fill.rest_fraction);
+        super::funnel::validate(self, e);
         e.positive(at("flatten.depth"), self.flatten.depth);
         e.positive(at("flatten.duration"), self.flatten.duration);
         e.positive(at("press.pressure"), self.press.pressure);

@@ -2,6 +2,7 @@
 
 pub mod build;
 pub mod die_compaction;
+pub mod funnel;
 pub mod memory;
 pub mod schema;
 pub mod validate;

@@ -6,6 +6,7 @@ pub mod accuracy_calibration;
 pub mod accuracy_cost;
 pub mod accuracy_inverse;
 pub mod die_compaction;
+pub mod die_filling;
 pub mod page;
 pub mod stable_alpha;
 
