@@ -198,12 +198,7 @@ pub fn export_pressing(scene: &Scene, sha: &str, out_dir: &Path) -> Result<Expor
 mod tests {
     use super::*;
 
-    fn scene(name: &str) -> Scene {
-        let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join("verification")
-            .join(format!("{name}.scene.json"));
-        scene::load(&path).expect("a valid scene").0
-    }
+    use crate::verify::checked_in_scene as scene;
 
     #[test]
     fn a_die_with_its_curvature_is_refused_and_a_flat_one_is_not() {

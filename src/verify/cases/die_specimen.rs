@@ -59,12 +59,7 @@ fn fill_key(scene: &Scene) -> Result<String> {
 mod tests {
     use super::*;
 
-    fn scene(name: &str) -> Scene {
-        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join("verification")
-            .join(format!("{name}.scene.json"));
-        crate::scene::load(&path).expect("a valid scene").0
-    }
+    use crate::verify::checked_in_scene as scene;
 
     #[test]
     fn the_three_small_die_cases_share_a_fill_and_other_seeds_or_fills_do_not() {
