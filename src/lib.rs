@@ -20,6 +20,7 @@ pub mod measure;
 pub mod output;
 pub mod particles;
 pub mod process;
+pub mod quadrature;
 pub mod quasistatic;
 pub mod run;
 pub mod scene;

@@ -371,22 +371,7 @@ impl ThorntonContact {
         }
         let ratio = speed / v_y;
         let integrand = |u: f64| 2.0 * u / (1.0 - (1.0 - u * u).powf(2.5) / (ratio * ratio)).sqrt();
-        let intervals = 4000;
-        let h = 1.0 / intervals as f64;
-        let simpson: f64 = (0..=intervals)
-            .map(|i| {
-                let weight = if i == 0 || i == intervals {
-                    1.0
-                } else if i % 2 == 1 {
-                    4.0
-                } else {
-                    2.0
-                };
-                weight * integrand(i as f64 * h)
-            })
-            .sum::<f64>()
-            * h
-            / 3.0;
+        let simpson = crate::quadrature::simpson(integrand, 0.0, 1.0, 4000);
         let hertz_loading = self.yield_overlap() / speed * simpson;
         let k_p = self.plastic_stiffness();
         let omega = (k_p / m).sqrt();
