@@ -11,8 +11,15 @@ fn main() {
         .filter(|o| o.status.success())
         .map(|o| String::from_utf8_lossy(&o.stdout).trim().to_string())
         .unwrap_or_else(|| "unknown".to_string());
+    // --no-optional-locks: a plain `git status` may refresh and rewrite .git/index,
+    // which this script watches, so the next cargo command would rebuild tamp again.
     let dirty = Command::new("git")
-        .args(["status", "--porcelain", "--untracked-files=no"])
+        .args([
+            "--no-optional-locks",
+            "status",
+            "--porcelain",
+            "--untracked-files=no",
+        ])
         .output()
         .ok()
         .map(|o| !o.stdout.is_empty())
@@ -37,6 +44,7 @@ fn main() {
         .unwrap_or_else(|| "unknown".to_string());
     let source_dirty = Command::new("git")
         .args([
+            "--no-optional-locks",
             "status",
             "--porcelain",
             "--",
