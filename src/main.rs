@@ -219,6 +219,29 @@ enum Study {
         #[arg(long, default_value = "study")]
         out: PathBuf,
     },
+    /// 2D ballistic deposition at the paper's box, 20 seeds: solid fraction, contacts
+    /// and coordination by lid rule and patience, the interior and strips, and the
+    /// width dependence (docs/generation.md; the ballistic_deposition_2d tolerances).
+    Deposition2d {
+        /// Directory of deposition-2d/{survey,interior,width}.csv.
+        #[arg(long, default_value = "study")]
+        out: PathBuf,
+    },
+    /// 3D ballistic deposition of equal spheres: bulk solid fraction and coordination
+    /// over seeds (docs/generation.md), then the stress run of wide and bimodal size
+    /// laws (exit 1 on any failure, overlap or unsupported sphere).
+    Deposition3d {
+        /// Directory of deposition-3d/{seeds,survey,stress}.csv.
+        #[arg(long, default_value = "study")]
+        out: PathBuf,
+    },
+    /// The energy_conservation_elastic case's drift and order with seeds 7-11: the
+    /// spread its tolerances rest on (docs/verification-notes.md).
+    EnergyOrder {
+        /// Directory of energy-order.csv.
+        #[arg(long, default_value = "study")]
+        out: PathBuf,
+    },
 }
 
 const RUN_HELP: &str = "Files written to DIR (each under a temporary name, then renamed):
@@ -360,6 +383,15 @@ fn main() -> ExitCode {
         Command::Study {
             study: Study::StableAlpha { out },
         } => tamp::study::stable_alpha::run(&out),
+        Command::Study {
+            study: Study::Deposition2d { out },
+        } => tamp::study::deposition_2d::run(&out),
+        Command::Study {
+            study: Study::Deposition3d { out },
+        } => tamp::study::deposition_3d::run(&out),
+        Command::Study {
+            study: Study::EnergyOrder { out },
+        } => tamp::study::energy_order::run(&out),
         Command::Study {
             study: Study::DieCompaction { scene, out },
         } => {

@@ -5,13 +5,24 @@
 pub mod accuracy_calibration;
 pub mod accuracy_cost;
 pub mod accuracy_inverse;
+pub mod deposition_2d;
+pub mod deposition_3d;
 pub mod die_compaction;
 pub mod die_filling;
+pub mod energy_order;
 pub mod page;
 pub mod stable_alpha;
 
 use crate::error::{Result, TampError};
 use std::path::Path;
+
+/// Mean and sample standard deviation (n − 1 in the denominator; 0 for one value).
+pub fn mean_sd(x: &[f64]) -> (f64, f64) {
+    let n = x.len() as f64;
+    let mean = x.iter().sum::<f64>() / n;
+    let var = x.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0).max(1.0);
+    (mean, var.sqrt())
+}
 
 /// Rows as CSV with a header, written atomically (studies are rerun case by case, so a
 /// file is either the old one or the whole new one).

@@ -35,18 +35,19 @@ fn slope(points: &[(f64, f64)]) -> f64 {
     (n * sxy - sx * sy) / (n * sxx - sx * sx)
 }
 
-pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
-    let scene = ctx.scene()?;
+/// The worst excursion at the scene's step and the order fitted over four halvings
+/// (2, 1, 1/2, 1/4 times the step) of the same duration, `run.steps` of the scene's step.
+pub(crate) fn drift_and_order(scene: &Scene) -> Result<(f64, f64)> {
     let steps = scene
         .run
         .steps
         .ok_or_else(|| TampError::Other("scene must give run.steps".into()))?;
-    let dt = scene::build(&scene)?.sim.dt;
+    let dt = scene::build(scene)?.sim.dt;
     let duration = dt * steps as f64;
     let mut points = Vec::new();
     let mut drift = 0.0;
     for factor in [2.0, 1.0, 0.5, 0.25] {
-        let (worst, contacts) = worst_excursion(&scene, factor * dt, duration)?;
+        let (worst, contacts) = worst_excursion(scene, factor * dt, duration)?;
         if contacts == 0 {
             return Err(TampError::Other(
                 "no contact occurred: the case would test nothing".into(),
@@ -57,8 +58,13 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         }
         points.push(((factor * dt).ln(), worst.ln()));
     }
+    Ok((drift, slope(&points)))
+}
+
+pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
+    let (drift, order) = drift_and_order(&ctx.scene()?)?;
     Ok(vec![
         Measured::new("energy_drift", drift, 0.0),
-        Measured::new("energy_drift_order", slope(&points), 2.0),
+        Measured::new("energy_drift_order", order, 2.0),
     ])
 }

@@ -10,7 +10,7 @@ mod compaction_2d;
 mod density_segregation;
 mod die_compaction_replay;
 mod die_specimen;
-mod energy_conservation_elastic;
+pub(crate) mod energy_conservation_elastic;
 mod hertz_collision_time;
 mod hertz_rigid_wall_impact;
 mod hertz_yield_onset;

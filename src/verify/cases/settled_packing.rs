@@ -26,6 +26,7 @@
 use crate::error::{Result, TampError};
 use crate::liggghts::import::state_measures;
 use crate::scene;
+use crate::study::mean_sd;
 use crate::verify::{CaseContext, Measured};
 use serde::Deserialize;
 use std::fmt::Write as _;
@@ -48,13 +49,6 @@ const MEASURES: [&str; 3] = [
     "coordination_number",
     "bottom_wall_force_over_weight",
 ];
-
-fn mean_sd(x: &[f64]) -> (f64, f64) {
-    let n = x.len() as f64;
-    let mean = x.iter().sum::<f64>() / n;
-    let var = x.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0).max(1.0);
-    (mean, var.sqrt())
-}
 
 /// tamp's three measures of the scene run with `seed`.
 fn tamp_measures(base: &scene::Scene, seed: u64) -> Result<[f64; 3]> {
