@@ -222,6 +222,7 @@ enum Study {
     /// 2D ballistic deposition at the paper's box, 20 seeds: solid fraction, contacts
     /// and coordination by lid rule and patience, the interior and strips, and the
     /// width dependence (docs/generation.md; the ballistic_deposition_2d tolerances).
+    #[command(name = "deposition-2d")]
     Deposition2d {
         /// Directory of deposition-2d/{survey,interior,width}.csv.
         #[arg(long, default_value = "study")]
@@ -230,6 +231,7 @@ enum Study {
     /// 3D ballistic deposition of equal spheres: bulk solid fraction and coordination
     /// over seeds (docs/generation.md), then the stress run of wide and bimodal size
     /// laws (exit 1 on any failure, overlap or unsupported sphere).
+    #[command(name = "deposition-3d")]
     Deposition3d {
         /// Directory of deposition-3d/{seeds,survey,stress}.csv.
         #[arg(long, default_value = "study")]
