@@ -267,7 +267,7 @@ fn tables(survey: &[SurveyRow], stress: &[StressRow]) -> String {
     for r in stress {
         let _ = writeln!(
             s,
-            "| {} | {} × {} | {} | {:e} | {} |",
+            "| {} | {} × {} | {} | {:.1e} | {} |",
             r.law, r.seeds, r.spheres, r.failures, r.deepest_gap, r.unsupported
         );
     }
