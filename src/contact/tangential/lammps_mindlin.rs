@@ -270,6 +270,10 @@ impl TangentialModel for LammpsMindlin {
         Self::scaled_stiffness(input)
     }
 
+    fn dashpot_over_normal(&self) -> f64 {
+        self.x_gamma_t
+    }
+
     fn energy(&self, input: &TangentialInput, state: &MindlinHistory) -> f64 {
         let k = Self::scaled_stiffness(input);
         if k == 0.0 {
