@@ -36,7 +36,7 @@ mod tests {
 
     #[test]
     fn the_dashpot_form_is_eq_28_and_a_pure_dashpot_gives_two_m_over_c() {
-        let (k, m, c) = (4.0, 1.0, 1.5);
+        let (k, m, c): (f64, f64, f64) = (4.0, 1.0, 1.5);
         let xi = c / (2.0 * (k * m).sqrt());
         assert_relative_eq!(
             critical_time_step_with_dashpot(k, m, c),
