@@ -15,6 +15,15 @@ pub fn critical_time_step(stiffness: f64, mass: f64, damping_ratio: f64) -> f64 
     2.0 / omega * ((1.0 + damping_ratio * damping_ratio).sqrt() - damping_ratio)
 }
 
+/// Rojek eq 28 for a mode of stiffness k and dashpot c (N·s/m) on the mass m, written
+/// as 2/(√(ω² + β²) + β), β = c/(2m) = ξω: the same number as `critical_time_step`
+/// with ξ = c/(2√(km)), and also defined without a spring (k = 0: the explicit limit
+/// of a pure dashpot, 2m/c).
+pub fn critical_time_step_with_dashpot(stiffness: f64, mass: f64, dashpot: f64) -> f64 {
+    let beta = dashpot / (2.0 * mass);
+    2.0 / ((stiffness / mass + beta * beta).sqrt() + beta)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -23,6 +32,18 @@ mod tests {
     #[test]
     fn undamped_limit_is_two_over_omega() {
         assert_relative_eq!(critical_time_step(4.0, 1.0, 0.0), 1.0);
+    }
+
+    #[test]
+    fn the_dashpot_form_is_eq_28_and_a_pure_dashpot_gives_two_m_over_c() {
+        let (k, m, c): (f64, f64, f64) = (4.0, 1.0, 1.5);
+        let xi = c / (2.0 * (k * m).sqrt());
+        assert_relative_eq!(
+            critical_time_step_with_dashpot(k, m, c),
+            critical_time_step(k, m, xi),
+            max_relative = 1e-14
+        );
+        assert_relative_eq!(critical_time_step_with_dashpot(0.0, 2.0, 0.5), 8.0);
     }
 
     #[test]

@@ -433,6 +433,20 @@ fn tangential_parameters_must_match_the_law() {
     let mut s = base();
     s["contact"]["tangential"] = json!({"law": "lammps_linear_nohistory", "friction": 0.3, "stiffness": 1e3, "x_gamma_t": 1});
     expect_input_error(s, &["contact.tangential: unknown field `stiffness`"]);
+    let mut s = base();
+    s["contact"]["tangential"] =
+        json!({"law": "lammps_mindlin", "variant": "mindlin", "friction": 0.3, "x_gamma_t": -0.5});
+    expect_input_error(
+        s.clone(),
+        &["contact.tangential.x_gamma_t: must be >= 0 and finite, got -5e-1"],
+    );
+    // JSON has no infinity: a number too large for f64 is refused where it stands.
+    let (code, stderr) = run_text(&s.to_string().replace("-0.5", "1e999"));
+    assert_eq!(code, 2, "{stderr}");
+    assert!(
+        stderr.contains("contact.tangential.x_gamma_t: malformed JSON: number out of range"),
+        "{stderr}"
+    );
 }
 
 #[test]

@@ -370,6 +370,13 @@ pub trait TangentialModel: Copy + Debug + PartialEq {
     fn viscous_coefficient(&self) -> Option<f64> {
         None
     }
+
+    /// x_γ,t of a law with LAMMPS's tangential dashpot γ_t = x_γ,t c_n (c_n the normal
+    /// damping's coefficient of the contact), 0 without one: the dashpot damps the
+    /// tangential mode, which shortens the critical time step.
+    fn dashpot_over_normal(&self) -> f64 {
+        0.0
+    }
 }
 
 /// Friction off.

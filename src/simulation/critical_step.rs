@@ -2,10 +2,11 @@
 //! the safety factor α).
 
 use super::Simulation;
+use super::force_loop::contact_mass;
 use crate::contact::model::{
     CohesionModel, Composed, DampingModel, LawVisitor, NormalModel, StateOf, TangentialModel,
 };
-use crate::timestep::critical_time_step;
+use crate::timestep::{critical_time_step, critical_time_step_with_dashpot};
 
 /// `Simulation::critical_time_step` for the scene's laws as types.
 pub(super) struct CriticalStep<'a>(&'a Simulation, Option<f64>);
@@ -34,7 +35,10 @@ impl Simulation {
     /// with the largest alone a 12-contact Mindlin lattice was stable only to
     /// α = 0.60 (`tamp study stable-alpha`, docs/accuracy-cost.md). Viscous
     /// Haff–Werner friction adds the explicit limit Δt < 2m/(n_c γ_s (1 + m R²/I)),
-    /// n_c the particle's contacts (at least 1), for the same reason.
+    /// n_c the particle's contacts (at least 1), for the same reason. LAMMPS's tangential
+    /// dashpots (x_γ,t > 0 in the `lammps_*` laws) add the tangential mode as its own
+    /// system: stiffness L Σk_t, dashpot L Σ x_γ,t c_n (c_n each contact's normal
+    /// dashpot; for no contact the impact's), Rojek eq 28 with its own damping ratio.
     /// Returns `None` when a nonlinear law has neither a characteristic velocity nor
     /// any current contact to take a stiffness from.
     pub fn critical_time_step(&self, characteristic_velocity: Option<f64>) -> Option<f64> {
@@ -54,18 +58,32 @@ impl Simulation {
     {
         let p = &self.particles;
         let states = self.states_as::<StateOf<N, T>>();
+        // LAMMPS's tangential dashpot x_γ,t c_n, c_n the contact's normal dashpot.
+        let x_gamma_t = if D::ACTIVE && T::ACTIVE {
+            law.tangential.dashpot_over_normal()
+        } else {
+            0.0
+        };
+        let dashpot = |effective_mass: f64, k_n: f64| {
+            if x_gamma_t > 0.0 {
+                x_gamma_t * law.damping.coefficient(effective_mass, k_n)
+            } else {
+                0.0
+            }
+        };
         let mut met = vec![ContactsMet::default(); p.len()];
         for (k, i, j, overlap) in self.touching_pairs(0.0) {
             let (pair, r_eff) = self.pair_of(i, j);
             let (k_n, k_t) = law.stiffness(overlap, r_eff, pair, &states.pair(k));
+            let c_t = dashpot(contact_mass(&p.mass, &p.prescribed, i, j), k_n);
             for b in [i, j] {
-                met[b].add(k_n, k_t);
+                met[b].add(k_n, k_t, c_t);
             }
         }
         for (w, i, facet, overlap) in self.touching_walls(0.0) {
             let (pair, r_eff) = self.wall_pair_of(w, i);
             let (k_n, k_t) = law.stiffness(overlap, r_eff, pair, &states.wall(w, i, facet));
-            met[i].add(k_n, k_t);
+            met[i].add(k_n, k_t, dashpot(p.mass[i], k_n));
         }
         // Each body: (mass, radius at full size, moment of inertia, material, the
         // contacts it meets). Particles still to be poured count with the smallest
@@ -115,12 +133,16 @@ impl Simulation {
                 // No normal stiffness known: the estimate is undefined for this body.
                 continue;
             }
-            if T::ACTIVE {
+            let k_t = if T::ACTIVE {
                 // A fixed spring (k_s), or LIGGGHTS hooke's k_t = k_n, is known
                 // before any contact.
-                k = k.max(law.tangential.stiffness_before_contact(impact) * lever);
-            }
-            k = k.max(met.tangential * lever);
+                law.tangential
+                    .stiffness_before_contact(impact)
+                    .max(met.tangential)
+            } else {
+                0.0
+            };
+            k = k.max(k_t * lever);
             // Viscous friction: the dashpots of all its contacts act on the particle together.
             let viscous = law
                 .tangential
@@ -132,27 +154,40 @@ impl Simulation {
                 0.0
             };
             let elastic = critical_time_step(k, mass, xi);
-            let dt = viscous.map_or(elastic, |v| v.min(elastic));
+            let mut dt = viscous.map_or(elastic, |v| v.min(elastic));
+            if x_gamma_t > 0.0 {
+                // The tangential mode with its own dashpot (the normal damping ratio
+                // above is the normal mode's): the dashpots of all its contacts, or of an
+                // impact against a wall, times the lever factor like the springs.
+                let c_t = met.tangential_dashpot.max(dashpot(mass, impact));
+                dt = dt.min(critical_time_step_with_dashpot(
+                    k_t * lever,
+                    mass,
+                    c_t * lever,
+                ));
+            }
             best = Some(best.map_or(dt, |b: f64| b.min(dt)));
         }
         best
     }
 }
 
-/// What one particle's contacts add up to for the critical time step: Σ k_n, Σ k_t
-/// (summed, because neighbours act on a particle through all its contacts at once)
-/// and how many there are.
+/// What one particle's contacts add up to for the critical time step: Σ k_n, Σ k_t,
+/// Σ γ_t of LAMMPS's tangential dashpots (summed, because neighbours act on a particle
+/// through all its contacts at once) and how many there are.
 #[derive(Clone, Copy, Debug, Default)]
 struct ContactsMet {
     normal: f64,
     tangential: f64,
+    tangential_dashpot: f64,
     count: usize,
 }
 
 impl ContactsMet {
-    fn add(&mut self, k_n: f64, k_t: f64) {
+    fn add(&mut self, k_n: f64, k_t: f64, c_t: f64) {
         self.normal += k_n;
         self.tangential += k_t;
+        self.tangential_dashpot += c_t;
         self.count += 1;
     }
 }

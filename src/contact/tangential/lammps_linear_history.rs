@@ -126,6 +126,10 @@ impl TangentialModel for LammpsLinearHistory {
     fn stiffness_before_contact(&self, _: f64) -> f64 {
         self.stiffness
     }
+
+    fn dashpot_over_normal(&self) -> f64 {
+        self.x_gamma_t
+    }
 }
 
 #[cfg(test)]

@@ -111,6 +111,10 @@ impl TangentialModel for LammpsLinearNohistory {
     fn energy(&self, _: &TangentialInput, _: &()) -> f64 {
         0.0
     }
+
+    fn dashpot_over_normal(&self) -> f64 {
+        self.x_gamma_t
+    }
 }
 
 #[cfg(test)]

@@ -2,20 +2,25 @@
 //! reproduced operation for operation from LAMMPS 22 Jul 2025 (update 4),
 //! src/GRANULAR/gran_sub_mod_tangential.cpp `GranSubModTangentialMindlin::calculate_forces`,
 //! with the stiffness `k = -1` (8G* from the materials: `mix_stiffnessG`,
-//! `mix_stiffnessG_wall`) and no tangential damping (x_γ,t = 0). tamp's notation:
-//! `normal` n from the partner to particle i, v_t the tangential velocity of i's contact
-//! point relative to the partner's (spins included), F_n the total normal force,
-//! elastic plus damping. Per step:
+//! `mix_stiffnessG_wall`), the tangential dashpot x_γ,t times the normal damping's
+//! prefactor (`damp = xt * damping_model->get_damp_prefactor()`, as in
+//! `lammps_linear_history`) and F_s from granular_model.cpp. tamp's notation: `normal` n
+//! from the partner to particle i, v_t the tangential velocity of i's contact point
+//! relative to the partner's (spins included), F_n the total normal force, elastic plus
+//! damping, η_n the normal damping's coefficient this step (F_n,damp = η_n dδ/dt; 0
+//! without damping). Per step:
 //!
 //! ```text
 //!   a = √(R* δ),  k_a = 8 G* a,  F_s = μ |F_n|            (Fncrit = |F_n,total|)
+//!   γ_t = x_γ,t η_n,  F_damp = −γ_t v_t
 //!   rescale variants, if a < a_prev:  h ← h · a / a_prev   (unloading)
 //!   if |h·n| (·k_a for the displacement variants) > 1e-10 F_s:
 //!       h ← (h − (h·n) n) · |h| / |h − (h·n) n|            (projected, length kept)
-//!   displacement variants (`mindlin`, `mindlin_rescale`):  h ← h + v_t Δt,  F_t = −k_a h
-//!   force variants (`mindlin/force`, `mindlin_rescale/force`): h ← h − k_a v_t Δt,  F_t = h
+//!   displacement variants (`mindlin`, `mindlin_rescale`):  h ← h + v_t Δt,  F_t = −k_a h + F_damp
+//!   force variants (`mindlin/force`, `mindlin_rescale/force`): h ← h − k_a v_t Δt,  F_t = h + F_damp
 //!   rescale variants: a_prev ← a
-//!   if |F_t| > F_s and |h| ≠ 0:  F_t ← F_t F_s/|F_t|,  h ← F_t (force) or −F_t/k_a
+//!   if |F_t| > F_s and |h| ≠ 0:  F_t ← F_t F_s/|F_t|,
+//!                                h ← F_t − F_damp (force) or −(F_t − F_damp)/k_a
 //!   if |F_t| > F_s and |h| = 0:  F_t ← 0
 //! ```
 //!
@@ -25,16 +30,20 @@
 //! Coulomb's limit on |F_n| where that law takes max(F_n, 0), and the history turned
 //! only above the 1e-10 threshold). `*_rescale` shrink the history with the contact
 //! radius on unloading (Walton 1993's device against a spring outliving its contact).
-//! The history starts at zero when a contact forms and is dropped when it ends, as in
-//! tamp. Neither micro-slip nor a tangential dashpot: not Mindlin–Deresiewicz's full
+//! The dashpot follows the normal damping through the contact; it counts in the Coulomb
+//! test, and on the cone the history keeps only the elastic part F_t − F_damp (so a
+//! sliding contact's spring is the cone's force less the dashpot's). x_γ,t = 0 (the
+//! default) leaves the dashpot out. The history starts at zero when a contact forms and
+//! is dropped when it ends, as in tamp. No micro-slip: not Mindlin–Deresiewicz's full
 //! law (`mindlin_deresiewicz`). The lever arms are the scene's (`contact.lever_arm`;
 //! `lammps` for LAMMPS's). docs/lammps.md has the measured agreement.
 
 use super::cundall_strack::rotate_into_plane;
 use super::{TangentialInput, TangentialLaw, TangentialModel};
 use crate::contact::lammps::NoLammpsModel;
-use crate::contact::model::{ContactState, Needs};
+use crate::contact::model::{ContactState, Needs, Roles};
 use crate::contact::registry::{self, TangentialExample};
+use crate::error::Errors;
 use crate::particles::Vec3;
 
 /// gran_sub_mod_tangential.cpp's EPSILON: the history is turned into the contact
@@ -126,11 +135,15 @@ impl Variant {
     }
 }
 
-/// `{"law": "lammps_mindlin", "variant": ..., "friction": μ}`.
+/// `{"law": "lammps_mindlin", "variant": ..., "x_gamma_t": x, "friction": μ}`.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct LammpsMindlin {
     pub variant: Variant,
+    /// x_γ,t: the tangential dashpot over the normal one, γ_t = x_γ,t η_n; 0 (no
+    /// dashpot) when absent.
+    #[serde(default)]
+    pub x_gamma_t: f64,
 }
 
 /// The history h (a displacement in m, or a force in N for the force variants) and,
@@ -162,16 +175,51 @@ impl TangentialModel for LammpsMindlin {
         "lammps_mindlin"
     }
 
-    /// From rest, one step: sticking F = −8G*a v_t Δt (both structures give it);
-    /// sliding: Coulomb's −μ|F_n| v̂_t.
+    /// From rest, one step: sticking F = −8G*a v_t Δt (both structures give it), less
+    /// x_γ,t η_n v_t with the dashpot; sliding: Coulomb's −μ|F_n| v̂_t.
     fn examples() -> Vec<TangentialExample> {
-        Variant::ALL
+        let mut out: Vec<TangentialExample> = Variant::ALL
             .iter()
             .flat_map(|&variant| {
-                let law = TangentialLaw::LammpsMindlin(LammpsMindlin { variant });
+                let law = TangentialLaw::LammpsMindlin(LammpsMindlin {
+                    variant,
+                    x_gamma_t: 0.0,
+                });
                 registry::spring_examples(law, registry::mindlin_stiffness())
             })
-            .collect()
+            .collect();
+        let eta = 2.0;
+        let stick = TangentialInput {
+            normal_damping: eta,
+            ..registry::sticking_input()
+        };
+        let slide = TangentialInput {
+            normal_damping: eta,
+            ..registry::sliding_input()
+        };
+        let v = stick.tangential_velocity;
+        for variant in Variant::ALL {
+            let law = TangentialLaw::LammpsMindlin(LammpsMindlin {
+                variant,
+                x_gamma_t: 0.5,
+            });
+            out.push(TangentialExample {
+                law,
+                input: stick,
+                force: -v * (registry::mindlin_stiffness() * stick.dt) - v * (0.5 * eta),
+            });
+            out.push(TangentialExample {
+                law,
+                input: slide,
+                force: registry::sliding_force(&slide),
+            });
+        }
+        out
+    }
+
+    /// x_γ,t ≥ 0 and finite (LAMMPS refuses xt < 0: "Illegal Mindlin tangential model").
+    fn check(&self, path: &str, _: Roles, e: &mut Errors) {
+        e.non_negative(format!("{path}.x_gamma_t"), self.x_gamma_t);
     }
 
     fn needs(&self) -> Needs {
@@ -182,7 +230,11 @@ impl TangentialModel for LammpsMindlin {
     }
 
     fn lammps(&self) -> Result<String, NoLammpsModel> {
-        Ok(format!("{} -1 0 {{mu}}", self.variant.keyword()))
+        Ok(format!(
+            "{} -1 {} {{mu}}",
+            self.variant.keyword(),
+            crate::output::data_file::g(self.x_gamma_t)
+        ))
     }
 
     #[inline]
@@ -190,6 +242,7 @@ impl TangentialModel for LammpsMindlin {
         let force_history = self.variant.force();
         let a = (input.overlap * input.effective_radius).sqrt();
         let k_scaled = 8.0 * input.effective_shear_modulus * a;
+        let damping = self.x_gamma_t * input.normal_damping;
         let limit = input.normal_force.abs() * input.friction;
         let h = &mut state.history;
         if self.variant.rescale() && a < state.contact_radius {
@@ -206,14 +259,19 @@ impl TangentialModel for LammpsMindlin {
         if self.variant.rescale() {
             state.contact_radius = a;
         }
-        let mut f = if force_history { *h } else { *h * -k_scaled };
+        let dashpot = input.tangential_velocity * -damping;
+        let mut f = if force_history { *h } else { *h * -k_scaled } + dashpot;
         let to_history = if force_history { 1.0 } else { -1.0 / k_scaled };
-        onto_the_cone(&mut f, h, Vec3::zeros(), limit, to_history);
+        onto_the_cone(&mut f, h, dashpot, limit, to_history);
         f
     }
 
     fn stiffness(&self, input: &TangentialInput) -> f64 {
         Self::scaled_stiffness(input)
+    }
+
+    fn dashpot_over_normal(&self) -> f64 {
+        self.x_gamma_t
     }
 
     fn energy(&self, input: &TangentialInput, state: &MindlinHistory) -> f64 {
@@ -249,7 +307,10 @@ mod tests {
         // halves with a, `mindlin/force` keeps its force.
         let v = Vec3::new(1e-3, 0.0, 0.0);
         for (variant, ratio) in [(Variant::Mindlin, 0.5), (Variant::MindlinForce, 1.0)] {
-            let law = LammpsMindlin { variant };
+            let law = LammpsMindlin {
+                variant,
+                x_gamma_t: 0.0,
+            };
             let mut s = MindlinHistory::default();
             let f1 = law.force(&input(4e-6, v, 10.0), &mut s);
             let f2 = law.force(&input(1e-6, Vec3::zeros(), 10.0), &mut s);
@@ -262,6 +323,7 @@ mod tests {
         // `mindlin_rescale/force` at δ/4 after δ: the stored force is halved (a/a_prev).
         let law = LammpsMindlin {
             variant: Variant::MindlinRescaleForce,
+            x_gamma_t: 0.0,
         };
         let v = Vec3::new(1e-3, 0.0, 0.0);
         let mut s = MindlinHistory::default();
@@ -275,6 +337,7 @@ mod tests {
         // F_n = −3 N (the damping pulls): LAMMPS still allows μ·3 N.
         let law = LammpsMindlin {
             variant: Variant::MindlinForce,
+            x_gamma_t: 0.0,
         };
         let i = TangentialInput {
             normal_force: -3.0,
@@ -288,16 +351,64 @@ mod tests {
     fn each_variant_names_its_lammps_keyword() {
         let words: Vec<String> = Variant::ALL
             .iter()
-            .map(|&variant| LammpsMindlin { variant }.lammps().unwrap())
+            .map(|&variant| {
+                LammpsMindlin {
+                    variant,
+                    x_gamma_t: 0.0,
+                }
+                .lammps()
+                .unwrap()
+            })
             .collect();
         assert_eq!(
             words,
             [
-                "mindlin -1 0 {mu}",
-                "mindlin/force -1 0 {mu}",
-                "mindlin_rescale -1 0 {mu}",
-                "mindlin_rescale/force -1 0 {mu}"
+                "mindlin -1 0e0 {mu}",
+                "mindlin/force -1 0e0 {mu}",
+                "mindlin_rescale -1 0e0 {mu}",
+                "mindlin_rescale/force -1 0e0 {mu}"
             ]
         );
+        let damped = LammpsMindlin {
+            variant: Variant::Mindlin,
+            x_gamma_t: 0.5,
+        };
+        assert_eq!(damped.lammps().unwrap(), "mindlin -1 5e-1 {mu}");
+    }
+
+    #[test]
+    fn on_the_cone_the_history_keeps_only_the_elastic_part() {
+        // From rest, one step with the dashpot: k_a = 8·2.1e10·√(5e-4·1e-6) N/m, and
+        // the displacement variants' spring −k_a v Δt plus the dashpot −γ_t v overshoot
+        // F_s = 0.4·|−20| = 8 N; the force is put on the cone, F = −8 v̂, and the history
+        // holds F − F_damp: −(F + γ_t v)/k_a for a displacement, F + γ_t v for a force.
+        let v = Vec3::new(3.0, 4.0, 0.0);
+        let (eta, x) = (2.0, 0.5);
+        let i = TangentialInput {
+            tangential_velocity: v,
+            normal_force: -20.0,
+            normal_damping: eta,
+            ..registry::sticking_input()
+        };
+        let k_a = 8.0 * i.effective_shear_modulus * (i.overlap * i.effective_radius).sqrt();
+        let cone = v * (-8.0 / 5.0);
+        let elastic = cone + v * (x * eta);
+        for variant in Variant::ALL {
+            let law = LammpsMindlin {
+                variant,
+                x_gamma_t: x,
+            };
+            let mut s = MindlinHistory::default();
+            let f = law.force(&i, &mut s);
+            let expected = if variant.force() {
+                elastic
+            } else {
+                elastic * (-1.0 / k_a)
+            };
+            for c in 0..2 {
+                approx::assert_relative_eq!(f[c], cone[c], max_relative = 1e-14);
+                approx::assert_relative_eq!(s.history[c], expected[c], max_relative = 1e-13);
+            }
+        }
     }
 }

@@ -9,7 +9,9 @@
 //!   `mindlin/force`, `mindlin_rescale`, `mindlin_rescale/force` and `damping
 //!   coeff_restitution` e = 0.9 against `lammps_mindlin` with `liggghts_restitution`
 //!   e = 0.9, and `mindlin/force` undamped against `mindlin_no_slip` (equal when the
-//!   normal force never pulls); `reference_data/lammps/run_oblique_wall_mindlin.sh`.
+//!   normal force never pulls); each of the four again with the tangential dashpot
+//!   x_γ,t = 0.5 against `lammps_mindlin` with that `x_gamma_t`;
+//!   `reference_data/lammps/run_oblique_wall_mindlin.sh`.
 //! - `lammps_oblique_wall_impact_linear` (`linear`): `hooke` and `hertz/material` with
 //!   `linear_history` and `linear_nohistory` and `damping coeff_restitution` e = 0.9 or
 //!   `velocity` against `lammps_linear_history` / `lammps_linear_nohistory` with
@@ -52,6 +54,9 @@ struct MindlinRow {
     tangential: String,
     damping: String,
     restitution_in: f64,
+    /// x_γ,t of the tangential model; absent (the cylinder's file) is 0.
+    #[serde(default)]
+    x_gamma_t: f64,
     angle_deg: f64,
     tangential_speed: f64,
     normal_speed: f64,
@@ -135,8 +140,11 @@ impl MindlinRow {
     fn run(self) -> Result<Run> {
         let (tangential, damping) = tamp_laws(&self)?;
         Ok(Run {
-            label: format!("{} {} {}°", self.tangential, self.damping, self.angle_deg),
-            models: format!("{},{}", self.tangential, self.damping),
+            label: format!(
+                "{} x_gamma_t {} {} {}°",
+                self.tangential, self.x_gamma_t, self.damping, self.angle_deg
+            ),
+            models: format!("{},{},{}", self.tangential, self.x_gamma_t, self.damping),
             normal: None,
             tangential,
             damping,
@@ -224,17 +232,23 @@ impl LinearRow {
     }
 }
 
-/// tamp's tangential law and damping for a LAMMPS Mindlin model and damping.
+/// tamp's tangential law and damping for a LAMMPS Mindlin model (with its x_γ,t) and
+/// damping.
 fn tamp_laws(row: &MindlinRow) -> Result<(TangentialLaw, Option<Damping>)> {
     let variant = Variant::ALL
         .into_iter()
         .find(|v| v.keyword() == row.tangential);
     match (variant, row.damping.as_str()) {
-        (Some(Variant::MindlinForce), "velocity") if row.restitution_in == 0.0 => {
+        (Some(Variant::MindlinForce), "velocity")
+            if row.restitution_in == 0.0 && row.x_gamma_t == 0.0 =>
+        {
             Ok((TangentialLaw::MindlinNoSlip(MindlinNoSlip {}), None))
         }
         (Some(variant), "coeff_restitution") => Ok((
-            TangentialLaw::LammpsMindlin(LammpsMindlin { variant }),
+            TangentialLaw::LammpsMindlin(LammpsMindlin {
+                variant,
+                x_gamma_t: row.x_gamma_t,
+            }),
             Some(Damping::LiggghtsRestitution(LiggghtsRestitution {
                 restitution: row.restitution_in,
             })),
@@ -319,7 +333,7 @@ pub fn mindlin(ctx: &CaseContext) -> Result<Vec<Measured>> {
         .into_iter()
         .map(MindlinRow::run)
         .collect::<Result<Vec<_>>>()?;
-    compare(ctx, &runs, "tangential,damping")
+    compare(ctx, &runs, "tangential,x_gamma_t,damping")
 }
 
 /// `lammps_cylinder_wall_impact`.
@@ -337,7 +351,7 @@ pub fn cylinder(ctx: &CaseContext) -> Result<Vec<Measured>> {
             "results.csv: every run needs cylinder_radius and contact_steps".into(),
         ));
     }
-    compare(ctx, &runs, "tangential,damping")
+    compare(ctx, &runs, "tangential,x_gamma_t,damping")
 }
 
 /// `lammps_oblique_wall_impact_linear`.
