@@ -46,6 +46,12 @@ impl Expression {
         Ok(e)
     }
 
+    /// The parsed operator tree, for translating the expression into another code's
+    /// formula language (`lammps::formula`).
+    pub fn tree(&self) -> &Node<DefaultNumericTypes> {
+        &self.tree
+    }
+
     /// Evaluate with the variables set to `values`, in the order given to `parse`.
     pub fn eval(&self, values: &[f64]) -> Result<f64, String> {
         let mut context = HashMapContext::<DefaultNumericTypes>::new();

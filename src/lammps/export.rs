@@ -23,8 +23,12 @@
 //!   sphere that one material, so particles of another one are refused. A fixed
 //!   cylinder along x, y or z with `"curvature": "mean"` and both ends closed is a
 //!   `region cylinder` with `fix wall/gran/region` (`cylinder_region`,
-//!   `cylinder_refusals` say why and when). Other walls (open boxes included,
-//!   `wall_fixes` says why), cohesion, growth and scheduled insertion are refused.
+//!   `cylinder_refusals` say why and when). A tilted or moving plane is a `region
+//!   plane` with `fix wall/gran/region` (`plane_region`); a plane or cylinder moving
+//!   at constant velocity or by displacement expressions moves its region (`move` on
+//!   equal-style variables of `time`, `region_move`). Servo and pressed walls, moving
+//!   boxes and other walls (open boxes included, `wall_fixes` says why), cohesion,
+//!   growth and scheduled insertion are refused.
 //! - Dumps at `%.17g`, sorted by id: every `dump_every` steps to `dump.lammps`, the
 //!   final state to `final.lammps`; `tamp compare` and `import-liggghts-dump` read them.
 
@@ -155,18 +159,40 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
         .axes()
         .map(|a| a.is_some());
     for (k, w) in scene.walls.iter().enumerate() {
-        if matches!(w.shape, ShapeSpec::Cylinder { .. }) {
-            for (field, why) in cylinder_refusals(w, &scene.walls, periodic) {
+        let fixed = matches!(w.motion, MotionSpec::Fixed);
+        match &w.shape {
+            ShapeSpec::Cylinder { .. } => {
+                for (field, why) in cylinder_refusals(w, &scene.walls, periodic, 0.0) {
+                    refuse(format!("walls[{k}].{field}"), &why);
+                }
+            }
+            ShapeSpec::Plane { normal, .. } => {
+                if (0..3).any(|a| periodic[a] && normal[a] != 0.0) {
+                    refuse(
+                        format!("walls[{k}].shape.normal"),
+                        "a plane across a periodic axis: LAMMPS's fix wall/gran cannot stand on a periodic axis (\"Cannot use wall in periodic dimension\") and its region walls have no periodic images",
+                    );
+                }
+            }
+            _ => {
+                if let Err(why) = wall_fixes(w, periodic) {
+                    refuse(format!("walls[{k}]"), why);
+                } else if !fixed {
+                    refuse(
+                        format!("walls[{k}].motion"),
+                        "only plane and cylinder walls move in the LAMMPS export (a region's move); a closed box is three fix wall/gran planes, which cannot: use plane walls",
+                    );
+                }
+            }
+        }
+        if matches!(
+            w.shape,
+            ShapeSpec::Plane { .. } | ShapeSpec::Cylinder { .. }
+        ) && let Err(list) = region_move(k, w)
+        {
+            for (field, why) in list {
                 refuse(format!("walls[{k}].{field}"), &why);
             }
-        } else if let Err(why) = wall_fixes(w, periodic) {
-            refuse(format!("walls[{k}]"), why);
-        }
-        if !matches!(w.motion, MotionSpec::Fixed) {
-            refuse(
-                format!("walls[{k}].motion"),
-                "only fixed walls are exported to LAMMPS",
-            );
         }
         // fix wall/gran has one material, used for the wall and the sphere alike
         // (E* = E/(2(1 − ν²)), mix_stiffnessE_wall): the same as tamp only where every
@@ -240,14 +266,13 @@ fn wall_fixes(
     let on_periodic = "LAMMPS's fix wall/gran cannot stand on a periodic axis (\"Cannot use wall in periodic dimension\")";
     match &w.shape {
         ShapeSpec::Plane { point, normal } => {
-            let n = Vec3::from(*normal);
-            let Some(a) = (0..3).find(|&a| n[a].abs() == n.norm() && n.norm() > 0.0) else {
+            let Some(a) = along_an_axis(normal) else {
                 return Err("fix wall/gran planes are normal to x, y or z");
             };
             if periodic[a] {
                 return Err(on_periodic);
             }
-            let geometry = if n[a] > 0.0 {
+            let geometry = if normal[a] > 0.0 {
                 format!("{}plane {} NULL", AXES[a], g(point[a]))
             } else {
                 format!("{}plane NULL {}", AXES[a], g(point[a]))
@@ -321,6 +346,112 @@ fn cylinder_region(w: &WallSpec) -> Option<String> {
     ))
 }
 
+/// A plane wall that `fix wall/gran` cannot write (tilted, or moving) as a LAMMPS
+/// region: `plane px py pz nx ny nz side in units box`, the particles on the normal's
+/// side, for `fix wall/gran/region`. Exact: region_plane.cpp normalises the normal as
+/// tamp does (each component over the square root of their sum of squares), finds
+/// the contact at the distance d = (x − p)·n̂ when 0 ≤ d < R, and gives it the contact
+/// radius 0, the flat wall R* = R of tamp's plane. Behind the plane (d < 0) LAMMPS has
+/// no contact where tamp reports a deep overlap; a run that gets there has already
+/// failed tamp's stability limits. Axis-aligned fixed planes stay `fix wall/gran`
+/// planes (`wall_fixes`): the same contact to the bit, for a normal along an axis the
+/// region's d has the other components' products exactly zero, and the recorded cases
+/// use that form.
+fn plane_region(w: &WallSpec) -> Option<String> {
+    let ShapeSpec::Plane { point, normal } = &w.shape else {
+        return None;
+    };
+    if matches!(w.motion, MotionSpec::Fixed) && along_an_axis(normal).is_some() {
+        return None;
+    }
+    let [px, py, pz] = point.map(g);
+    let [nx, ny, nz] = normal.map(g);
+    Some(format!(
+        "plane {px} {py} {pz} {nx} {ny} {nz} side in units box"
+    ))
+}
+
+/// A region's motion in the deck: its `variable` lines and its `move …` keyword.
+type RegionMove = (String, String);
+
+/// Refused fields, as (path, reason).
+type Refused = Vec<(String, String)>;
+
+/// A moving wall's region motion: the deck's `variable` lines and the region's
+/// `move v_x v_y v_z` keyword (`NULL` for an axis it does not move along), `None` for a
+/// fixed wall; or, as (field under `walls[k]`, reason), why it has none.
+///
+/// LAMMPS moves a region by displacement variables evaluated once per step, at the
+/// step's `time` = step·Δt, before the wall forces (region.cpp `prematch`,
+/// `pretransform`), and gives the wall the velocity (d(t) − d(t − Δt))/Δt
+/// (`set_velocity`), in the normal and tangential relative velocity alike
+/// (granular_model.cpp takes vᵢ − v_wall), as tamp's wall motion does:
+/// - `Velocity` v: d(t) = v·time. tamp adds v Δt per step and takes v itself, LAMMPS's
+///   chord is v to round-off. In the setup force of step 0 LAMMPS's velocity is 0,
+///   tamp's v: `export` refuses a particle that touches such a wall at t = 0.
+/// - `Displacement` u(t): the expressions as LAMMPS formulas (`formula`), refused
+///   where there is none; the chord over the step and the velocity 0 at step 0 are
+///   tamp's own (`Boundary::advance`).
+/// - `Servo`, `Pressure`: refused, the displacement follows the particles' force.
+///
+/// A cylinder's ends must stay closed by fixed faces (`cylinder_refusals`): its
+/// displacement along the axis must be zero, or a constant velocity, whose travel
+/// `export` checks against the faces.
+fn region_move(k: usize, w: &WallSpec) -> std::result::Result<Option<RegionMove>, Refused> {
+    let axis = match &w.shape {
+        ShapeSpec::Cylinder { axis, .. } => along_an_axis(axis),
+        _ => None,
+    };
+    let formulas: [Option<String>; 3] = match &w.motion {
+        MotionSpec::Fixed => return Ok(None),
+        MotionSpec::Velocity { velocity } => {
+            velocity.map(|v| (v != 0.0).then(|| format!("{}*time", g(v))))
+        }
+        MotionSpec::Displacement { x, y, z } => {
+            let mut refused = Vec::new();
+            let mut out = [None, None, None];
+            for (a, src) in [x, y, z].into_iter().enumerate() {
+                let field = format!("motion.{}", AXES[a]);
+                let translated = crate::expression::Expression::parse(src, &["t"])
+                    .and_then(|e| super::formula::lammps_formula(e.tree()));
+                match translated {
+                    Err(why) => refused.push((
+                        field,
+                        format!("no LAMMPS equal-style formula with the same value: {why}"),
+                    )),
+                    Ok(f) if Some(a) == axis && f != "0" && f != g(0.0) => refused.push((
+                        field,
+                        "a cylinder displaced along its axis by an expression: its ends would move against the fixed faces that close them (a constant velocity along the axis is checked over the run)".to_string(),
+                    )),
+                    Ok(f) => out[a] = Some(f),
+                }
+            }
+            if !refused.is_empty() {
+                return Err(refused);
+            }
+            out
+        }
+        MotionSpec::Servo { .. } | MotionSpec::Pressure { .. } => {
+            return Err(vec![(
+                "motion".to_string(),
+                "a servo or pressed wall moves by the particles' force on it, step by step; a LAMMPS region moves only by displacement variables given in advance, so no deck runs the same controller".to_string(),
+            )]);
+        }
+    };
+    let mut variables = String::new();
+    let names: Vec<String> = (0..3)
+        .map(|a| match &formulas[a] {
+            Some(f) => {
+                let name = format!("wall{k}_d{}", AXES[a]);
+                let _ = writeln!(variables, "variable     {name} equal {f}");
+                format!("v_{name}")
+            }
+            None => "NULL".to_string(),
+        })
+        .collect();
+    Ok(Some((variables, format!("move {}", names.join(" ")))))
+}
+
 /// Why a cylinder wall cannot be written as `cylinder_region` with the same physics, as
 /// (field under `walls[k]`, reason); `walls` are the scene's, whose planes and closed
 /// boxes may close the cylinder's ends.
@@ -338,6 +469,7 @@ fn cylinder_refusals(
     w: &WallSpec,
     walls: &[WallSpec],
     periodic: [bool; 3],
+    travel: f64,
 ) -> Vec<(&'static str, String)> {
     let mut out = Vec::new();
     let ShapeSpec::Cylinder {
@@ -374,9 +506,14 @@ fn cylinder_refusals(
     let s = axis[a].signum();
     let (e0, e1) = (origin[a] + s * bottom, origin[a] + s * top);
     let (lo, hi) = (e0.min(e1), e0.max(e1));
-    let inside = |h: f64| (lo..=hi).contains(&h);
+    // Between the ends at the start and, moved by `travel` along the axis, at the end.
+    let inside = |h: f64| (lo..=hi).contains(&h) && (lo + travel..=hi + travel).contains(&h);
     // A face normal to the axis at axial coordinate h, facing +axis (closes lo) or −axis.
-    let faces = walls.iter().flat_map(|other| match &other.shape {
+    // Only fixed faces: a moving one could leave the ends open later in the run.
+    let fixed = walls
+        .iter()
+        .filter(|other| matches!(other.motion, MotionSpec::Fixed));
+    let faces = fixed.flat_map(|other| match &other.shape {
         ShapeSpec::Plane { point, normal } => along_an_axis(normal)
             .filter(|&b| b == a)
             .map(|_| vec![(point[a], normal[a] > 0.0)])
@@ -396,7 +533,7 @@ fn cylinder_refusals(
             out.push((
                 "shape",
                 format!(
-                    "particles could reach the cylinder's end at {}{}: beyond it LAMMPS's open region cylinder gives a flat rim contact with a new tangential history (region_cylinder.cpp surface_exterior), tamp's \"mean\" wall the wall's curvature and one history; close the end with a plane wall or a closed box normal to the axis between the ends",
+                    "particles could reach the cylinder's end at {}{}: beyond it LAMMPS's open region cylinder gives a flat rim contact with a new tangential history (region_cylinder.cpp surface_exterior), tamp's \"mean\" wall the wall's curvature and one history; close the end with a fixed plane wall or a fixed closed box normal to the axis between the ends (over the whole run, if the cylinder moves along its axis)",
                     AXES[a],
                     format_args!(" = {}", g(end))
                 ),
@@ -408,7 +545,8 @@ fn cylinder_refusals(
 
 /// The first particle (its id) not inside a cylinder wall: centre off the axis by
 /// R_c or more, or beyond an end. LAMMPS's region (side in) has no contact from outside.
-fn starts_outside(w: &WallSpec, sim: &crate::simulation::Simulation) -> Option<u64> {
+/// `shift` is the wall's displacement at t = 0.
+fn starts_outside(w: &WallSpec, sim: &crate::simulation::Simulation, shift: Vec3) -> Option<u64> {
     let ShapeSpec::Cylinder {
         origin,
         axis,
@@ -424,7 +562,7 @@ fn starts_outside(w: &WallSpec, sim: &crate::simulation::Simulation) -> Option<u
     let p = &sim.particles;
     (0..p.len())
         .find(|&i| {
-            let x = p.position[i] - o;
+            let x = p.position[i] - shift - o;
             let h = x.dot(&a);
             (x - a * h).norm() >= *radius || h < *bottom || h > *top
         })
@@ -490,7 +628,7 @@ pub fn export(
         .iter()
         .enumerate()
         .filter_map(|(k, w)| {
-            starts_outside(w, &sim).map(|id| {
+            starts_outside(w, &sim, sim.walls[k].displacement).map(|id| {
                 (
                     format!("walls[{k}].shape"),
                     format!("particle {id} does not start inside the cylinder: LAMMPS's region cylinder (side in) has no contact from outside or beyond its ends, tamp's wall is a two-sided shell with rims"),
@@ -498,7 +636,52 @@ pub fn export(
             })
         })
         .collect();
-    let narrow: Vec<(String, String)> = narrow.into_iter().chain(outside).collect();
+    // LAMMPS's region velocity is 0 in the setup force (region.cpp set_velocity at
+    // step 0), tamp's velocity wall has its v from the start (`region_move`).
+    let touching = scene.walls.iter().enumerate().filter_map(|(k, w)| {
+        let MotionSpec::Velocity { .. } = w.motion else {
+            return None;
+        };
+        (0..p.len())
+            .find(|&i| sim.walls[k].deepest_overlap(&p.position[i], p.radius[i]) > 0.0)
+            .map(|i| {
+                (
+                    format!("walls[{k}].motion"),
+                    format!("particle {} touches the moving wall at t = 0: LAMMPS gives a moving region the velocity 0 in the first (setup) force, tamp the wall's velocity; start the particles clear of it", p.id[i]),
+                )
+            })
+    });
+    // A cylinder moving along its axis at constant velocity keeps its ends closed
+    // only if the closing faces stay between them over the run.
+    let duration = built.steps as f64 * sim.dt;
+    let periodic_axes = scene
+        .periodic
+        .clone()
+        .unwrap_or_default()
+        .axes()
+        .map(|a| a.is_some());
+    let travelling = scene.walls.iter().enumerate().flat_map(|(k, w)| {
+        let travel = match (&w.shape, &w.motion) {
+            (ShapeSpec::Cylinder { axis, .. }, MotionSpec::Velocity { velocity }) => {
+                along_an_axis(axis).map_or(0.0, |a| velocity[a] * duration)
+            }
+            _ => 0.0,
+        };
+        let open = if travel != 0.0 {
+            cylinder_refusals(w, &scene.walls, periodic_axes, travel)
+        } else {
+            Vec::new()
+        };
+        open.into_iter()
+            .filter(|(field, _)| *field == "shape")
+            .map(move |(_, why)| (format!("walls[{k}].motion.velocity"), why))
+    });
+    let narrow: Vec<(String, String)> = narrow
+        .into_iter()
+        .chain(outside)
+        .chain(touching)
+        .chain(travelling)
+        .collect();
     if !narrow.is_empty() {
         return Err(refuse_all(narrow));
     }
@@ -593,10 +776,18 @@ pub fn export(
             .replace("{E}", &g(m.youngs_modulus.unwrap_or(0.0)))
             .replace("{nu}", &g(m.poisson_ratio.unwrap_or(0.0)))
             .replace("{mu}", &g(mu_of(scene)));
-        if let Some(region) = cylinder_region(w) {
+        if let Some(region) = cylinder_region(w).or_else(|| plane_region(w)) {
+            let motion = region_move(k, w).expect("refusals checked the motion");
+            let moving = match motion {
+                Some((variables, keyword)) => {
+                    deck.push_str(&variables);
+                    format!(" {keyword}")
+                }
+                None => String::new(),
+            };
             let _ = writeln!(
                 deck,
-                "region       wall{k} {region}\nfix          wall{k} all wall/gran/region granular {line} region wall{k}"
+                "region       wall{k} {region}{moving}\nfix          wall{k} all wall/gran/region granular {line} region wall{k}"
             );
             continue;
         }
@@ -738,12 +929,17 @@ mod tests {
     fn refusals_name_every_field_and_nothing_is_written() {
         let s = two_spheres(
             r#"{"normal": {"law": "hertz"}, "tangential": {"law": "cundall_strack", "stiffness": 1e3, "friction": 0.3}}"#,
-            r#", "rotation": {}, "walls": [{"name": "floor", "material": "steel", "shape": {"kind": "plane", "point": [0, 0, -0.01], "normal": [0, 1, 1]}}]"#,
+            r#", "rotation": {}, "walls": [{"name": "floor", "material": "steel", "shape": {"kind": "plane", "point": [0, 0, -0.01], "normal": [0, 1, 1]},
+                 "motion": {"kind": "servo", "direction": [0, -1, -1], "force": 1, "gain": 1e-3, "max_speed": 0.1}}]"#,
         );
         let paths: Vec<String> = refusals(&s).into_iter().map(|(p, _)| p).collect();
         assert_eq!(
             paths,
-            ["contact.tangential.law", "walls[0]", "contact.lever_arm"]
+            [
+                "contact.tangential.law",
+                "walls[0].motion",
+                "contact.lever_arm"
+            ]
         );
         let dir = std::env::temp_dir().join(format!("tamp-lammps-refused-{}", std::process::id()));
         let err = export(&s, "sha", &dir, None).unwrap_err().to_string();
@@ -839,5 +1035,144 @@ mod tests {
         .unwrap();
         let paths: Vec<String> = refusals(&s).into_iter().map(|(p, _)| p).collect();
         assert_eq!(paths, ["walls[0].material"]);
+    }
+
+    /// One steel sphere well clear of the scene's walls (`walls`, a JSON list body).
+    fn sphere_with_walls(walls: &str) -> Scene {
+        two_spheres(
+            r#"{"normal": {"law": "hertz"}}"#,
+            &format!(r#", "walls": [{walls}]"#),
+        )
+    }
+
+    /// The deck `export` writes for `s`, or its refusal as text.
+    fn deck_of(s: &Scene, tag: &str) -> std::result::Result<String, String> {
+        let dir = std::env::temp_dir().join(format!("tamp-lammps-{tag}-{}", std::process::id()));
+        let out = export(s, "sha", &dir, None)
+            .map(|_| std::fs::read_to_string(dir.join("in.tamp")).unwrap())
+            .map_err(|e| e.to_string());
+        let _ = std::fs::remove_dir_all(&dir);
+        out
+    }
+
+    #[test]
+    fn a_tilted_plane_is_a_region_plane_and_an_axis_aligned_one_stays_fix_wall_gran() {
+        let s = sphere_with_walls(
+            r#"{"material": "steel", "shape": {"kind": "plane", "point": [0, 0, -0.01], "normal": [0, -0.5, 2]}},
+               {"material": "steel", "shape": {"kind": "plane", "point": [0, 0, -0.02], "normal": [0, 0, 1]}}"#,
+        );
+        assert!(refusals(&s).is_empty(), "{:?}", refusals(&s));
+        let deck = deck_of(&s, "tilted").unwrap();
+        assert!(
+            deck.contains("region       wall0 plane 0e0 0e0 -1e-2 0e0 -5e-1 2e0 side in units box\nfix          wall0 all wall/gran/region granular hertz/material 2e11 0e0 3e-1 damping velocity tangential linear_nohistory 0 0 region wall0\n"),
+            "{deck}"
+        );
+        assert!(
+            deck.contains("fix          wall1 all wall/gran granular hertz/material 2e11 0e0 3e-1 damping velocity tangential linear_nohistory 0 0 zplane -2e-2 NULL\n"),
+            "{deck}"
+        );
+    }
+
+    #[test]
+    fn a_velocity_wall_moves_its_region_by_velocity_times_time() {
+        let s = sphere_with_walls(
+            r#"{"material": "steel", "shape": {"kind": "plane", "point": [0, 0, -0.01], "normal": [0, 0, 1]},
+                "motion": {"kind": "velocity", "velocity": [0.5, 0, -0.25]}}"#,
+        );
+        assert!(refusals(&s).is_empty(), "{:?}", refusals(&s));
+        let deck = deck_of(&s, "velocity").unwrap();
+        assert!(
+            deck.contains("variable     wall0_dx equal 5e-1*time\nvariable     wall0_dz equal -2.5e-1*time\nregion       wall0 plane 0e0 0e0 -1e-2 0e0 0e0 1e0 side in units box move v_wall0_dx NULL v_wall0_dz\n"),
+            "{deck}"
+        );
+    }
+
+    #[test]
+    fn a_displacement_wall_moves_by_its_expressions_as_lammps_formulas_or_is_refused() {
+        let s = sphere_with_walls(
+            r#"{"material": "steel", "shape": {"kind": "plane", "point": [0, 0, -0.01], "normal": [0, 0, 1]},
+                "motion": {"kind": "displacement", "x": "0.001 * math::sin(100.0 * t)", "y": "0.0", "z": "-0.5 * t"}}"#,
+        );
+        assert!(refusals(&s).is_empty(), "{:?}", refusals(&s));
+        let deck = deck_of(&s, "displacement").unwrap();
+        assert!(
+            deck.contains("variable     wall0_dx equal (1e-3)*(sin((1e2)*(time)))\nvariable     wall0_dy equal 0e0\n"),
+            "{deck}"
+        );
+        assert!(
+            deck.contains("move v_wall0_dx v_wall0_dy v_wall0_dz\n"),
+            "{deck}"
+        );
+        let s = sphere_with_walls(
+            r#"{"material": "steel", "shape": {"kind": "plane", "point": [0, 0, -0.01], "normal": [0, 0, 1]},
+                "motion": {"kind": "displacement", "x": "0.0", "y": "math::cbrt(t)", "z": "t * (1/2)"}}"#,
+        );
+        let paths: Vec<String> = refusals(&s).into_iter().map(|(p, _)| p).collect();
+        assert_eq!(paths, ["walls[0].motion.y", "walls[0].motion.z"]);
+    }
+
+    #[test]
+    fn servo_pressed_and_moving_box_walls_are_refused_at_their_motion() {
+        for wall in [
+            r#"{"material": "steel", "shape": {"kind": "plane", "point": [0, 0, -0.01], "normal": [0, 0, 1]},
+                "motion": {"kind": "pressure", "direction": [0, 0, 1], "pressure": 1e3, "area": 1e-4, "ramp_time": 1e-6, "mass": 1.0}}"#,
+            r#"{"material": "steel", "shape": {"kind": "box", "lower": [-0.01, -0.01, -0.01], "upper": [0.01, 0.01, 0.01]},
+                "motion": {"kind": "velocity", "velocity": [0, 0, 0.1]}}"#,
+        ] {
+            let paths: Vec<String> = refusals(&sphere_with_walls(wall))
+                .into_iter()
+                .map(|(p, _)| p)
+                .collect();
+            assert_eq!(paths, ["walls[0].motion"], "{wall}");
+        }
+    }
+
+    /// LAMMPS's setup force sees a moving region at rest.
+    #[test]
+    fn a_particle_touching_a_velocity_wall_at_the_start_is_refused() {
+        let s = sphere_with_walls(
+            // Touching by 1e-10 m, within the initial-overlap tolerance (1e-6 R).
+            r#"{"material": "steel", "shape": {"kind": "plane", "point": [-0.0020009999, 0, 0], "normal": [1, 0, 0]},
+                "motion": {"kind": "velocity", "velocity": [0.1, 0, 0]}}"#,
+        );
+        assert!(refusals(&s).is_empty(), "{:?}", refusals(&s));
+        let err = deck_of(&s, "touching").unwrap_err();
+        assert!(
+            err.contains("walls[0].motion: cannot export to LAMMPS: particle ")
+                && err.contains(" touches the moving wall at t = 0"),
+            "{err}"
+        );
+    }
+
+    /// A cylinder's ends stay closed only while its axial travel keeps the fixed faces
+    /// between them.
+    #[test]
+    fn a_cylinder_moves_across_its_axis_and_along_it_only_as_far_as_its_closed_ends_allow() {
+        let tube = |motion: &str| {
+            sphere_with_walls(&format!(
+                r#"{{"material": "steel", "shape": {{"kind": "cylinder", "origin": [0, 0, 0], "axis": [1, 0, 0], "radius": 0.005,
+                     "bottom": -0.004, "top": 0.004, "curvature": "mean"}}, "motion": {motion}}},
+                   {{"material": "steel", "shape": {{"kind": "plane", "point": [-0.003, 0, 0], "normal": [1, 0, 0]}}}},
+                   {{"material": "steel", "shape": {{"kind": "plane", "point": [0.003, 0, 0], "normal": [-1, 0, 0]}}}}"#
+            ))
+        };
+        // 1 µs of run: 1500 m/s along the axis travels 1.5 mm, past the 1 mm margin
+        // between the faces and the ends; 0.5 m/s travels 0.5 µm.
+        let far = tube(r#"{"kind": "velocity", "velocity": [1500, 0.1, 0]}"#);
+        assert!(refusals(&far).is_empty(), "{:?}", refusals(&far));
+        let err = deck_of(&far, "cylinder-far").unwrap_err();
+        assert!(
+            err.contains("walls[0].motion.velocity: cannot export to LAMMPS: particles could reach the cylinder's end"),
+            "{err}"
+        );
+        let ok = tube(r#"{"kind": "velocity", "velocity": [0.5, 0.1, 0]}"#);
+        let deck = deck_of(&ok, "cylinder").unwrap();
+        assert!(
+            deck.contains("region       wall0 cylinder x 0e0 0e0 5e-3 -4e-3 4e-3 side in open 1 open 2 units box move v_wall0_dx v_wall0_dy NULL\n"),
+            "{deck}"
+        );
+        let axial = tube(r#"{"kind": "displacement", "x": "0.001 * t", "y": "0.0", "z": "0.0"}"#);
+        let paths: Vec<String> = refusals(&axial).into_iter().map(|(p, _)| p).collect();
+        assert_eq!(paths, ["walls[0].motion.x"]);
     }
 }

@@ -7,3 +7,4 @@
 
 pub mod die_compaction;
 pub mod export;
+pub mod formula;

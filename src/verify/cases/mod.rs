@@ -123,6 +123,7 @@ pub const CASES: &[(&str, CaseFn)] = &[
         liggghts_three_sphere_trajectory::run,
     ),
     ("lammps_settled_packing", settled_packing::lammps),
+    ("lammps_moving_wall", liggghts_three_sphere_trajectory::run),
 ];
 
 pub fn find(name: &str) -> Option<CaseFn> {
