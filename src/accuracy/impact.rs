@@ -13,6 +13,15 @@
 //!   scale with δ_s = (m* v²/K)^{2/5}, δ_s/v and K δ_s^{3/2} (K = 4/3 E*√R*), times
 //!   numbers that depend on ξ alone, from the dimensionless equation of
 //!   `damped_hertz` (no closed form exists; that module says how it is solved);
+//! - Hertz with a constant γ_n, and Kuwabara–Kono (F = K(δ^{3/2} + 3/2 A δ^{1/2} δ'),
+//!   clamped at 0): the same units, times numbers that depend on one parameter per
+//!   impact, c = γ_n δ_s/(m* v) and c = (3/2) A v/δ_s, from the same equation with
+//!   the dashpots' powers of δ (`damped_hertz`);
+//! - Storåkers with `min_with_hertz` (Rojek 2016 eqs 16–20): the energy balance on the
+//!   loading branch min(C δ^{1+m/2}, K δ^{3/2}) gives δ_max and F_max, the loading time
+//!   is a quadrature, and unloading is Hertz through (δ_max, F_max): rebound and
+//!   unloading time in closed form, then the flight through the permanent set
+//!   (`StorakersContact::impact`);
 //! - Walton–Braun (Zhong eq 16): δ_max = v √(m*/k₁), F_max = k₁ δ_max,
 //!   e = √(k₁/k₂); the force lasts a quarter period on each branch,
 //!   (π/2)(√(m*/k₁) + √(m*/k₂)), and ends at the permanent set δ₀ = δ_max (1 − k₁/k₂),
@@ -25,7 +34,7 @@
 //!
 //! The contact duration is the time the overlap is positive (what the probe measures).
 
-use super::damped_hertz::unit_impact;
+use super::damped_hertz::{Dashpot, critical_fraction_c, unit_impact};
 use crate::contact::ContactLaw;
 use crate::contact::damping::{Damping, critical_damping};
 use crate::contact::normal::hertz::{hertz_contact_duration, hertz_force, hertz_max_overlap};
@@ -33,7 +42,7 @@ use crate::contact::normal::linear::LinearCollision;
 use crate::contact::normal::thornton::{
     Thornton, Unloading, thornton_1997_restitution, yield_velocity,
 };
-use crate::contact::normal::{Linear, NormalLaw, WaltonBraun};
+use crate::contact::normal::{KuwabaraKono, Linear, NormalLaw, Storakers, WaltonBraun};
 use crate::material::PairProperties;
 use std::f64::consts::PI;
 
@@ -140,17 +149,52 @@ pub fn closed_form(
                 restitution,
             })
         }
+        (NormalLaw::Hertz(_), Some(Damping::Constant(d))) => {
+            let k = 4.0 / 3.0 * pair.effective_modulus? * r.sqrt();
+            let overlap = (m * v * v / k).powf(0.4);
+            damped_hertz(
+                Dashpot::Constant,
+                d.gamma_n * overlap / (m * v),
+                k,
+                overlap,
+                v,
+            )
+        }
         (NormalLaw::Hertz(_), Some(_)) => {
             let xi = hertz_dashpot_fraction(law)?;
             let k = 4.0 / 3.0 * pair.effective_modulus? * r.sqrt();
             let overlap = (m * v * v / k).powf(0.4);
-            let u = unit_impact(xi)?;
+            damped_hertz(
+                Dashpot::CriticalFraction,
+                critical_fraction_c(xi),
+                k,
+                overlap,
+                v,
+            )
+        }
+        (NormalLaw::KuwabaraKono(KuwabaraKono { dissipation_time }), None) => {
+            let k = 4.0 / 3.0 * pair.effective_modulus? * r.sqrt();
+            let overlap = (m * v * v / k).powf(0.4);
+            let c = 1.5 * dissipation_time * v / overlap;
+            damped_hertz(Dashpot::KuwabaraKono, c, k, overlap, v)
+        }
+        (
+            NormalLaw::Storakers(
+                law @ Storakers {
+                    min_with_hertz: true,
+                },
+            ),
+            None,
+        ) => {
+            pair.effective_modulus?;
+            pair.hollomon?;
+            let i = law.at(r, pair).impact(m, v)?;
             Some(Impact {
-                time_scale: u.duration * overlap / v,
-                duration: u.duration * overlap / v,
-                max_overlap: u.max_overlap * overlap,
-                max_force: u.max_force * k * overlap.powf(1.5),
-                restitution: u.restitution,
+                time_scale: i.duration,
+                duration: i.duration,
+                max_overlap: i.max_overlap,
+                max_force: i.max_force,
+                restitution: i.restitution,
             })
         }
         (
@@ -179,9 +223,22 @@ pub fn closed_form(
     }
 }
 
+/// The impact of a Hertz spring K δ^{3/2} and a dashpot of parameter `c`, from its
+/// unit impact in the units δ_s = `overlap`, δ_s/v and K δ_s^{3/2}.
+fn damped_hertz(dashpot: Dashpot, c: f64, k: f64, overlap: f64, v: f64) -> Option<Impact> {
+    let u = unit_impact(dashpot, c)?;
+    Some(Impact {
+        time_scale: u.duration * overlap / v,
+        duration: u.duration * overlap / v,
+        max_overlap: u.max_overlap * overlap,
+        max_force: u.max_force * k * overlap.powf(1.5),
+        restitution: u.restitution,
+    })
+}
+
 /// ξ of a Hertz law's dashpot ξ · 2√(m* k_n), whichever kind the scene wrote it as
-/// (`None`: no such dashpot; a constant γ_n makes the restitution depend on the speed,
-/// so it has no one-parameter form).
+/// (`None`: no such dashpot; a constant γ_n is not a fraction of critical: its
+/// parameter c = γ_n δ_s/(m* v) depends on the impact).
 pub fn hertz_dashpot_fraction(law: &ContactLaw) -> Option<f64> {
     match (law.normal, law.damping?) {
         (NormalLaw::Hertz(_), Damping::CriticalFraction(c)) => Some(c.xi),

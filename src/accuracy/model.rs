@@ -13,11 +13,11 @@
 
 use crate::contact::ContactLaw;
 use crate::contact::damping::Damping;
-use crate::contact::normal::NormalLaw;
 use crate::contact::normal::thornton::{Thornton, Unloading};
+use crate::contact::normal::{NormalLaw, Storakers};
 
 /// The largest Δt/t_c the model gives: the calibration's coarser steps are not yet
-/// on the power law.
+/// on the power law (some laws stop earlier: `calibration::largest_ratio`).
 pub const LARGEST_RATIO: f64 = 0.125;
 
 /// One law's error for one quantity.
@@ -49,7 +49,7 @@ impl ErrorModel {
         self.terms
             .iter()
             .map(|t| t.step_ratio(accuracy))
-            .fold(LARGEST_RATIO, f64::min)
+            .fold(super::calibration::largest_ratio(self.law), f64::min)
     }
 
     /// The predicted error of each quantity at Δt/t_c = `ratio`.
@@ -59,8 +59,8 @@ impl ErrorModel {
 }
 
 /// The model of the scene's law; `None` where the calibration has none (laws with
-/// no impact closed form, Hertz with a constant γ_n, cohesion). Friction does not enter:
-/// it does not change a head-on impact.
+/// no impact closed form, pure Storåkers, cohesion). Friction does not enter: it does
+/// not change a head-on impact.
 pub fn for_law(law: &ContactLaw) -> Option<&'static ErrorModel> {
     let name = match (law.normal, law.damping, law.cohesion) {
         (_, _, Some(_)) => return None,
@@ -70,6 +70,15 @@ pub fn for_law(law: &ContactLaw) -> Option<&'static ErrorModel> {
         }
         (NormalLaw::Hertz(_), None, None) => "hertz",
         (NormalLaw::WaltonBraun(_), None, None) => "walton_braun",
+        (NormalLaw::Hertz(_), Some(Damping::Constant(_)), None) => "hertz_constant_damped",
+        (NormalLaw::KuwabaraKono(_), None, None) => "kuwabara_kono",
+        (
+            NormalLaw::Storakers(Storakers {
+                min_with_hertz: true,
+            }),
+            None,
+            None,
+        ) => "storakers_min_hertz",
         (
             NormalLaw::Hertz(_),
             Some(

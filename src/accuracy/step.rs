@@ -9,12 +9,13 @@
 //! at a loose accuracy, stability and not accuracy sets it.
 
 use super::calibration::{
-    DAMPED_RESTITUTION_MIN, THORNTON_SPEED_RATIO_MAX, WALTON_BRAUN_RATIO_MAX, hertz_damped_xi_max,
+    DAMPED_RESTITUTION_MIN, STORAKERS_SPEED_RATIO_MAX, THORNTON_SPEED_RATIO_MAX,
+    WALTON_BRAUN_RATIO_MAX, hertz_damped_xi_max,
 };
 use super::impact::{closed_form, hertz_dashpot_fraction};
 use super::model::{ErrorModel, for_law};
 use crate::contact::normal::thornton::yield_velocity;
-use crate::contact::normal::{NormalLaw, WaltonBraun};
+use crate::contact::normal::{NormalLaw, Storakers, WaltonBraun};
 use crate::material::PairProperties;
 use crate::simulation::Simulation;
 
@@ -57,9 +58,17 @@ pub fn choose(
     critical: Option<f64>,
 ) -> Result<Choice, String> {
     let law = &sim.law;
+    if let NormalLaw::Storakers(Storakers {
+        min_with_hertz: false,
+    }) = law.normal
+    {
+        return Err(
+            "the storakers law without min_with_hertz has no error model: its impacts have closed forms, but below the speed at which the loading meets Hertz's curve its Hertz unloading returns more work than the loading took (the rebound exceeds the approach, up to sqrt(2 + m/2) times), and pressed contacts gain energy at any step (docs/accuracy-cost.md); set contact.normal.min_with_hertz, or give time_step.alpha or time_step.fixed".into(),
+        );
+    }
     let model = for_law(law).ok_or_else(|| {
         format!(
-            "the contact law ({}{}{}) has no error model: only linear (undamped, or with constant or critical_fraction damping), hertz (undamped, or with critical_fraction, liggghts_restitution or tsuji damping), walton_braun and thornton (unloading thornton_1997), without cohesion, are calibrated (docs/accuracy-cost.md); give time_step.alpha or time_step.fixed",
+            "the contact law ({}{}{}) has no error model: only linear (undamped, or with constant or critical_fraction damping), hertz (undamped, or with critical_fraction, liggghts_restitution, tsuji or constant damping), kuwabara_kono, walton_braun, thornton (unloading thornton_1997) and storakers with min_with_hertz, without cohesion, are calibrated (docs/accuracy-cost.md); give time_step.alpha or time_step.fixed",
             law.normal.name(),
             law.damping.map_or(String::new(), |d| format!(" + {} damping", d.name())),
             law.cohesion.map_or("", |_| " + cohesion"),
@@ -117,9 +126,24 @@ pub fn choose(
                     ));
                 }
             }
-            if model.law == "linear_damped" && i.restitution < DAMPED_RESTITUTION_MIN {
+            if let NormalLaw::Storakers(s) = law.normal {
+                let v_star = s.at(r, pair).hertz_crossing_speed(m).unwrap_or(f64::NAN);
+                // Written so that a NaN v* (no crossing) is refused too.
+                let calibrated = speed <= STORAKERS_SPEED_RATIO_MAX * v_star;
+                if !calibrated {
+                    return Err(format!(
+                        "the storakers impact of a body of radius {r:e} m at {speed:e} m/s is {:.1} times the speed at which its loading leaves Hertz's curve, above {STORAKERS_SPEED_RATIO_MAX}, the fastest the error model is calibrated for (docs/accuracy-cost.md); give time_step.alpha or time_step.fixed",
+                        speed / v_star
+                    ));
+                }
+            }
+            let damped = matches!(
+                model.law,
+                "linear_damped" | "hertz_constant_damped" | "kuwabara_kono"
+            );
+            if damped && i.restitution < DAMPED_RESTITUTION_MIN {
                 Err(format!(
-                    "the damping gives a restitution of {:.3} to a body of radius {r:e} m, below {DAMPED_RESTITUTION_MIN}, the strongest damping the error model is calibrated for (docs/accuracy-cost.md); give time_step.alpha or time_step.fixed",
+                    "the damping gives a restitution of {:.3} to a body of radius {r:e} m at {speed:e} m/s, below {DAMPED_RESTITUTION_MIN}, the strongest damping the error model is calibrated for (docs/accuracy-cost.md); give time_step.alpha or time_step.fixed",
                     i.restitution
                 ))
             } else {
@@ -147,6 +171,11 @@ pub fn choose(
                 Some((t, c)) if t > 0.0 && t.is_finite() => {
                     shortest = shortest.min(t);
                     shortest_contact = shortest_contact.min(c);
+                }
+                _ if matches!(model.law, "hertz_constant_damped" | "kuwabara_kono") => {
+                    return Err(format!(
+                        "the damping keeps a body of radius {r:e} m at {speed:e} m/s from rebounding (overdamped: below a restitution of {DAMPED_RESTITUTION_MIN}, the strongest damping the error model is calibrated for; docs/accuracy-cost.md); give time_step.alpha or time_step.fixed"
+                    ));
                 }
                 _ => {
                     return Err(format!(

@@ -121,6 +121,29 @@ impl Trial {
         Ok(self)
     }
 
+    /// This impact at the approach speed v/v* = `ratio` times the speed at which its
+    /// Storåkers loading leaves Hertz's curve (the scene's law must be `storakers`).
+    pub fn at_hertz_crossing_ratio(mut self, ratio: f64) -> Result<Trial> {
+        let s = scene::parse(
+            &self
+                .scene(json!({"fixed": 1e-15}), self.radius * 1e-3)
+                .to_string(),
+        )?;
+        let sim = scene::build(&s)?.sim;
+        let NormalLaw::Storakers(law) = sim.law.normal else {
+            return Err(TampError::Other(format!(
+                "{}: not a storakers law",
+                self.name
+            )));
+        };
+        let (m, r, pair) = self.effective(&sim);
+        let v_star = law.at(r, &pair).hertz_crossing_speed(m).ok_or_else(|| {
+            TampError::Other(format!("{}: no Hertz crossing (m >= 1)", self.name))
+        })?;
+        self.speed = ratio * v_star;
+        Ok(self)
+    }
+
     /// Effective mass and radius of the impact, and its pair's properties.
     fn effective(&self, sim: &crate::simulation::Simulation) -> (f64, f64, PairProperties) {
         let p = &sim.particles;

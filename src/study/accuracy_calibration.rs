@@ -4,11 +4,10 @@
 //! (`accuracy::impact`), and per law and quantity the fit error ≈ C (Δt/t_c)^p:
 //! p by least squares on log error against log Δt/t_c over Δt/t_c ≤ 1/16 (the
 //! asymptotic range), C the envelope max error/(Δt/t_c)^p over Δt/t_c ≤ 1/8, the
-//! largest step the model allows.
+//! largest step the model allows (1/16 for the laws of `calibration::largest_ratio`).
 
-use crate::accuracy::calibration::{TOUCH_PHASES, step_ratios, trials};
+use crate::accuracy::calibration::{TOUCH_PHASES, largest_ratio, step_ratios, trials};
 use crate::accuracy::impact::QUANTITIES;
-use crate::accuracy::model::LARGEST_RATIO;
 use crate::error::Result;
 use serde::{Deserialize, Serialize};
 use serde_json::json;
@@ -63,7 +62,16 @@ pub fn measure() -> Result<Vec<CalibrationRow>> {
         eprintln!("{:<20} t_c = {:.4e} s", trial.name, exact.duration);
         for &ratio in &step_ratios() {
             for &phase in &TOUCH_PHASES {
-                let o = trial.run(json!({"fixed": ratio * exact.time_scale}), phase)?;
+                let o = match trial.run(json!({"fixed": ratio * exact.time_scale}), phase) {
+                    Ok(o) => o,
+                    // Beyond the model's largest step a run may not even separate (a
+                    // strong constant γ_n holds the bodies at t_c/4): nothing to fit.
+                    Err(e) if ratio > largest_ratio(law) => {
+                        eprintln!("  skipped at dt/t_c = {ratio}, phase {phase}: {e}");
+                        continue;
+                    }
+                    Err(e) => return Err(e),
+                };
                 let errors = o.measured.relative_errors(&o.exact);
                 for (q, e) in QUANTITIES.iter().zip(errors) {
                     rows.push(CalibrationRow {
@@ -114,7 +122,7 @@ pub fn fits(rows: &[CalibrationRow]) -> Vec<Fit> {
             let p = (slope(&fitted).unwrap_or(2.0) * 1000.0).round() / 1000.0;
             let c = worst
                 .iter()
-                .filter(|w| w.0 <= LARGEST_RATIO && w.1 > ROUND_OFF)
+                .filter(|w| w.0 <= largest_ratio(&law) && w.1 > ROUND_OFF)
                 .map(|w| w.1 / w.0.powf(p))
                 .fold(ROUND_OFF, f64::max);
             let scale = 10f64.powi(3 - c.log10().floor() as i32);
@@ -173,7 +181,11 @@ Johnson's closed forms), a different integrator from tamp's. Fit per law
 and quantity, error ≈ C (Δt/t_c)^p: p by least squares on the worst error at each
 step over Δt/t_c ≤ 1/16, C the envelope (largest error/(Δt/t_c)^p over Δt/t_c ≤ 1/8), so
 the model bounds the calibration's errors; the model never takes a step above t_c/8
-(at t_c/4 the errors are 10–80 % and not yet on the power law). These constants are checked in as
+(at t_c/4 the errors are 10–80 % and not yet on the power law), and for Kuwabara–Kono and
+Hertz with a constant γ_n (below) none above t_c/16, over which their C is taken: at t_c/8
+Kuwabara–Kono's explicit dashpot at e = 0.1 is near its stability limit (runs rebound
+faster than they arrived), and at t_c/4 a strong constant γ_n can hold the bodies together
+(those runs are skipped; `accuracy::calibration::largest_ratio`). These constants are checked in as
 `accuracy::calibration::MODELS`; `time_step.accuracy = a` takes the largest
 Δt/t_c = min(1/8, min over the quantities of (a/C)^{1/p}); a damped linear contact
 with e < 0.1, or a damped Hertz one with ξ > 0.540 (beyond the calibration), is refused.
@@ -190,12 +202,51 @@ a velocity-Verlet integration at 40 000 steps per contact meets to its own
 discretisation error). t_c is that duration; impacts above 30 v_y are
 refused.
 
+Kuwabara–Kono (F = K(δ^{3/2} + 3/2 A δ^{1/2} δ'), clamped at 0) and Hertz with a constant
+γ_n are calibrated on the same steel pair at the A and γ_n whose impact rebounds at
+e = 0.9, 0.5 and 0.1 (Kuwabara–Kono: A = 0.12, 0.88 and 4.8 µs, c = 0.093, 0.70 and 3.8; γ_n = 0.50, 3.1 and
+7.5 N·s/m, c = 0.058, 0.36 and 0.87). Each is one equation per impact in the units of damped Hertz,
+x'' = −x^{3/2} − c x^q x' with c = (3/2) A v/δ_s, q = 1/2 and the force clamped at 0
+(the bodies stop pushing where it vanishes and coast apart through the rest of the
+overlap, which the duration includes), or c = γ_n δ_s/(m* v), q = 0 and no clamp (the
+force turns attractive before the overlap closes, as tamp's dashpot does); the same RK4
+solves them (halving its step moves no quantity by more than 1e-6 at c up to e ≈ 0.07;
+Kuwabara–Kono's restitution meets the first term of its series, 1 − e = C₁ c, C₁ =
+1.15344, to 2e-5; test `damped_hertz::tests`). Unlike ξ, c depends on the impact (the
+mass, radius, modulus and speed), so the restitution of the scene's shortest impact at
+its characteristic velocity is what must stay ≥ 0.1: below it, or where the bodies do not
+part (a constant γ_n above c ≈ 1.05), an explicit accuracy is refused.
+
+Storåkers with `min_with_hertz` is calibrated on two 10 µm NiAl spheres (Rojek 2016
+Table 2: E = 183 GPa, ν = 0.318, ρ = 5910 kg/m³, σ_Y = 800 MPa, m = 0.2) at v/v* = 0.5,
+1.5, 3 and 10, v* the approach speed at which the loading reaches δ* = (C/K)^{2/(1−m)},
+where the plastic force C δ^{1+m/2} meets Hertz's K δ^{3/2} (½ m* v*² = 2/5 K δ*^{5/2};
+v* = 14.3 m/s for equal NiAl spheres of any size, δ* = 0.032 R*). Below v* the impact is
+Hertz's; above, the reference is the law's own energy balance: δ_max where the work on
+min(C δ^{1+m/2}, K δ^{3/2}) reaches ½ m* v², F_max on that branch, the loading time
+∫ dδ/δ' by Simpson's rule, the Hertz unloading through (δ_max, F_max) (rebound from its
+stored energy, time by a second quadrature) and the flight through the permanent set
+(`StorakersContact::impact`; below v* it meets Johnson's duration to 1e-9). Impacts
+above 10 v* (δ_max ≈ 0.26 R*) are refused. Pure Storåkers is refused, although its
+impacts have the same closed forms: below about v* its virgin branch lies above Hertz's,
+the Hertz unloading through (δ_max, F_max) is softer than the loading and returns more
+work than the loading took (the rebound exceeds the approach: e = 1.06 at 0.3 v*, and
+e → √(2 + m/2) = 1.45 as v → 0; test `pure_storakers_rebounds_faster_than_it_arrives`),
+the contact opens with force left (a jump that makes the rebound first order in Δt), and
+pressed contacts gain energy at any step (the stable-α table below). An accuracy promise
+on its impacts would certify a law that creates energy in the scenes it is used for.
+
 | law | quantity | p | C | Δt/t_c at 1e-2 | 1e-3 | 1e-4 | 1e-5 |
 |---|---|---|---|---|---|---|---|
 ",
     );
     for f in fits(rows) {
-        let at = |a: f64| format!("{:.3e}", (a / f.c).powf(1.0 / f.p).min(LARGEST_RATIO));
+        let at = |a: f64| {
+            format!(
+                "{:.3e}",
+                (a / f.c).powf(1.0 / f.p).min(largest_ratio(&f.law))
+            )
+        };
         let _ = writeln!(
             s,
             "| {} | {} | {} | {:e} | {} | {} | {} | {} |",
@@ -220,15 +271,20 @@ refused.
          although its dashpot force ξ·2√(m* k_n)·δ' starts from 0 at touch: a dashpot \
          sees the half-step velocity v_{n+½} (src/integrate.rs), an O(Δt) lag, which is \
          first order whenever the damping force matters; the damped linear law has both \
-         causes.\n\n\
+         causes. The same holds for the laws calibrated since: Kuwabara–Kono's dashpot \
+         vanishes at touch (δ^{1/2}) yet it is first order (p = 1.06–1.23), for the \
+         half-step velocity; a constant γ_n jumps to γ_n v at touch (p = 0.97–1.27); \
+         Storåkers with `min_with_hertz` is undamped and continuous at touch, and second \
+         order (p = 1.92–2.06) through the kink where its loading leaves Hertz's curve.\n\n\
          **Laws without an error model** (an explicit `time_step.accuracy` is refused \
          with exit 2 naming `time_step.accuracy` and the law; a scene that states no \
-         step keeps α = 0.2 with a note): Hertz with a constant γ_n (its restitution \
-         depends on the speed, so it has no one-parameter reference), `hysteretic`, \
-         `kuwabara_kono`, `storakers`, `thornton` with `unloading: liggghts` (its \
+         step keeps α = 0.2 with a note): `hysteretic`, `storakers` without \
+         `min_with_hertz` (above), `thornton` with `unloading: liggghts` (its \
          first-order increments converge to another closed form), `plastic_cylinder`, \
-         any law with cohesion (`van_der_waals`), Walton–Braun with k₂ > 10 k₁, and \
-         `thornton` impacts faster than 30 v_y.\n\n\
+         any law with cohesion (`van_der_waals`); and beyond their calibration: \
+         Walton–Braun with k₂ > 10 k₁, `thornton` impacts faster than 30 v_y, \
+         `storakers` with `min_with_hertz` faster than 10 v*, and damped linear, \
+         Kuwabara–Kono and constant-γ_n Hertz impacts that rebound below e = 0.1.\n\n\
          **Why `sliding_oblique_impact` does not reach 1e-4.** With \
          `tamp study accuracy-cost --scales 1,0.5,0.25,0.125,0.0625 --case \
          sliding_oblique_impact`, six of its seven tangential laws stay within 3.5e-14 of \

@@ -5,7 +5,7 @@
 //!
 //! A (s) is the dissipation time of the material pair. The damping term grows with
 //! the contact area, which makes the coefficient of restitution fall with impact
-//! speed as 1 − e ≈ C₁ A (k̃/m*)^{2/5} v^{1/5}, C₁ = 1.15344 (Schwager & Pöschel 2008,
+//! speed as 1 − e ≈ C₁ (3/2) A (k̃/m*)^{2/5} v^{1/5}, C₁ = 1.15344 (Schwager & Pöschel 2008,
 //! Phys. Rev. E 78, 051304). The force is clamped at zero: the surfaces part when
 //! the total force vanishes, before δ returns to zero, so the law never attracts.
 //! Zhong's eq 15 gives A from the viscosities with (3η₂ − η₁) not squared, which

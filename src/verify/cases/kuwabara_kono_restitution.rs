@@ -1,7 +1,7 @@
 //! Viscoelastic (Kuwabara–Kono / Brilliantov, Zhong 2009 eq 15) head-on collisions
 //! of two equal steel spheres at impact speeds from 1 mm/s to 0.1 m/s. Theory
 //! (Brilliantov et al. 1996; Schwager & Pöschel 2008, PRE 78 051304):
-//!   1 − e = C₁ A α^{2/5} v^{1/5} + O(v^{2/5}),  α = k̃/m*,  C₁ = 1.15344
+//!   1 − e = C₁ (3/2) A α^{2/5} v^{1/5} + O(v^{2/5}),  α = k̃/m*,  C₁ = 1.15344
 //! Quantities: the exponent of a least-squares fit of ln(1 − e) against ln v (1/5),
 //! C₁ from the slowest impact, and the count of speed steps at which e fails to
 //! fall (0).
