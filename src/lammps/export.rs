@@ -963,7 +963,7 @@ mod tests {
         assert_eq!(geometry(1), [(String::new(), "xplane NULL 2e-2".into())]);
         assert_eq!(
             pair_model(&s).unwrap(),
-            "hertz/material {E} 0e0 {nu} damping velocity tangential mindlin_rescale/force -1 0 {mu}"
+            "hertz/material {E} 0e0 {nu} damping velocity tangential mindlin_rescale/force -1 0e0 {mu}"
         );
     }
 
