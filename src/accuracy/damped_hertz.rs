@@ -31,8 +31,9 @@
 //! Hertz closed forms, and Kuwabara–Kono's restitution meets the series' first term).
 
 /// RK4 steps per unit of τ (an undamped contact lasts τ = 3.2): halving the step moves
-/// the quantities by at most 2e-8 (the test `converged`; the x^{1/4} at touch and release
-/// keeps RK4 from its fourth order there), far below the 1e-4 the setting is checked at.
+/// the quantities by less than 1e-6 (the test `converged`; the measured largest is in
+/// docs/accuracy-cost.md; the x^q at touch and release keeps RK4 from its fourth order
+/// there), far below the 1e-4 the setting is checked at.
 const STEPS_PER_UNIT: f64 = 20_000.0;
 
 /// The dimensionless impact: largest x, largest |x^{3/2} + c x^q x'| (the force over
