@@ -157,6 +157,17 @@ impl ContactLaw {
     /// Run `visitor` with the scene's laws as types: every combination of the roles
     /// is monomorphised, so the visitor's code holds no `match` on a law.
     pub fn visit<V: LawVisitor>(&self, visitor: V) -> V::Output {
+        // The library's unit-test build would compile every combination a second time
+        // (docs/performance.md, "Compile time"): tests that build or run a simulation
+        // are integration tests, which link the library built once.
+        #[cfg(test)]
+        {
+            let _ = visitor;
+            panic!(
+                "a unit test reached ContactLaw::visit: tests that build a simulation belong in tests/ (docs/performance.md)"
+            );
+        }
+        #[cfg(not(test))]
         each_normal!(self.normal, n => self.with_damping(n, visitor))
     }
 

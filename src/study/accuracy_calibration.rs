@@ -311,34 +311,6 @@ on its impacts would certify a law that creates energy in the scenes it is used 
 mod tests {
     use super::*;
 
-    /// The constants checked in are the ones the calibration measures now: a change
-    /// of the integrator or of a law that moves them fails here until the study is
-    /// rerun and its table and `MODELS` updated.
-    #[test]
-    fn checked_in_models_are_the_calibration() {
-        use crate::accuracy::calibration::MODELS;
-        let fitted = fits(&measure().unwrap());
-        for f in &fitted {
-            let model = MODELS.iter().find(|m| m.law == f.law).unwrap();
-            let t = model
-                .terms
-                .iter()
-                .find(|t| t.quantity == f.quantity)
-                .unwrap();
-            assert!(
-                (t.p - f.p).abs() < 1e-12 && (t.c - f.c).abs() <= 1e-12 * f.c,
-                "{}/{}: checked in p = {}, C = {}; measured p = {}, C = {}",
-                f.law,
-                f.quantity,
-                t.p,
-                t.c,
-                f.p,
-                f.c
-            );
-        }
-        assert_eq!(fitted.len(), 4 * MODELS.len());
-    }
-
     #[test]
     fn fit_recovers_a_power_law() {
         let rows: Vec<CalibrationRow> = step_ratios()
