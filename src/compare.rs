@@ -8,8 +8,9 @@
 //! - or a LIGGGHTS/LAMMPS `dump custom` file, read as a trajectory.
 //!
 //! A run is a directory holding either or both files (`tamp run` writes them; a
-//! directory with only LIGGGHTS's `final.liggghts` or `dump.liggghts` is read as a
-//! trajectory), or one file of any of the three kinds.
+//! directory of an exported deck, with only `dump.liggghts` or `final.liggghts`
+//! (LIGGGHTS) or `dump.lammps` or `final.lammps` (LAMMPS), is read as a trajectory),
+//! or one file of any of the three kinds.
 //!
 //! Deviations, each against its tolerance:
 //! - a quantity: |a − b|/|b| (relative, the default) or |a − b| (absolute);
@@ -259,6 +260,15 @@ fn first_line(path: &Path) -> Result<String> {
     Ok(line.trim().to_string())
 }
 
+/// The dumps a deck of `tamp export-liggghts` or `export-lammps` writes, the
+/// trajectory first.
+const DECK_DUMPS: [&str; 4] = [
+    "dump.liggghts",
+    "final.liggghts",
+    "dump.lammps",
+    "final.lammps",
+];
+
 /// Load a run from a directory or a file (see the module comment).
 pub fn load(path: &Path) -> Result<Run> {
     let mut run = Run::default();
@@ -271,7 +281,8 @@ pub fn load(path: &Path) -> Result<Run> {
         if t.exists() {
             run.trajectory = read_trajectory(&t)?;
         } else {
-            for dump in ["dump.liggghts", "final.liggghts"] {
+            // The dump an exported deck writes every few steps, else its final state.
+            for dump in DECK_DUMPS {
                 if path.join(dump).exists() {
                     run.trajectory = dump_trajectory(&path.join(dump))?;
                     break;
@@ -281,7 +292,7 @@ pub fn load(path: &Path) -> Result<Run> {
         if run.quantities.is_empty() && run.trajectory.is_empty() {
             return Err(input_err(
                 path,
-                "holds none of quantities.csv, trajectory.csv, dump.liggghts, final.liggghts (docs/compare.md)",
+                "holds none of quantities.csv, trajectory.csv, dump.liggghts, final.liggghts, dump.lammps, final.lammps (docs/compare.md)",
             ));
         }
         return Ok(run);
