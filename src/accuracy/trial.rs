@@ -90,25 +90,26 @@ impl Trial {
         })
     }
 
-    /// The closed form of this impact (the step does not enter it).
-    pub fn exact(&self) -> Result<Impact> {
+    /// The impact built as a simulation (a tiny step and gap: only its bodies, law
+    /// and pair properties are read).
+    fn built(&self) -> Result<crate::simulation::Simulation> {
         let s = scene::parse(
             &self
                 .scene(json!({"fixed": 1e-15}), self.radius * 1e-3)
                 .to_string(),
         )?;
-        self.closed_form(&scene::build(&s)?.sim)
+        Ok(scene::build(&s)?.sim)
+    }
+
+    /// The closed form of this impact (the step does not enter it).
+    pub fn exact(&self) -> Result<Impact> {
+        self.closed_form(&self.built()?)
     }
 
     /// This impact at the approach speed v/v_y = `v_over_vy` times Thornton's yield
     /// velocity of its contact (the scene's law must be `thornton`).
     pub fn at_yield_ratio(mut self, v_over_vy: f64) -> Result<Trial> {
-        let s = scene::parse(
-            &self
-                .scene(json!({"fixed": 1e-15}), self.radius * 1e-3)
-                .to_string(),
-        )?;
-        let sim = scene::build(&s)?.sim;
+        let sim = self.built()?;
         let NormalLaw::Thornton(law) = sim.law.normal else {
             return Err(TampError::Other(format!(
                 "{}: not a thornton law",
@@ -124,12 +125,7 @@ impl Trial {
     /// This impact at the approach speed v/v* = `ratio` times the speed at which its
     /// Storåkers loading leaves Hertz's curve (the scene's law must be `storakers`).
     pub fn at_hertz_crossing_ratio(mut self, ratio: f64) -> Result<Trial> {
-        let s = scene::parse(
-            &self
-                .scene(json!({"fixed": 1e-15}), self.radius * 1e-3)
-                .to_string(),
-        )?;
-        let sim = scene::build(&s)?.sim;
+        let sim = self.built()?;
         let NormalLaw::Storakers(law) = sim.law.normal else {
             return Err(TampError::Other(format!(
                 "{}: not a storakers law",

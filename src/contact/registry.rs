@@ -85,6 +85,21 @@ pub fn sliding_input() -> TangentialInput {
     tangential_input(Vec3::new(0.6, 0.8, 0.0), 1e-5)
 }
 
+/// `sticking_input` and `sliding_input` with the normal dashpot's coefficient η_n,
+/// N·s/m, for the laws whose tangential dashpot scales with it (LAMMPS's).
+pub fn damped_inputs(eta: f64) -> (TangentialInput, TangentialInput) {
+    (
+        TangentialInput {
+            normal_damping: eta,
+            ..sticking_input()
+        },
+        TangentialInput {
+            normal_damping: eta,
+            ..sliding_input()
+        },
+    )
+}
+
 /// Coulomb's limit at the reference contact, opposing the slip: −μF_n v̂_t.
 pub fn sliding_force(input: &TangentialInput) -> Vec3 {
     -input.tangential_velocity.normalize() * (input.friction * input.normal_force)

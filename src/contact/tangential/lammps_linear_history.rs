@@ -64,14 +64,7 @@ impl TangentialModel for LammpsLinearHistory {
         };
         let tangential = TangentialLaw::LammpsLinearHistory(law);
         let eta = 2.0;
-        let stick = TangentialInput {
-            normal_damping: eta,
-            ..registry::sticking_input()
-        };
-        let slide = TangentialInput {
-            normal_damping: eta,
-            ..registry::sliding_input()
-        };
+        let (stick, slide) = registry::damped_inputs(eta);
         let v = stick.tangential_velocity;
         vec![
             TangentialExample {

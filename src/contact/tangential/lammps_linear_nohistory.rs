@@ -46,14 +46,7 @@ impl TangentialModel for LammpsLinearNohistory {
     /// The dashpot −x_γ,t η_n v_t below the cone; Coulomb's −μ|F_n| v̂_t above it.
     fn examples() -> Vec<TangentialExample> {
         let law = TangentialLaw::LammpsLinearNohistory(LammpsLinearNohistory { x_gamma_t: 0.5 });
-        let stick = TangentialInput {
-            normal_damping: 2.0,
-            ..registry::sticking_input()
-        };
-        let slide = TangentialInput {
-            normal_damping: 2.0,
-            ..registry::sliding_input()
-        };
+        let (stick, slide) = registry::damped_inputs(2.0);
         vec![
             // 0.5·2·0.01 = 0.01 N < μ F_n = 1.2 N.
             TangentialExample {

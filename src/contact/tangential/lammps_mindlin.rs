@@ -189,14 +189,7 @@ impl TangentialModel for LammpsMindlin {
             })
             .collect();
         let eta = 2.0;
-        let stick = TangentialInput {
-            normal_damping: eta,
-            ..registry::sticking_input()
-        };
-        let slide = TangentialInput {
-            normal_damping: eta,
-            ..registry::sliding_input()
-        };
+        let (stick, slide) = registry::damped_inputs(eta);
         let v = stick.tangential_velocity;
         for variant in Variant::ALL {
             let law = TangentialLaw::LammpsMindlin(LammpsMindlin {
