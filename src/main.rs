@@ -141,7 +141,7 @@ enum Command {
         tier: Tier,
         /// Only this peer's cases (repeatable; default: LIGGGHTS and LAMMPS).
         #[arg(long = "peer", value_enum)]
-        peers: Vec<tamp::liggghts::crosscheck::Peer>,
+        peers: Vec<tamp::verify::crosscheck::Peer>,
         /// Only these cases (repeatable; a named case runs whatever its tier).
         #[arg(long = "case")]
         cases: Vec<String>,
@@ -360,7 +360,7 @@ fn main() -> ExitCode {
             cases,
             report,
         } => {
-            tamp::liggghts::crosscheck::run_cli(live, tier, &peers, &cases, &report)
+            tamp::verify::crosscheck::run_cli(live, tier, &peers, &cases, &report)
         }
         Command::Study {
             study:

@@ -9,9 +9,9 @@ use crate::contact::normal::thornton::yield_velocity;
 use crate::error::{Result, TampError};
 use crate::material::PairProperties;
 use crate::material::{effective_mass, effective_radius};
+use crate::measure::collision::{binary_collision, plane_collision};
 use crate::particles::Vec3;
 use crate::scene;
-use crate::verify::cases::probe::{binary_collision, plane_collision};
 use serde_json::{Value, json};
 
 /// What hits what.

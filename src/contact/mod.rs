@@ -43,7 +43,7 @@ pub mod van_der_waals;
 
 use crate::material::PairProperties;
 use crate::particles::Vec3;
-use crate::{each_normal, each_tangential};
+use crate::each_tangential;
 use damping::Damping;
 use model::{
     CohesionModel, Composed, DampingModel, LawVisitor, NoCohesion, NoDamping, NoFriction,
@@ -168,9 +168,10 @@ impl ContactLaw {
             );
         }
         #[cfg(not(test))]
-        each_normal!(self.normal, n => self.with_damping(n, visitor))
+        crate::each_normal!(self.normal, n => self.with_damping(n, visitor))
     }
 
+    #[cfg_attr(test, allow(dead_code))]
     fn with_damping<N: NormalModel, V: LawVisitor>(&self, n: N, v: V) -> V::Output {
         // Validation refuses a damping role beside a law that dissipates by itself;
         // a constant condition, so the damped variants of such a law are not compiled.
@@ -196,6 +197,7 @@ impl ContactLaw {
         }
     }
 
+    #[cfg_attr(test, allow(dead_code))]
     fn with_tangential<N: NormalModel, D: DampingModel, V: LawVisitor>(
         &self,
         n: N,
@@ -208,6 +210,7 @@ impl ContactLaw {
         }
     }
 
+    #[cfg_attr(test, allow(dead_code))]
     fn with_cohesion<N: NormalModel, D: DampingModel, T: TangentialModel, V: LawVisitor>(
         &self,
         normal: N,

@@ -8,6 +8,7 @@
 //! present on one side only is an error of the case, never silently skipped.
 
 pub mod cases;
+pub mod crosscheck;
 pub mod parallel;
 pub mod report;
 

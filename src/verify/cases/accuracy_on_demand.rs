@@ -23,12 +23,12 @@
 //! Hollomon exponent and v/v* = 0.7, 2 and 7, against its energy balance and
 //! quadratures (`StorakersContact::impact`).
 
-use super::probe::plane_collision;
 use crate::accuracy::impact::QUANTITIES;
 use crate::accuracy::model::for_law;
 use crate::accuracy::trial::{Partner, Trial};
 use crate::contact::normal::linear::LinearCollision;
 use crate::error::Result;
+use crate::measure::collision::plane_collision;
 use crate::particles::Vec3;
 use crate::scene;
 use crate::verify::{CaseContext, Measured};

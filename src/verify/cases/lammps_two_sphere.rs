@@ -10,9 +10,10 @@
 //! interpolated overlap zero crossings, largest sampled overlap, full-step velocities.
 
 use super::liggghts_inputs::Mismatches;
-use super::probe::binary_collision;
+use super::probe::against_peer;
 use crate::contact::damping::{Damping, LiggghtsRestitution, Tsuji};
 use crate::error::{Result, TampError};
+use crate::measure::collision::binary_collision;
 use crate::scene::{self, Scene};
 use crate::verify::{CaseContext, Measured};
 use serde::Deserialize;
@@ -73,7 +74,8 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         s.contact.damping = Some(damping(&row.model, e)?);
         let mut sim = scene::build(&s)?.sim;
         let c = binary_collision(&mut sim, 0, 1, 1_000_000)?;
-        out.extend(c.against_peer(
+        out.extend(against_peer(
+            &c,
             &format!("{}_e{e}", row.model),
             [row.restitution, row.contact_duration, row.max_overlap],
         ));

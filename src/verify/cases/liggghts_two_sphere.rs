@@ -8,12 +8,13 @@
 //! interpolated overlap zero crossings, largest sampled overlap, full-step velocities.
 
 use super::liggghts_inputs::Mismatches;
-use super::probe::binary_collision;
+use super::probe::against_peer;
 use crate::contact::damping::liggghts::hooke_stiffness;
 use crate::contact::damping::{Damping, LiggghtsRestitution};
 use crate::contact::normal::{Linear, NormalLaw};
 use crate::error::Result;
 use crate::material::{Material, effective_mass, effective_modulus, effective_radius};
+use crate::measure::collision::binary_collision;
 use crate::measure::region::ball_volume;
 use crate::scene::{self, Scene};
 use crate::verify::{CaseContext, Measured};
@@ -98,7 +99,8 @@ fn run(ctx: &CaseContext, model: &str) -> Result<Vec<Measured>> {
         }));
         let mut sim = scene::build(&s)?.sim;
         let c = binary_collision(&mut sim, 0, 1, 1_000_000)?;
-        out.extend(c.against_peer(
+        out.extend(against_peer(
+            &c,
             &format!("e{}", row.restitution_in),
             [row.restitution, row.contact_duration, row.max_overlap],
         ));

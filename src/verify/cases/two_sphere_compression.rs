@@ -7,9 +7,9 @@
 //! Also writes the F–h and Δt_cr–h curves of all models (Rojek Figs 10, 12) to
 //! `two_sphere_compression.csv` and `.svg` in the report directory.
 
-use super::probe::{CompressionSample, compress_to_force};
 use super::rojek_models::{MODELS, material_constants, overlap_at_force, with_model};
 use crate::error::Result;
+use crate::measure::collision::{CompressionSample, compress_to_force};
 use crate::output::plot::{Panel, Series, write_svg};
 use crate::scene;
 use crate::verify::{CaseContext, Measured};

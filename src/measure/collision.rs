@@ -1,0 +1,181 @@
+//! A collision or a compression measured as it happens: `binary_collision` and
+//! `plane_collision` step the simulation they are given until the bodies have touched
+//! and separated, `compress_to_force` until a force is reached; the measurements
+//! themselves never change the state.
+
+use crate::error::{Result, TampError};
+use crate::particles::Vec3;
+use crate::simulation::Simulation;
+
+/// What one binary collision between particles `i` and `j` looked like.
+#[derive(Clone, Copy, Debug)]
+pub struct Collision {
+    /// From first touch to separation, each interpolated linearly between steps, s.
+    pub duration: f64,
+    /// Largest overlap, refined by a parabola through the three samples around the peak, m.
+    pub max_overlap: f64,
+    /// Largest sampled overlap (after each step, no refinement), m: LIGGGHTS dumps
+    /// are reduced the same way.
+    pub max_sampled_overlap: f64,
+    /// Largest contact force on the first body, refined like the overlap, N (the
+    /// probed bodies must feel no other force: no gravity, no third body).
+    pub max_force: f64,
+    /// Normal relative speed after / before.
+    pub restitution: f64,
+}
+
+/// Step `sim` until `i` and `j` have touched and separated (at most `max_steps`).
+pub fn binary_collision(
+    sim: &mut Simulation,
+    i: usize,
+    j: usize,
+    max_steps: u64,
+) -> Result<Collision> {
+    let n = (sim.particles.position[i] - sim.particles.position[j]).normalize();
+    collision(
+        sim,
+        max_steps,
+        &format!("particles {i} and {j}"),
+        |s| s.overlap(i, j),
+        |s| -(s.particles.velocity[i] - s.particles.velocity[j]).dot(&n),
+        |s| s.particles.force[i].norm(),
+    )
+}
+
+/// Step `sim` until particle `i` has touched and left the fixed plane through `point`
+/// with unit `normal` (at most `max_steps`); the overlap is R_i − (x_i − point)·n.
+pub fn plane_collision(
+    sim: &mut Simulation,
+    i: usize,
+    point: Vec3,
+    normal: Vec3,
+    max_steps: u64,
+) -> Result<Collision> {
+    collision(
+        sim,
+        max_steps,
+        &format!("particle {i} and the plane"),
+        |s| s.particles.radius[i] - (s.particles.position[i] - point).dot(&normal),
+        |s| -s.particles.velocity[i].dot(&normal),
+        |s| s.particles.force[i].norm(),
+    )
+}
+
+/// One collision seen through its overlap and normal approach speed.
+fn collision(
+    sim: &mut Simulation,
+    max_steps: u64,
+    bodies: &str,
+    overlap: impl Fn(&Simulation) -> f64,
+    approach: impl Fn(&Simulation) -> f64,
+    force: impl Fn(&Simulation) -> f64,
+) -> Result<Collision> {
+    let v_before = approach(sim);
+    let dt = sim.dt;
+    let mut prev = overlap(sim);
+    let (mut start, mut end) = (None, None);
+    let mut samples: Vec<f64> = Vec::new();
+    let mut forces: Vec<f64> = Vec::new();
+    for _ in 0..max_steps {
+        sim.step()?;
+        let now = overlap(sim);
+        if start.is_none() && prev <= 0.0 && now > 0.0 {
+            start = Some(sim.time - dt + dt * (-prev) / (now - prev));
+        }
+        if start.is_some() {
+            samples.push(now);
+            forces.push(force(sim));
+        }
+        if start.is_some() && prev > 0.0 && now <= 0.0 {
+            end = Some(sim.time - dt + dt * prev / (prev - now));
+            break;
+        }
+        prev = now;
+    }
+    let (Some(start), Some(end)) = (start, end) else {
+        return Err(TampError::Other(format!(
+            "{bodies} did not complete a collision in {max_steps} steps"
+        )));
+    };
+    let (k, max_overlap) = refined_peak(&samples);
+    // The last sample is after separation (no force): it stays out of the peak.
+    let (_, max_force) = refined_peak(&forces[..forces.len().saturating_sub(1).max(1)]);
+    Ok(Collision {
+        duration: end - start,
+        max_overlap,
+        max_sampled_overlap: samples[k],
+        max_force,
+        restitution: -approach(sim) / v_before,
+    })
+}
+
+/// The largest sample and its index; the value is refined by the parabola through it
+/// and its two neighbours when it is an interior maximum.
+fn refined_peak(samples: &[f64]) -> (usize, f64) {
+    let k = samples
+        .iter()
+        .enumerate()
+        .max_by(|a, b| a.1.total_cmp(b.1))
+        .map(|(k, _)| k)
+        .unwrap_or(0);
+    let peak = if k > 0 && k + 1 < samples.len() {
+        let (a, b, c) = (samples[k - 1], samples[k], samples[k + 1]);
+        let curvature = a - 2.0 * b + c;
+        if curvature < 0.0 {
+            b - 0.125 * (a - c).powi(2) / curvature
+        } else {
+            b
+        }
+    } else {
+        samples[k]
+    };
+    (k, peak)
+}
+
+/// One state of a displacement-driven compression.
+#[derive(Clone, Copy, Debug)]
+pub struct CompressionSample {
+    /// Overlap of the watched contact, m.
+    pub overlap: f64,
+    /// Force on the watched particle, N.
+    pub force: f64,
+    /// Rojek eqs 27–29 at this state (no safety factor), s.
+    pub critical_time_step: Option<f64>,
+}
+
+/// Step a displacement-driven `sim` until the force on particle `i` reaches
+/// `target`. Returns the overlap of contact (i, j) at `target`, interpolated
+/// linearly between the two steps that bracket it, and the states of every
+/// `every`-th step in contact (plus the last) for curves.
+pub fn compress_to_force(
+    sim: &mut Simulation,
+    i: usize,
+    j: usize,
+    target: f64,
+    max_steps: u64,
+    every: u64,
+) -> Result<(f64, Vec<CompressionSample>)> {
+    let sample = |s: &Simulation| CompressionSample {
+        overlap: s.overlap(i, j),
+        force: s.particles.force[i].norm(),
+        critical_time_step: s.critical_time_step(None),
+    };
+    let mut curve = Vec::new();
+    let mut prev = (sim.overlap(i, j), sim.particles.force[i].norm());
+    for step in 0..max_steps {
+        sim.step()?;
+        let now = (sim.overlap(i, j), sim.particles.force[i].norm());
+        if step % every == 0 && now.0 > 0.0 {
+            curve.push(sample(sim));
+        }
+        if prev.1 < target && now.1 >= target {
+            curve.push(sample(sim));
+            let w = (target - prev.1) / (now.1 - prev.1);
+            return Ok((prev.0 + w * (now.0 - prev.0), curve));
+        }
+        prev = now;
+    }
+    Err(TampError::Other(format!(
+        "the force on particle {i} never reached {target:e} N in {max_steps} steps"
+    )))
+}
