@@ -41,9 +41,9 @@ pub mod states;
 pub mod tangential;
 pub mod van_der_waals;
 
+use crate::each_tangential;
 use crate::material::PairProperties;
 use crate::particles::Vec3;
-use crate::each_tangential;
 use damping::Damping;
 use model::{
     CohesionModel, Composed, DampingModel, LawVisitor, NoCohesion, NoDamping, NoFriction,
