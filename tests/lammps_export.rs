@@ -244,3 +244,37 @@ fn servo_pressed_and_moving_box_walls_are_refused_at_their_motion() {
         assert_eq!(paths, ["walls[0].motion"], "{wall}");
     }
 }
+
+/// Deposited particles are in the deck's data file like placed ones, so their material
+/// counts in the rules that compare particle materials (the wall's one E and ν, and the
+/// explicit pair_coeff lines of friction pairs).
+#[test]
+fn deposited_materials_count_in_the_material_rules() {
+    let s = scene::parse(
+        r#"{"name": "t", "seed": 1,
+          "materials": [{"name": "glass", "density": 2500, "youngs_modulus": 1e7, "poisson_ratio": 0.25},
+                        {"name": "soft", "density": 2500, "youngs_modulus": 1e6, "poisson_ratio": 0.25}],
+          "contact": {"normal": {"law": "hertz"},
+                      "tangential": {"law": "lammps_mindlin", "variant": "mindlin", "friction": 0.5,
+                                     "friction_pairs": [{"materials": ["glass", "soft"], "friction": 0.2}]},
+                      "lever_arm": "lammps"},
+          "particles": [{"position": [0.005, 0.005, 0.01], "radius": 0.0005, "material": "glass"}],
+          "deposit": [{"count": 20, "material": "soft", "radius": 0.0005,
+                       "footprint": [[0, 0], [0.01, 0.01]], "floor": 0.0}],
+          "walls": [{"name": "floor", "material": "glass",
+                     "shape": {"kind": "plane", "point": [0, 0, 0], "normal": [0, 0, 1]}}],
+          "periodic": {"x": [0, 0.01], "y": [0, 0.01]},
+          "rotation": {}, "gravity": [0, 0, -9.81],
+          "time_step": {"fixed": 1e-6}, "run": {"steps": 10}}"#,
+    )
+    .expect("a valid scene");
+    let paths: Vec<String> = refusals(&s).into_iter().map(|(p, _)| p).collect();
+    assert!(
+        paths.contains(&"walls[0].material".to_string()),
+        "{paths:?}"
+    );
+    assert!(
+        paths.contains(&"contact.tangential.friction_pairs".to_string()),
+        "{paths:?}"
+    );
+}

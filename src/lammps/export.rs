@@ -203,14 +203,10 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
                 m.youngs_modulus == wm.youngs_modulus && m.poisson_ratio == wm.poisson_ratio
             })
         };
-        let used = |name: &str| {
-            scene.particles.iter().any(|p| p.material == name)
-                || scene.insert.iter().any(|i| i.material == name)
-        };
         if !scene
             .materials
             .iter()
-            .filter(|m| used(&m.name))
+            .filter(|m| made_of(scene, &m.name))
             .all(|m| same(&m))
         {
             refuse(
@@ -228,10 +224,7 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
         let used: Vec<_> = scene
             .materials
             .iter()
-            .filter(|m| {
-                scene.particles.iter().any(|p| p.material == m.name)
-                    || scene.insert.iter().any(|i| i.material == m.name)
-            })
+            .filter(|m| made_of(scene, &m.name))
             .collect();
         if let Some((a, b)) = used.iter().enumerate().find_map(|(k, a)| {
             used[k + 1..]
@@ -259,6 +252,14 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
         );
     }
     out
+}
+
+/// Whether any particle of the scene is of material `name`: placed, inserted or
+/// deposited (the deck's data file holds them all).
+fn made_of(scene: &Scene, name: &str) -> bool {
+    scene.particles.iter().any(|p| p.material == name)
+        || scene.insert.iter().any(|i| i.material == name)
+        || scene.deposit.iter().any(|d| d.material == name)
 }
 
 /// The `fix wall/gran` geometries of a fixed wall, one fix each, as (fix-id suffix,
