@@ -669,12 +669,8 @@ pub fn export(
     // A cylinder moving along its axis at constant velocity keeps its ends closed
     // only if the closing faces stay between them over the run.
     let duration = built.steps as f64 * sim.dt;
-    let periodic_axes = scene
-        .periodic
-        .clone()
-        .unwrap_or_default()
-        .axes()
-        .map(|a| a.is_some());
+    let periodic = scene.periodic.clone().unwrap_or_default().axes();
+    let periodic_axes = periodic.map(|a| a.is_some());
     let travelling = scene.walls.iter().enumerate().flat_map(|(k, w)| {
         let travel = match (&w.shape, &w.motion) {
             (ShapeSpec::Cylinder { axis, .. }, MotionSpec::Velocity { velocity }) => {
@@ -704,7 +700,6 @@ pub fn export(
 
     // Box: periodic axes exactly; the others shrink-wrap with a minimum (`m`) around
     // the particles' bounding box and a margin.
-    let periodic = scene.periodic.clone().unwrap_or_default().axes();
     let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
     for (x, r) in p.position.iter().zip(&p.radius) {
         for a in 0..3 {
@@ -864,9 +859,7 @@ pub fn export(
             }
             continue;
         }
-        for (suffix, geometry) in
-            wall_fixes(w, periodic.map(|a| a.is_some())).expect("refusals checked the wall")
-        {
+        for (suffix, geometry) in wall_fixes(w, periodic_axes).expect("refusals checked the wall") {
             for (id, group, mu) in &groups {
                 let _ = writeln!(
                     deck,
