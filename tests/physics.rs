@@ -115,3 +115,40 @@ fn lammps_tangential_dashpots_count_in_the_critical_step() {
     );
     assert!(damped_tangential < undamped_tangential / 2.5);
 }
+
+/// The damping ratio of LAMMPS's mass-scaled dashpots in the critical step
+/// (docs/models/damping.md): `mass_velocity` c = η_n0 m, `viscoelastic` c = η_n0 m R
+/// (the particle's radius bounding the contact radius) for a free sphere. With η_n0
+/// chosen so that c equals the `constant` dashpot 0.1 N·s/m, all three give the same
+/// estimate: Rojek eq 28 with ξ = c/(2√(k m)) on the stiffest mode (the tangential
+/// one, L k_t = 3.5e4 N/m, as in the test above).
+#[test]
+fn mass_scaled_dashpots_count_in_the_critical_step() {
+    let m = 2500.0 * 4.0 / 3.0 * std::f64::consts::PI * 1e-9;
+    let estimate = |damping: serde_json::Value| {
+        build(json!({
+            "materials": [{"name": "m", "density": 2500, "youngs_modulus": 1e7, "poisson_ratio": 0.3}],
+            "contact": {
+                "normal": {"law": "linear", "stiffness": 1e4},
+                "damping": damping,
+                "tangential": {"law": "lammps_linear_history", "stiffness": 1e4, "x_gamma_t": 0.0, "friction": 0.3},
+                "lever_arm": "lammps"
+            },
+            "particles": [{"position": [0, 0, 0], "radius": 0.001, "material": "m"}],
+            "rotation": {},
+            "time_step": {"alpha": 1.0}, "run": {"steps": 1}
+        }))
+        .dt_estimate
+        .expect("a linear law has a stiffness")
+    };
+    let k = 3.5 * 1e4;
+    let xi = 0.1 / (2.0 * (k * m).sqrt());
+    let eq_28 = 2.0 / (k / m).sqrt() * ((1.0 + xi * xi).sqrt() - xi);
+    for damping in [
+        json!({"kind": "constant", "gamma_n": 0.1}),
+        json!({"kind": "mass_velocity", "eta_n0": 0.1 / m}),
+        json!({"kind": "viscoelastic", "eta_n0": 0.1 / (m * 0.001)}),
+    ] {
+        approx::assert_relative_eq!(estimate(damping.clone()), eq_28, max_relative = 1e-12);
+    }
+}

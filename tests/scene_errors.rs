@@ -228,6 +228,29 @@ fn accuracy_refuses_the_new_laws_beyond_their_calibration() {
     }
 }
 
+/// LAMMPS's mass-scaled dashpots: a negative η_n0 is named by its path; `viscoelastic`
+/// has no error model (its c_n grows as √δ without Kuwabara–Kono's clamp), while
+/// `mass_velocity`, a constant γ_n = η_n0 m* per impact, has the constant dashpot's.
+#[test]
+fn mass_scaled_dashpots_are_checked() {
+    let mut s = base();
+    s["contact"] =
+        json!({"normal": {"law": "hertz"}, "damping": {"kind": "viscoelastic", "eta_n0": -1.0}});
+    expect_input_error(s, &["contact.damping.eta_n0", "must be >= 0"]);
+    let mut s = base();
+    s["contact"] =
+        json!({"normal": {"law": "hertz"}, "damping": {"kind": "viscoelastic", "eta_n0": 1e8}});
+    s["time_step"] = json!({"accuracy": 1e-3, "characteristic_velocity": 1.0});
+    expect_input_error(s, &["time_step.accuracy", "has no error model"]);
+    let mut s = base();
+    s["contact"] =
+        json!({"normal": {"law": "hertz"}, "damping": {"kind": "mass_velocity", "eta_n0": 10.0}});
+    s["time_step"] = json!({"accuracy": 1e-3, "characteristic_velocity": 1.0});
+    s["run"] = json!({"steps": 1});
+    let (code, stderr) = run_text(&s.to_string());
+    assert_eq!(code, 0, "{stderr}");
+}
+
 #[test]
 fn hertz_accuracy_without_characteristic_velocity_states_its_step() {
     let mut s = base();

@@ -105,6 +105,7 @@ pub fn closed_form(
             let gamma = match damping {
                 None => 0.0,
                 Some(Damping::Constant(c)) => c.gamma_n,
+                Some(Damping::MassVelocity(c)) => c.eta_n0 * m,
                 Some(Damping::CriticalFraction(c)) => c.xi * critical_damping(m, k),
                 Some(_) => return None,
             };
@@ -149,12 +150,17 @@ pub fn closed_form(
                 restitution,
             })
         }
-        (NormalLaw::Hertz(_), Some(Damping::Constant(d))) => {
+        (NormalLaw::Hertz(_), Some(d @ (Damping::Constant(_) | Damping::MassVelocity(_)))) => {
+            let gamma_n = match d {
+                Damping::MassVelocity(d) => d.eta_n0 * m,
+                Damping::Constant(d) => d.gamma_n,
+                _ => unreachable!("matched above"),
+            };
             let k = 4.0 / 3.0 * pair.effective_modulus? * r.sqrt();
             let overlap = (m * v * v / k).powf(0.4);
             damped_hertz(
                 Dashpot::Constant,
-                d.gamma_n * overlap / (m * v),
+                gamma_n * overlap / (m * v),
                 k,
                 overlap,
                 v,

@@ -65,12 +65,17 @@ pub fn for_law(law: &ContactLaw) -> Option<&'static ErrorModel> {
     let name = match (law.normal, law.damping, law.cohesion) {
         (_, _, Some(_)) => return None,
         (NormalLaw::Linear(_), None, None) => "linear",
-        (NormalLaw::Linear(_), Some(Damping::Constant(_) | Damping::CriticalFraction(_)), None) => {
-            "linear_damped"
-        }
+        (
+            NormalLaw::Linear(_),
+            Some(Damping::Constant(_) | Damping::MassVelocity(_) | Damping::CriticalFraction(_)),
+            None,
+        ) => "linear_damped",
         (NormalLaw::Hertz(_), None, None) => "hertz",
         (NormalLaw::WaltonBraun(_), None, None) => "walton_braun",
-        (NormalLaw::Hertz(_), Some(Damping::Constant(_)), None) => "hertz_constant_damped",
+        // η_n0·m* is one constant γ_n for a given impact.
+        (NormalLaw::Hertz(_), Some(Damping::Constant(_) | Damping::MassVelocity(_)), None) => {
+            "hertz_constant_damped"
+        }
         (NormalLaw::KuwabaraKono(_), None, None) => "kuwabara_kono",
         (
             NormalLaw::Storakers(Storakers {

@@ -181,7 +181,9 @@ impl ContactLaw {
         match self.damping {
             None => self.with_tangential(n, NoDamping, v),
             Some(Damping::CriticalFraction(d)) => self.with_tangential(n, d, v),
-            Some(Damping::Constant(d)) => self.with_tangential(n, d, v),
+            Some(
+                d @ (Damping::Constant(_) | Damping::MassVelocity(_) | Damping::Viscoelastic(_)),
+            ) => self.with_tangential(n, d.viscous().expect("a viscous kind"), v),
             Some(Damping::LiggghtsRestitution(d)) => {
                 let d = d
                     .with(&self.normal)

@@ -288,9 +288,17 @@ pub trait DampingModel: Copy + Debug {
     fn name(&self) -> &'static str;
     /// The rules of its own parameters; `path` is where the scene holds them.
     fn check(&self, _path: &str, _roles: Roles, _errors: &mut Errors) {}
-    fn coefficient(&self, effective_mass: f64, stiffness: f64) -> f64;
-    /// Damping ratio ξ of a contact with this mass and stiffness (Rojek eq 28).
-    fn ratio(&self, effective_mass: f64, stiffness: f64) -> f64;
+    /// c_n of a contact with this effective mass and normal tangent stiffness;
+    /// `contact_radius` gives a = √(δR*), evaluated only by the forms that need it.
+    fn coefficient(
+        &self,
+        effective_mass: f64,
+        stiffness: f64,
+        contact_radius: impl FnOnce() -> f64,
+    ) -> f64;
+    /// Damping ratio ξ of a contact with this mass, stiffness and contact radius
+    /// (Rojek eq 28).
+    fn ratio(&self, effective_mass: f64, stiffness: f64, contact_radius: f64) -> f64;
 }
 
 /// No normal dashpot.
@@ -303,10 +311,10 @@ impl DampingModel for NoDamping {
         "none"
     }
     #[inline(always)]
-    fn coefficient(&self, _: f64, _: f64) -> f64 {
+    fn coefficient(&self, _: f64, _: f64, _: impl FnOnce() -> f64) -> f64 {
         0.0
     }
-    fn ratio(&self, _: f64, _: f64) -> f64 {
+    fn ratio(&self, _: f64, _: f64, _: f64) -> f64 {
         0.0
     }
 }
@@ -513,7 +521,9 @@ impl<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel> Comp
             force.normal = elastic.force;
             let damping = if D::ACTIVE {
                 self.damping
-                    .coefficient(g.effective_mass, elastic.stiffness)
+                    .coefficient(g.effective_mass, elastic.stiffness, || {
+                        (g.overlap * g.effective_radius).sqrt()
+                    })
             } else {
                 0.0
             };

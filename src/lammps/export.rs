@@ -925,6 +925,14 @@ mod tests {
                 r#"{"kind": "constant", "gamma_n": 2.5}"#,
                 "hertz/material {E} 2.5e0 {nu} damping velocity tangential linear_nohistory 0 0",
             ),
+            (
+                r#"{"kind": "mass_velocity", "eta_n0": 5e4}"#,
+                "hertz/material {E} 5e4 {nu} damping mass_velocity tangential linear_nohistory 0 0",
+            ),
+            (
+                r#"{"kind": "viscoelastic", "eta_n0": 1e9}"#,
+                "hertz/material {E} 1e9 {nu} damping viscoelastic tangential linear_nohistory 0 0",
+            ),
         ] {
             let s = two_spheres(
                 &format!(r#"{{"normal": {{"law": "hertz"}}, "damping": {damping}}}"#),

@@ -86,6 +86,15 @@ fn restitution(scene: &Scene) -> std::result::Result<f64, (String, String)> {
             restitution_from_beta(beta)
         }
         Some(Damping::Constant(_)) => unreachable!("handled by the caller"),
+        Some(d @ (Damping::MassVelocity(_) | Damping::Viscoelastic(_))) => {
+            return Err((
+                "contact.damping.kind".into(),
+                format!(
+                    "LAMMPS's {} has no LIGGGHTS 3.8 model (its dashpot is not a fraction of critical)",
+                    d.name()
+                ),
+            ));
+        }
         Some(Damping::Tsuji(t)) => {
             let xi = t.with(&scene.contact.normal).map(|d| d.xi);
             return Err((
@@ -830,6 +839,25 @@ mod tests {
             assert!(
                 (r - on_profile).abs() < 1e-12,
                 "vertex {v:?} is off the cone"
+            );
+        }
+    }
+
+    #[test]
+    fn lammps_mass_scaled_dashpots_are_refused() {
+        for kind in ["mass_velocity", "viscoelastic"] {
+            let scene = crate::scene::parse(&format!(
+                r#"{{"name": "t", "materials": [{{"name": "steel", "density": 7800, "youngs_modulus": 2e11, "poisson_ratio": 0.3}}],
+                  "contact": {{"normal": {{"law": "hertz"}}, "damping": {{"kind": "{kind}", "eta_n0": 1e4}}}},
+                  "particles": [{{"position": [0, 0, 0], "radius": 0.001, "material": "steel"}}],
+                  "time_step": {{"fixed": 1e-9}}, "run": {{"duration": 1e-6}}}}"#
+            ))
+            .expect("a valid scene");
+            let list = refusals(&scene);
+            assert!(
+                list.iter()
+                    .any(|(path, why)| path == "contact.damping.kind" && why.contains(kind)),
+                "{list:?}"
             );
         }
     }

@@ -64,9 +64,12 @@ impl Simulation {
         } else {
             0.0
         };
-        let dashpot = |effective_mass: f64, k_n: f64| {
+        let dashpot = |effective_mass: f64, k_n: f64, contact_radius: f64| {
             if x_gamma_t > 0.0 {
-                x_gamma_t * law.damping.coefficient(effective_mass, k_n)
+                x_gamma_t
+                    * law
+                        .damping
+                        .coefficient(effective_mass, k_n, || contact_radius)
             } else {
                 0.0
             }
@@ -75,7 +78,8 @@ impl Simulation {
         for (k, i, j, overlap) in self.touching_pairs(0.0) {
             let (pair, r_eff) = self.pair_of(i, j);
             let (k_n, k_t) = law.stiffness(overlap, r_eff, pair, &states.pair(k));
-            let c_t = dashpot(contact_mass(&p.mass, &p.prescribed, i, j), k_n);
+            let a = (overlap * r_eff).sqrt();
+            let c_t = dashpot(contact_mass(&p.mass, &p.prescribed, i, j), k_n, a);
             for b in [i, j] {
                 met[b].add(k_n, k_t, c_t);
             }
@@ -83,7 +87,8 @@ impl Simulation {
         for (w, i, facet, overlap) in self.touching_walls(0.0) {
             let (pair, r_eff) = self.wall_pair_of(w, i);
             let (k_n, k_t) = law.stiffness(overlap, r_eff, pair, &states.wall(w, i, facet));
-            met[i].add(k_n, k_t, dashpot(p.mass[i], k_n));
+            let a = (overlap * r_eff).sqrt();
+            met[i].add(k_n, k_t, dashpot(p.mass[i], k_n, a));
         }
         // Each body: (mass, radius at full size, moment of inertia, material, the
         // contacts it meets). Particles still to be poured count with the smallest
@@ -149,7 +154,8 @@ impl Simulation {
                 .viscous_coefficient()
                 .map(|damping| 2.0 * mass / (damping * lever * met.count.max(1) as f64));
             let xi = if D::ACTIVE {
-                law.damping.ratio(mass, k)
+                // The body's radius bounds the contact radius (damping/viscous.rs).
+                law.damping.ratio(mass, k, radius)
             } else {
                 0.0
             };
@@ -159,7 +165,7 @@ impl Simulation {
                 // The tangential mode with its own dashpot (the normal damping ratio
                 // above is the normal mode's): the dashpots of all its contacts, or of an
                 // impact against a wall, times the lever factor like the springs.
-                let c_t = met.tangential_dashpot.max(dashpot(mass, impact));
+                let c_t = met.tangential_dashpot.max(dashpot(mass, impact, radius));
                 dt = dt.min(critical_time_step_with_dashpot(
                     k_t * lever,
                     mass,

@@ -188,7 +188,7 @@ mod tests {
             for overlap in [1e-9, 1.6e-6] {
                 let xi = LiggghtsModel::Hertz.critical_fraction(e);
                 let k = hertz_stiffness(overlap, R_EFF, E_EFF);
-                let c = CriticalFraction { xi }.coefficient(M_EFF, k);
+                let c = CriticalFraction { xi }.coefficient(M_EFF, k, || 0.0);
                 let g = liggghts_hertz_gamma_n(e, overlap);
                 assert!(
                     (c - g).abs() <= 1e-14 * g.abs().max(1e-300),
@@ -208,7 +208,7 @@ mod tests {
                 max_relative = 1e-15
             );
             let xi = LiggghtsModel::Hooke.critical_fraction(e);
-            let c = CriticalFraction { xi }.coefficient(M_EFF, kn);
+            let c = CriticalFraction { xi }.coefficient(M_EFF, kn, || 0.0);
             assert_relative_eq!(c, gamman, max_relative = 1e-14);
         }
     }
@@ -221,7 +221,7 @@ mod tests {
         assert_relative_eq!(kn, 3.779_275_1e6, max_relative = 1e-7);
         let xi = LiggghtsModel::Hooke.critical_fraction(0.5);
         assert_relative_eq!(
-            CriticalFraction { xi }.coefficient(M_EFF, kn),
+            CriticalFraction { xi }.coefficient(M_EFF, kn, || 0.0),
             3.385_828_4,
             max_relative = 1e-7
         );

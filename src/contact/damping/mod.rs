@@ -3,10 +3,12 @@
 //! force turns attractive near the end of a contact, as in the closed forms of
 //! Zhong eqs 7–9 and LIGGGHTS's default `limitForce off`.
 //!
-//! Two forms of c_n:
+//! Two types of c_n:
 //! - `CriticalFraction`: c_n = ξ · 2√(m* k_n) (Rojek eqs 7–8), with k_n the
 //!   tangent stiffness of the normal law at the current overlap (eq 9, eq 10);
-//! - `Constant`: c_n = γ_n (Zhong eq 6).
+//! - `Viscous` (viscous.rs): c_n that does not follow k_n, in one of three forms
+//!   chosen at run time: `constant` γ_n (Zhong eq 6), and LAMMPS's `mass_velocity`
+//!   η_n0·m* and `viscoelastic` η_n0·m*·√(δR*).
 //!
 //! The scene kinds `liggghts_restitution` and `tsuji` are not further forms:
 //! `liggghts.rs` turns LIGGGHTS's restitution coefficient, `tsuji.rs` LAMMPS's
@@ -17,6 +19,7 @@
 
 pub mod liggghts;
 pub mod tsuji;
+pub mod viscous;
 
 use crate::contact::lammps::{LammpsDamping, LammpsNormal, NoLammpsModel};
 pub use crate::contact::model::DampingModel;
@@ -24,6 +27,7 @@ use crate::contact::model::Roles;
 use crate::error::Errors;
 pub use liggghts::LiggghtsRestitution;
 pub use tsuji::Tsuji;
+pub use viscous::{Constant, MassVelocity, Viscoelastic, Viscous};
 
 /// c_n = ξ · 2√(m* k_n), Rojek eqs 6–10.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
@@ -41,10 +45,10 @@ impl DampingModel for CriticalFraction {
         e.non_negative(format!("{path}.xi"), self.xi);
     }
     #[inline(always)]
-    fn coefficient(&self, effective_mass: f64, stiffness: f64) -> f64 {
+    fn coefficient(&self, effective_mass: f64, stiffness: f64, _: impl FnOnce() -> f64) -> f64 {
         self.xi * critical_damping(effective_mass, stiffness)
     }
-    fn ratio(&self, _: f64, _: f64) -> f64 {
+    fn ratio(&self, _: f64, _: f64, _: f64) -> f64 {
         self.xi
     }
 }
@@ -74,46 +78,16 @@ impl CriticalFraction {
     }
 }
 
-/// c_n = γ_n, Zhong eq 6 (N·s/m).
-#[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
-#[serde(deny_unknown_fields)]
-pub struct Constant {
-    pub gamma_n: f64,
-}
-
-impl DampingModel for Constant {
-    const ACTIVE: bool = true;
-    fn name(&self) -> &'static str {
-        "constant"
-    }
-    fn check(&self, path: &str, _: Roles, e: &mut Errors) {
-        e.non_negative(format!("{path}.gamma_n"), self.gamma_n);
-    }
-    #[inline(always)]
-    fn coefficient(&self, _: f64, _: f64) -> f64 {
-        self.gamma_n
-    }
-    fn ratio(&self, effective_mass: f64, stiffness: f64) -> f64 {
-        self.gamma_n / critical_damping(effective_mass, stiffness)
-    }
-}
-
-impl Constant {
-    /// LAMMPS's `damping velocity`: η = damp (`GranSubModDampingVelocity`).
-    pub fn lammps(&self, _: LammpsNormal) -> Result<LammpsDamping, NoLammpsModel> {
-        Ok(LammpsDamping {
-            keyword: "velocity",
-            coefficient: self.gamma_n,
-        })
-    }
-}
-
 /// The scene's damping role, read as `{"kind": "<name>", <its parameters>}`.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
 pub enum Damping {
     CriticalFraction(CriticalFraction),
     Constant(Constant),
+    /// LAMMPS's `damping mass_velocity` (viscous.rs).
+    MassVelocity(MassVelocity),
+    /// LAMMPS's `damping viscoelastic` (viscous.rs).
+    Viscoelastic(Viscoelastic),
     /// LIGGGHTS 3.8's damping from a restitution coefficient: run as the
     /// `CriticalFraction` whose ξ the normal law gives (liggghts.rs).
     LiggghtsRestitution(LiggghtsRestitution),
@@ -127,9 +101,24 @@ impl Damping {
     pub fn name(&self) -> &'static str {
         match self {
             Damping::CriticalFraction(d) => d.name(),
-            Damping::Constant(d) => d.name(),
             Damping::LiggghtsRestitution(_) => LiggghtsRestitution::NAME,
             Damping::Tsuji(_) => Tsuji::NAME,
+            Damping::Constant(_) | Damping::MassVelocity(_) | Damping::Viscoelastic(_) => {
+                self.viscous().expect("a viscous kind").name()
+            }
+        }
+    }
+
+    /// The kinds whose coefficient does not follow the normal stiffness, as the one
+    /// type they run as (viscous.rs).
+    pub fn viscous(&self) -> Option<Viscous> {
+        match *self {
+            Damping::Constant(d) => Some(Viscous::Constant(d)),
+            Damping::MassVelocity(d) => Some(Viscous::MassVelocity(d)),
+            Damping::Viscoelastic(d) => Some(Viscous::Viscoelastic(d)),
+            Damping::CriticalFraction(_) | Damping::LiggghtsRestitution(_) | Damping::Tsuji(_) => {
+                None
+            }
         }
     }
 
@@ -137,9 +126,12 @@ impl Damping {
     pub fn check(&self, path: &str, roles: Roles, errors: &mut Errors) {
         match self {
             Damping::CriticalFraction(d) => d.check(path, roles, errors),
-            Damping::Constant(d) => d.check(path, roles, errors),
             Damping::LiggghtsRestitution(d) => d.check(path, roles, errors),
             Damping::Tsuji(d) => d.check(path, roles, errors),
+            Damping::Constant(_) | Damping::MassVelocity(_) | Damping::Viscoelastic(_) => self
+                .viscous()
+                .expect("a viscous kind")
+                .check(path, roles, errors),
         }
     }
 
@@ -147,9 +139,11 @@ impl Damping {
     pub fn lammps(&self, normal: LammpsNormal) -> Result<LammpsDamping, NoLammpsModel> {
         match self {
             Damping::CriticalFraction(d) => d.lammps(normal),
-            Damping::Constant(d) => d.lammps(normal),
             Damping::LiggghtsRestitution(d) => d.lammps(normal),
             Damping::Tsuji(d) => d.lammps(normal),
+            Damping::Constant(_) | Damping::MassVelocity(_) | Damping::Viscoelastic(_) => {
+                self.viscous().expect("a viscous kind").lammps(normal)
+            }
         }
     }
 }

@@ -13,9 +13,10 @@
 //!   x_γ,t = 0.5 against `lammps_mindlin` with that `x_gamma_t`;
 //!   `reference_data/lammps/run_oblique_wall_mindlin.sh`.
 //! - `lammps_oblique_wall_impact_linear` (`linear`): `hooke` and `hertz/material` with
-//!   `linear_history` and `linear_nohistory` and `damping coeff_restitution` e = 0.9 or
-//!   `velocity` against `lammps_linear_history` / `lammps_linear_nohistory` with
-//!   `linear` / `hertz` and `liggghts_restitution` / `constant`;
+//!   `linear_history` and `linear_nohistory` and `damping coeff_restitution` e = 0.9,
+//!   `velocity`, `mass_velocity` or `viscoelastic` against `lammps_linear_history` /
+//!   `lammps_linear_nohistory` with `linear` / `hertz` and `liggghts_restitution` /
+//!   `constant` / `mass_velocity` / `viscoelastic`;
 //!   `reference_data/lammps/run_oblique_wall_linear.sh`.
 //!
 //! - `lammps_cylinder_wall_impact` (`cylinder`): the sphere hits the inside of a cylinder
@@ -34,7 +35,7 @@
 
 use super::liggghts_inputs::Mismatches;
 use super::liggghts_oblique_wall_impact::rebound_and_contact_steps;
-use crate::contact::damping::{Constant, Damping, LiggghtsRestitution};
+use crate::contact::damping::{Constant, Damping, LiggghtsRestitution, MassVelocity, Viscoelastic};
 use crate::contact::lever_arm::LeverArm;
 use crate::contact::normal::{Hertz, Linear, NormalLaw};
 use crate::contact::tangential::lammps_linear_history::LammpsLinearHistory;
@@ -170,7 +171,8 @@ impl MindlinRow {
 
 impl LinearRow {
     /// `hooke k` is `linear` k, `hertz/material` `hertz`; `coeff_restitution` e is
-    /// `liggghts_restitution` e, `velocity` η `constant` γ_n = η; `linear_history k_t x`
+    /// `liggghts_restitution` e, `velocity` η `constant` γ_n = η, `mass_velocity` and
+    /// `viscoelastic` η_n0 the kinds of their names; `linear_history k_t x`
     /// and `linear_nohistory x` are the laws of their names.
     fn run(self) -> Result<Run> {
         let unknown = |what: &str, name: &str| {
@@ -190,6 +192,8 @@ impl LinearRow {
                 restitution: self.damp,
             }),
             "velocity" => Damping::Constant(Constant { gamma_n: self.damp }),
+            "mass_velocity" => Damping::MassVelocity(MassVelocity { eta_n0: self.damp }),
+            "viscoelastic" => Damping::Viscoelastic(Viscoelastic { eta_n0: self.damp }),
             other => return Err(unknown("damping model", other)),
         };
         let tangential = match self.tangential.as_str() {

@@ -2,7 +2,10 @@
 //! spheres meet head-on, `hertz/material` with `damping coeff_restitution` (tamp's
 //! `liggghts_restitution`: LAMMPS derives the same γ_n from e as LIGGGHTS,
 //! contact/damping/mod.rs `CriticalFraction::lammps`) and with `damping tsuji` (tamp's
-//! `tsuji`, contact/damping/tsuji.rs), once per restitution LAMMPS was run with. The
+//! `tsuji`, contact/damping/tsuji.rs), once per restitution LAMMPS was run with, and
+//! with `damping mass_velocity` and `viscoelastic` (the kinds of their names,
+//! contact/damping/viscous.rs: a pair's m* and R*, where the oblique wall impacts check a
+//! wall's). The
 //! reference values are read from `reference_data/lammps/<case>/results.csv` (written by
 //! `reference_data/lammps/run_two_sphere.sh` from the LAMMPS dumps, with the LIGGGHTS
 //! case's extractor); the case refuses to compare when the scene and the recorded
@@ -11,7 +14,7 @@
 
 use super::liggghts_inputs::Mismatches;
 use super::probe::against_peer;
-use crate::contact::damping::{Damping, LiggghtsRestitution, Tsuji};
+use crate::contact::damping::{Damping, LiggghtsRestitution, MassVelocity, Tsuji, Viscoelastic};
 use crate::error::{Result, TampError};
 use crate::measure::collision::binary_collision;
 use crate::scene::{self, Scene};
@@ -50,13 +53,28 @@ fn mismatches(scene: &Scene, row: &Row) -> Mismatches {
     out
 }
 
-/// tamp's damping for a LAMMPS damping model with e in the normal model's damp slot.
-fn damping(model: &str, restitution: f64) -> Result<Damping> {
+/// tamp's damping for a LAMMPS damping model with `damp` in the normal model's damp
+/// slot (e for `coeff_restitution` and `tsuji`, η_n0 for `mass_velocity` and
+/// `viscoelastic`), and the quantities' tag.
+fn damping(model: &str, damp: f64) -> Result<(Damping, String)> {
+    let restitution = damp;
     match model {
-        "coeff_restitution" => Ok(Damping::LiggghtsRestitution(LiggghtsRestitution {
-            restitution,
-        })),
-        "tsuji" => Ok(Damping::Tsuji(Tsuji { restitution })),
+        "coeff_restitution" => Ok((
+            Damping::LiggghtsRestitution(LiggghtsRestitution { restitution }),
+            format!("{model}_e{damp}"),
+        )),
+        "tsuji" => Ok((
+            Damping::Tsuji(Tsuji { restitution }),
+            format!("{model}_e{damp}"),
+        )),
+        "mass_velocity" => Ok((
+            Damping::MassVelocity(MassVelocity { eta_n0: damp }),
+            format!("{model}_eta{damp:e}"),
+        )),
+        "viscoelastic" => Ok((
+            Damping::Viscoelastic(Viscoelastic { eta_n0: damp }),
+            format!("{model}_eta{damp:e}"),
+        )),
         other => Err(TampError::Other(format!(
             "results.csv: LAMMPS damping model '{other}' has no tamp law in this case"
         ))),
@@ -67,16 +85,16 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let base = ctx.scene()?;
     let mut out = Vec::new();
     for row in ctx.peer_results::<Row>("lammps")? {
-        let e = row.restitution_in;
-        let run = format!("damping {} e = {e}", row.model);
+        let (law, tag) = damping(&row.model, row.restitution_in)?;
+        let run = format!("damping {} {}", row.model, row.restitution_in);
         mismatches(&base, &row).refuse_any(&run)?;
         let mut s = base.clone();
-        s.contact.damping = Some(damping(&row.model, e)?);
+        s.contact.damping = Some(law);
         let mut sim = scene::build(&s)?.sim;
         let c = binary_collision(&mut sim, 0, 1, 1_000_000)?;
         out.extend(against_peer(
             &c,
-            &format!("{}_e{e}", row.model),
+            &tag,
             [row.restitution, row.contact_duration, row.max_overlap],
         ));
     }
