@@ -20,7 +20,7 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
-use tamp::contact::damping::{Constant, CriticalFraction};
+use tamp::contact::damping::{Constant, CriticalFraction, MassVelocity, Viscoelastic};
 use tamp::contact::model::{
     CohesionModel, Composed, DampingModel, LawVisitor, NormalModel, StateOf, TangentialModel,
 };
@@ -193,6 +193,26 @@ fn bench(c: &mut Criterion) {
                 law(
                     NormalLaw::Hertz(Hertz {}),
                     Some(Damping::Constant(Constant { gamma_n: 1.0 })),
+                    None,
+                    None,
+                ),
+                g,
+            ),
+            (
+                "mass_velocity",
+                law(
+                    NormalLaw::Hertz(Hertz {}),
+                    Some(Damping::MassVelocity(MassVelocity { eta_n0: 1.0e4 })),
+                    None,
+                    None,
+                ),
+                g,
+            ),
+            (
+                "viscoelastic",
+                law(
+                    NormalLaw::Hertz(Hertz {}),
+                    Some(Damping::Viscoelastic(Viscoelastic { eta_n0: 1.0e9 })),
                     None,
                     None,
                 ),

@@ -14,7 +14,7 @@ impl Series {
     /// `requested` empty means every column.
     pub fn new(requested: &[String], sim: &Simulation) -> Self {
         let columns: Vec<String> = if requested.is_empty() {
-            crate::scene::validate::SERIES_COLUMNS
+            crate::scene::run::SERIES_COLUMNS
                 .iter()
                 .map(|s| s.to_string())
                 .collect()

@@ -11,7 +11,7 @@ use crate::generate::pour::Source;
 use crate::generate::rsi::{InsertionBox, Placed};
 use crate::generate::{ballistic, random_unit};
 use crate::growth::Growth;
-use crate::material::{Hollomon, Material, PairTable};
+use crate::material::Material;
 use crate::output::progress::Progress;
 use crate::particles::{Motion, Particles, Vec3};
 use crate::simulation::{Simulation, StabilityLimits};
@@ -142,28 +142,7 @@ fn check_speeds(scene: &Scene, sim: &Simulation) -> Result<Vec<String>> {
 
 pub fn build(scene: &Scene) -> Result<BuiltScene> {
     super::memory::check(scene, None)?;
-    let materials: Vec<Material> = scene
-        .materials
-        .iter()
-        .map(|m| Material {
-            name: m.name.clone(),
-            density: m.density,
-            rigid: m.rigid,
-            youngs_modulus: m.youngs_modulus,
-            poisson_ratio: m.poisson_ratio,
-            hollomon: m.hollomon.as_ref().map(|h| match h.strength {
-                Some(strength) => Hollomon {
-                    strength,
-                    exponent: h.exponent,
-                },
-                None => Hollomon::through_yield_point(
-                    h.yield_stress.unwrap_or(0.0),
-                    m.youngs_modulus.unwrap_or(0.0),
-                    h.exponent,
-                ),
-            }),
-        })
-        .collect();
+    let materials: Vec<Material> = super::materials::build(&scene.materials);
     let material_id = |name: &str| {
         materials
             .iter()
@@ -171,33 +150,7 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
             .expect("validated material name")
     };
 
-    let (default_friction, overrides): (f64, Vec<(usize, usize, f64)>) =
-        match &scene.contact.tangential {
-            Some(FrictionSpec {
-                friction,
-                friction_pairs,
-                ..
-            }) => (
-                *friction,
-                friction_pairs
-                    .iter()
-                    .map(|fp| {
-                        (
-                            material_id(&fp.materials[0]),
-                            material_id(&fp.materials[1]),
-                            fp.friction,
-                        )
-                    })
-                    .collect(),
-            ),
-            None => (0.0, Vec::new()),
-        };
-    let pair_table = PairTable::new(&materials, |a, b| {
-        overrides
-            .iter()
-            .find(|&&(x, y, _)| (x, y) == (a, b) || (y, x) == (a, b))
-            .map_or(default_friction, |o| o.2)
-    });
+    let pair_table = super::contact::pair_table(&scene.contact, &materials, &material_id);
 
     let walls = super::walls::build(&scene.walls, &material_id, &scene.base_dir)?;
     let mut space = Space::open();

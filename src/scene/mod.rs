@@ -1,9 +1,14 @@
 //! Scene files: parse (with JSON paths in every error), validate, build a `Simulation`.
 
 pub mod build;
+pub mod contact;
 pub mod die_compaction;
 pub mod funnel;
+pub mod materials;
 pub mod memory;
+pub mod particles;
+pub mod physics;
+pub mod run;
 pub mod schema;
 pub mod validate;
 pub mod walls;
