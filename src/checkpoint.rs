@@ -49,16 +49,22 @@ pub const CHECKPOINT_FORMAT: u32 = 3;
 /// A checkpoint file: a state and the scene and tamp version it belongs to.
 #[derive(Serialize, Deserialize)]
 pub struct Checkpoint<T> {
+    /// Layout of the stored state, `CHECKPOINT_FORMAT` when written.
     pub checkpoint_format: u32,
+    /// tamp version that wrote the file.
     pub tamp_version: String,
     /// The commit that wrote it: a different commit of the same version is accepted,
     /// but may step differently, so the reader can warn.
     pub git_commit: String,
+    /// SHA-256 of the scene file the run was built from, hex.
     pub scene_sha256: String,
+    /// The stored state.
     pub state: T,
 }
 
 impl<T> Checkpoint<T> {
+    /// A checkpoint of `state` for the scene whose SHA-256 is `scene_sha256`, stamped
+    /// with this tamp's version, commit and format.
     pub fn new(scene_sha256: &str, state: T) -> Self {
         Checkpoint {
             checkpoint_format: CHECKPOINT_FORMAT,
@@ -199,6 +205,7 @@ struct SourceState {
 }
 
 impl SimState {
+    /// The dynamic state of `sim` at the end of its last step, copied.
     pub fn capture(sim: &Simulation) -> SimState {
         let n = &sim.neighbors;
         SimState {

@@ -15,8 +15,11 @@ use evalexpr::{
     build_operator_tree,
 };
 
+/// A parsed scalar expression of named free variables (t, or x and y), checked by a
+/// trial evaluation.
 #[derive(Clone, Debug)]
 pub struct Expression {
+    /// The text as written in the scene file.
     pub source: String,
     variables: Vec<&'static str>,
     tree: Node<DefaultNumericTypes>,

@@ -14,6 +14,8 @@
 //! Growing radii create overlap energy out of nothing, so the energy book is
 //! restarted when the growth ends and the energy check is off during it.
 
+/// The growth stage: radii rising linearly from f₀ R_i to R_i over a duration T, with
+/// gravity off.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Growth {
     /// T, s.
@@ -29,6 +31,7 @@ impl Growth {
         self.initial_fraction + (1.0 - self.initial_fraction) * s
     }
 
+    /// Whether radii are still growing at time t, s.
     pub fn is_growing(&self, t: f64) -> bool {
         t < self.duration
     }

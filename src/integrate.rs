@@ -22,6 +22,9 @@ pub fn kick(p: &mut Particles, half_dt: f64, rotation: bool) {
     }
 }
 
+/// Drift every particle by Δt v (v the half-step velocity of free particles, the
+/// prescribed one of the others). Returns the work gravity does over the drift on the
+/// free particles, Σ m_i g·Δx_i, J (0 without gravity).
 pub fn drift(p: &mut Particles, dt: f64, gravity: Option<&Vec3>) -> f64 {
     let mut work = 0.0;
     for i in 0..p.len() {

@@ -30,6 +30,7 @@ pub fn received() -> Option<i32> {
     }
 }
 
+/// The conventional name of a signal number, for messages.
 pub fn name(signal: i32) -> &'static str {
     match signal {
         SIGINT => "SIGINT",

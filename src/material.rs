@@ -12,14 +12,19 @@
 //! Effective Hollomon constant (Rojek eq 18): (σ0*)^{−1/m} = (σ0_i)^{−1/m} + (σ0_j)^{−1/m};
 //! a partner without Hollomon constants (a rigid wall) does not yield, so σ0* = σ0_i.
 
+/// One material of the scene, referred to by index from particles and walls: its
+/// density, elastic constants and, for the plastic laws, its hardening curve.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Material {
+    /// The material's name in the scene file.
     pub name: String,
     /// kg/m³; `None` for a rigid material, which no particle may use.
     pub density: Option<f64>,
     /// Infinitely stiff (zero compliance); validation gives it no elastic constants.
     pub rigid: bool,
+    /// Young's modulus E, Pa; `None` for a rigid material, or when no law needs it.
     pub youngs_modulus: Option<f64>,
+    /// Poisson's ratio ν, dimensionless, in (−1, 0.5); `None` like `youngs_modulus`.
     pub poisson_ratio: Option<f64>,
     /// Rigid-plastic hardening curve σ = σ0 ε^m (Rojek eq 15); needed by Storåkers.
     pub hollomon: Option<Hollomon>,
@@ -76,6 +81,7 @@ impl Material {
             .expect("validated: particle materials are not rigid and have a density")
     }
 
+    /// Shear modulus G = E / (2(1 + ν)), Pa; `None` without both elastic constants.
     pub fn shear_modulus(&self) -> Option<f64> {
         Some(self.youngs_modulus? / (2.0 * (1.0 + self.poisson_ratio?)))
     }
@@ -86,6 +92,8 @@ impl Material {
 pub struct PairProperties {
     /// E* (Pa); `None` when either material has no elastic constants (linear laws need none).
     pub effective_modulus: Option<f64>,
+    /// G* (Pa) of the pair, read by the Mindlin-type tangential laws; `None` like
+    /// `effective_modulus`.
     pub effective_shear_modulus: Option<f64>,
     /// σ0* and m (Rojek eq 18); `None` unless a material of the pair has Hollomon constants.
     pub hollomon: Option<Hollomon>,
@@ -100,6 +108,8 @@ fn mix(a: Option<f64>, b: Option<f64>) -> Option<f64> {
     (sum > 0.0).then(|| 1.0 / sum)
 }
 
+/// Effective modulus E* of a material pair, Pa (the 1/E* sum of the module header);
+/// `None` when a non-rigid material lacks E or ν, or when both are rigid.
 pub fn effective_modulus(a: &Material, b: &Material) -> Option<f64> {
     let term = |m: &Material| match m.rigid {
         true => Some(0.0),
@@ -108,6 +118,8 @@ pub fn effective_modulus(a: &Material, b: &Material) -> Option<f64> {
     mix(term(a), term(b))
 }
 
+/// Effective shear modulus G* of a material pair, Pa (the 1/G* sum of the module
+/// header); `None` in the same cases as [`effective_modulus`].
 pub fn effective_shear_modulus(a: &Material, b: &Material) -> Option<f64> {
     let term = |m: &Material| match m.rigid {
         true => Some(0.0),
@@ -116,10 +128,16 @@ pub fn effective_shear_modulus(a: &Material, b: &Material) -> Option<f64> {
     mix(term(a), term(b))
 }
 
+/// Effective radius R* = R_i R_j / (R_i + R_j) of two spheres, m. Both radii must be
+/// finite: against a plane wall (R = ∞) the limit is the particle's own radius, which
+/// callers take directly.
 pub fn effective_radius(r_i: f64, r_j: f64) -> f64 {
     r_i * r_j / (r_i + r_j)
 }
 
+/// Effective mass m* = m_i m_j / (m_i + m_j) of two bodies, kg. Both masses must be
+/// finite: against a wall or a prescribed particle (m = ∞) the limit is the other
+/// body's mass, which callers take directly.
 pub fn effective_mass(m_i: f64, m_j: f64) -> f64 {
     m_i * m_j / (m_i + m_j)
 }
@@ -132,6 +150,7 @@ pub struct PairTable {
 }
 
 impl PairTable {
+    /// Mix every ordered pair of `materials` once; `friction(a, b)` gives the pair's μ.
     pub fn new(materials: &[Material], friction: impl Fn(usize, usize) -> f64) -> Self {
         let n = materials.len();
         let mut entries = Vec::with_capacity(n * n);
@@ -148,6 +167,7 @@ impl PairTable {
         PairTable { n, entries }
     }
 
+    /// Properties of the pair of materials with indices `a` and `b`.
     #[inline]
     pub fn get(&self, a: usize, b: usize) -> &PairProperties {
         &self.entries[a * self.n + b]

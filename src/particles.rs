@@ -4,6 +4,8 @@
 use nalgebra::Vector3;
 use serde::{Deserialize, Serialize};
 
+/// A Cartesian 3-vector of `f64`: positions (m), velocities (m/s), forces (N) and the
+/// like.
 pub type Vec3 = Vector3<f64>;
 
 /// How a particle moves: by Newton–Euler, or at a prescribed velocity
@@ -11,21 +13,33 @@ pub type Vec3 = Vector3<f64>;
 /// receives contact forces; they are its reaction and are recorded as external work.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub enum Motion {
+    /// Moves under its forces and torques.
     Free,
+    /// Moves at this constant velocity, m/s, whatever the forces.
     Prescribed(Vec3),
 }
 
+/// Every particle of a simulation, a spherical rigid body each; element `k` of each
+/// vector belongs to the particle at index `k`. SI units throughout.
 #[derive(Clone, Debug, Default, Serialize, Deserialize)]
 pub struct Particles {
+    /// Centre position x, m.
     pub position: Vec<Vec3>,
+    /// Translational velocity v of the centre, m/s.
     pub velocity: Vec<Vec3>,
+    /// Angular velocity ω, rad/s.
     pub omega: Vec<Vec3>,
+    /// Total force on the particle in the current step, N.
     pub force: Vec<Vec3>,
+    /// Total torque about the centre in the current step, N·m.
     pub torque: Vec<Vec3>,
+    /// Radius R, m.
     pub radius: Vec<f64>,
+    /// Mass m = ρ (4/3) π R³, kg.
     pub mass: Vec<f64>,
     /// Moment of inertia, already multiplied by the scene's rotational-inertia scale.
     pub inertia: Vec<f64>,
+    /// Index of the particle's material in the scene's material list.
     pub material: Vec<usize>,
     /// Whether the particle moves at its prescribed velocity (`Motion::Prescribed`,
     /// held in `velocity`) rather than by Newton–Euler: one flag, so the per-particle
@@ -39,14 +53,19 @@ pub struct Particles {
 }
 
 impl Particles {
+    /// Number of particles.
     pub fn len(&self) -> usize {
         self.position.len()
     }
 
+    /// Whether there are no particles.
     pub fn is_empty(&self) -> bool {
         self.position.is_empty()
     }
 
+    /// Append a solid sphere of `radius` (m) and `density` (kg/m³); its mass and moment
+    /// of inertia (2/5 m R², times `inertia_scale`) follow from them. A prescribed
+    /// `motion` replaces `velocity`. The new particle takes the next free id.
     #[allow(clippy::too_many_arguments)]
     pub fn push(
         &mut self,
@@ -127,6 +146,7 @@ impl Particles {
         self.velocity[i] = v;
     }
 
+    /// Translational kinetic energy Σ ½ m v², J.
     pub fn translational_kinetic_energy(&self) -> f64 {
         self.mass
             .iter()
@@ -135,6 +155,8 @@ impl Particles {
             .sum()
     }
 
+    /// Rotational kinetic energy Σ ½ I ω², J, with the scaled moment of inertia that the
+    /// dynamics uses.
     pub fn rotational_kinetic_energy(&self) -> f64 {
         self.inertia
             .iter()
@@ -143,6 +165,7 @@ impl Particles {
             .sum()
     }
 
+    /// Total linear momentum Σ m v, kg·m/s.
     pub fn linear_momentum(&self) -> Vec3 {
         self.mass
             .iter()

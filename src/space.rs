@@ -9,6 +9,7 @@
 
 use crate::particles::Vec3;
 
+/// The simulation domain: per axis, open or periodic over an interval.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Space {
     /// Per axis: `Some((lo, length))` when periodic.
@@ -16,10 +17,12 @@ pub struct Space {
 }
 
 impl Space {
+    /// Unbounded along every axis, no periodic images.
     pub fn open() -> Self {
         Space::default()
     }
 
+    /// Whether any axis is periodic.
     pub fn is_periodic(&self) -> bool {
         self.periodic.iter().any(Option::is_some)
     }

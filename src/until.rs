@@ -11,6 +11,8 @@
 use crate::simulation::Simulation;
 use serde::{Deserialize, Serialize};
 
+/// The settling criterion as written in `run.until`: thresholds on kinetic energy
+/// per particle and largest speed, and how long they must hold.
 #[derive(Clone, Debug, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct UntilSpec {
@@ -26,21 +28,26 @@ pub struct UntilSpec {
 /// What the criterion last saw, for summary.json and the message on stderr.
 #[derive(Clone, Copy, Debug, Default, Serialize)]
 pub struct Reading {
+    /// Kinetic energy per particle (translation + spin), J.
     pub kinetic_energy_per_particle: f64,
+    /// Largest particle speed, m/s.
     pub max_speed: f64,
 }
 
 /// The watcher of one run: when the criterion started to hold, if it holds now.
 #[derive(Clone, Debug)]
 pub struct Until {
+    /// The criterion's thresholds.
     pub spec: UntilSpec,
     /// Simulated time of the first step of the current unbroken stretch below the
     /// thresholds (kept in checkpoints, so a resumed run stops where the whole one does).
     pub held_since: Option<f64>,
+    /// What the last check saw.
     pub last: Reading,
 }
 
 impl Until {
+    /// A watcher that has not yet seen the criterion hold.
     pub fn new(spec: UntilSpec) -> Self {
         Until {
             spec,

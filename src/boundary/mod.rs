@@ -27,18 +27,29 @@ pub enum WallCurvature {
     /// vector `axis` (rest frame), entering the contact as the sphere of its mean
     /// curvature: `Boundary::effective_radius`.
     Mean {
+        /// Point on the cylinder's axis, m (rest frame).
         origin: Vec3,
+        /// Unit vector along the cylinder's axis.
         axis: Vec3,
+        /// Cylinder radius R_c, m.
         radius: f64,
     },
 }
 
+/// A wall: a rigid body of given shape, material and prescribed or controlled
+/// translation, that the particles collide with.
 #[derive(Clone, Debug)]
 pub struct Boundary {
+    /// Name given in the scene, used in reports and error messages.
     pub name: String,
+    /// Geometry in the rest frame.
     pub shape: Shape,
+    /// Index of the wall's material in the scene's material list (selects the pair
+    /// parameters of its contacts).
     pub material: usize,
+    /// How the wall translates over time.
     pub motion: BoundaryMotion,
+    /// Whether the contact's R* sees the wall as flat or as a curved cylinder.
     pub curvature: WallCurvature,
     /// Translation from the rest frame, m.
     pub displacement: Vec3,
@@ -47,6 +58,7 @@ pub struct Boundary {
 }
 
 impl Boundary {
+    /// A wall at its position and velocity at t = 0, flat in the contact law.
     pub fn new(name: String, shape: Shape, material: usize, motion: BoundaryMotion) -> Self {
         let mut b = Boundary {
             name,

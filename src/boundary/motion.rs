@@ -32,15 +32,23 @@
 use crate::expression::Expression;
 use crate::particles::Vec3;
 
+/// The translation u(t) of a wall: prescribed or driven by the particles' reaction.
 #[derive(Clone, Debug)]
 pub enum BoundaryMotion {
+    /// Never moves: u = 0.
     Fixed,
+    /// Constant velocity v, m/s: u(t) = v t.
     Velocity(Vec3),
+    /// u(t) given per axis (x, y, z) as expressions of t, m.
     Displacement(Box<[Expression; 3]>),
+    /// Speed set each step to drive the particles' reaction towards a target force.
     Servo(Servo),
+    /// Punch of finite mass moved by a pressure load against the particles' reaction.
     Pressed(PressureLoad),
 }
 
+/// A rigid punch of mass M loaded by a pressure p(t) on its area A, ramped linearly
+/// to its final value and then held; moves by M dv/dt = p(t) A − R.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PressureLoad {
     /// Unit vector along which the punch presses on the particles.
@@ -75,6 +83,8 @@ impl PressureLoad {
     }
 }
 
+/// A force-controlled wall: speed proportional to the error between a target force
+/// and the particles' reaction, clamped to a largest speed.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Servo {
     /// Unit vector along which the boundary presses on the particles.

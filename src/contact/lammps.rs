@@ -24,7 +24,10 @@ pub enum LammpsNormal {
     /// `hertz/material E damp ν` = tamp `hertz`.
     HertzMaterial,
     /// `hooke k damp` = tamp `linear` with k = its stiffness, N/m.
-    Hooke { stiffness: f64 },
+    Hooke {
+        /// Normal spring stiffness k_n, N/m.
+        stiffness: f64,
+    },
 }
 
 impl LammpsNormal {
@@ -57,7 +60,9 @@ impl LammpsNormal {
 /// `coeff_restitution`, 0 for `none`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LammpsDamping {
+    /// The word after `damping` (`velocity`, `coeff_restitution`, `tsuji`, …).
     pub keyword: &'static str,
+    /// The value for the normal model's `damp` slot (its unit depends on `keyword`).
     pub coefficient: f64,
 }
 

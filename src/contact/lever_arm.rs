@@ -36,6 +36,7 @@ pub enum LeverArm {
 }
 
 impl LeverArm {
+    /// The convention's name in the scene file.
     pub fn name(&self) -> &'static str {
         match self {
             LeverArm::MidOverlap => "mid_overlap",
@@ -48,7 +49,9 @@ impl LeverArm {
 /// velocity, `torque` the tangential force in the torque.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Arms {
+    /// Arm multiplying the sphere's spin in the contact-point velocity, m.
     pub velocity: f64,
+    /// Arm multiplying the tangential force in the sphere's torque, m.
     pub torque: f64,
 }
 

@@ -56,10 +56,14 @@ use van_der_waals::Cohesion;
 /// Geometry of one contact, computed once and shared by all roles.
 #[derive(Clone, Copy, Debug)]
 pub struct ContactGeometry {
+    /// Unit normal n pointing from the partner (particle j or the wall) to particle i.
     pub normal: Vec3,
     /// δ > 0 in contact; −δ is the surface gap when apart (cohesion acts across it).
     pub overlap: f64,
+    /// Effective radius R* of the pair, m (R_i against a plane wall; a curved wall
+    /// gives its own).
     pub effective_radius: f64,
+    /// Effective mass m* of the pair, kg (m_i against a wall or a prescribed particle).
     pub effective_mass: f64,
     /// Velocity of i's contact point relative to the partner's (includes spin when rotation is on).
     pub relative_velocity: Vec3,
@@ -72,6 +76,7 @@ impl ContactGeometry {
         -self.relative_velocity.dot(&self.normal)
     }
 
+    /// Tangential part v_t = v_r − (v_r · n) n of the relative contact-point velocity, m/s.
     #[inline]
     pub fn tangential_velocity(&self) -> Vec3 {
         self.relative_velocity - self.normal * self.normal.dot(&self.relative_velocity)
@@ -83,6 +88,7 @@ impl ContactGeometry {
 pub struct ContactForce {
     /// Total normal force along `normal` (elastic + damping − cohesion), N.
     pub normal: f64,
+    /// Tangential (friction) force on i, perpendicular to `normal`, N.
     pub tangential: Vec3,
 }
 
@@ -90,9 +96,13 @@ pub struct ContactForce {
 /// the monomorphic `Composed` type once per run by `visit`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ContactLaw {
+    /// The normal law (always present).
     pub normal: NormalLaw,
+    /// The normal dashpot, if the scene has one.
     pub damping: Option<Damping>,
+    /// The friction law; `None` for frictionless contacts.
     pub tangential: Option<TangentialLaw>,
+    /// The attraction across small gaps, if any.
     pub cohesion: Option<Cohesion>,
     /// Where the contact acts on spinning spheres (`contact.lever_arm`).
     pub lever_arm: lever_arm::LeverArm,

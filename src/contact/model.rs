@@ -53,7 +53,9 @@ impl ContactState for Vec3 {
 /// The state of a composed contact: the normal law's, then the tangential law's.
 #[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Composite<N, T> {
+    /// The normal law's state.
     pub normal: N,
+    /// The tangential law's state.
     pub tangential: T,
 }
 
@@ -81,16 +83,20 @@ pub struct Needs {
 /// in the order the deck writes them.
 #[derive(Clone, Debug, PartialEq)]
 pub struct LiggghtsDeck {
+    /// The word after `model` (`hertz`, `hooke`).
     pub model: &'static str,
     /// Words after the tangential model, or "".
     pub options: &'static str,
+    /// The `fix property/global` lines, in deck order.
     pub properties: Vec<LiggghtsProperty>,
 }
 
 /// One `fix property/global <name> <values>` line.
 #[derive(Clone, Debug, PartialEq)]
 pub struct LiggghtsProperty {
+    /// LIGGGHTS's property name, e.g. `coefficientFriction`.
     pub name: &'static str,
+    /// The property's style and values.
     pub values: LiggghtsValues,
 }
 
@@ -112,18 +118,23 @@ pub type LiggghtsRefusal = (String, String);
 /// classes and every class against every wall).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LiggghtsContact {
+    /// Effective mass m* of the contact, kg.
     pub effective_mass: f64,
+    /// Effective radius R* of the contact, m.
     pub effective_radius: f64,
+    /// Effective modulus E* of the contact, Pa.
     pub effective_modulus: f64,
     /// Atom type index (tamp material index) and radius of each particle LIGGGHTS may
     /// take as "i": both for a pair, the particle alone for a wall (`None`).
     pub first: (usize, f64),
+    /// The second particle's atom type and radius, m; `None` for a wall contact.
     pub second: Option<(usize, f64)>,
 }
 
 /// What a law's deck entry reads from the scene.
 #[derive(Clone, Debug)]
 pub struct LiggghtsScene<'a> {
+    /// The scene's damping role, if any.
     pub damping: Option<&'a Damping>,
     /// Whether the scene has a tangential law.
     pub tangential: bool,
@@ -165,19 +176,24 @@ impl LiggghtsScene<'_> {
 /// The other roles of the scene's law, for the rules that join two roles.
 #[derive(Clone, Copy, Debug)]
 pub struct Roles<'a> {
+    /// The scene's normal law.
     pub normal: &'a NormalLaw,
+    /// The scene's damping role, if any.
     pub damping: Option<&'a Damping>,
 }
 
 /// Normal force (without a separate damping role) and its tangent stiffness.
 #[derive(Clone, Copy, Debug)]
 pub struct NormalResponse {
+    /// Normal force F_n on i along the normal, N (> 0 repulsive).
     pub force: f64,
+    /// Tangent stiffness dF_n/dδ at this overlap, N/m.
     pub stiffness: f64,
 }
 
 /// The elastic, viscoelastic or plastic part of the normal force.
 pub trait NormalModel: Copy + Debug + PartialEq {
+    /// What one contact of this law remembers between steps (`()` for an elastic law).
     type State: ContactState;
     /// Whether the law dissipates by itself: a separate damping role is then
     /// refused, and no damped variant of it is compiled.
@@ -321,6 +337,7 @@ impl DampingModel for NoDamping {
 
 /// The tangential force, limited by the contact's normal force.
 pub trait TangentialModel: Copy + Debug + PartialEq {
+    /// What one contact of this law remembers between steps (`()` when nothing).
     type State: ContactState;
     /// False for `NoFriction`: no tangential velocity, force or torque is computed.
     const ACTIVE: bool = true;
@@ -414,6 +431,7 @@ impl TangentialModel for NoFriction {
 
 /// An attraction acting across a gap up to `reach`.
 pub trait CohesionModel: Copy + Debug {
+    /// False for `NoCohesion`: no attraction is computed.
     const ACTIVE: bool;
     /// The rules of its own parameters; `path` is where the scene holds them.
     fn check(&self, _path: &str, _errors: &mut Errors) {}
@@ -446,9 +464,13 @@ impl CohesionModel for NoCohesion {
 /// One law per role, evaluated as normal → damping → tangential → cohesion.
 #[derive(Clone, Copy, Debug)]
 pub struct Composed<N, D, T, C> {
+    /// The normal law.
     pub normal: N,
+    /// The normal dashpot (`NoDamping` when off).
     pub damping: D,
+    /// The friction law (`NoFriction` when off).
     pub tangential: T,
+    /// The attraction (`NoCohesion` when off).
     pub cohesion: C,
 }
 
@@ -603,7 +625,9 @@ impl<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel> Comp
 /// Code that runs once per scene with the scene's laws as types
 /// (`ContactLaw::visit`).
 pub trait LawVisitor {
+    /// What the visit returns.
     type Output;
+    /// Run with the scene's law as the composed type `law`.
     fn visit<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel>(
         self,
         law: Composed<N, D, T, C>,

@@ -9,7 +9,9 @@ use crate::particles::Vec3;
 /// The other body of a contact.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Partner {
+    /// Another particle, by index.
     Particle(usize),
+    /// A wall, by its index among the simulation's walls.
     Wall(usize),
 }
 
@@ -17,7 +19,9 @@ pub enum Partner {
 /// `normal * normal_force + tangential_force`; a partner particle gets the opposite.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ContactRecord {
+    /// Index of the particle the contact is seen from.
     pub i: usize,
+    /// The other body.
     pub partner: Partner,
     /// Centre of particle i, m.
     pub centre: Vec3,

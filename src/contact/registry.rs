@@ -17,10 +17,15 @@ use crate::particles::Vec3;
 /// The reference contact of every example: two steel-like spheres of R = 1 mm
 /// (R* = 0.5 mm), E* = 110 GPa, G* = 21 GPa, Hollomon σ0 = 1 GPa, m = 0.15, μ = 0.4.
 pub const EFFECTIVE_RADIUS: f64 = 5e-4;
+/// Effective mass m* of the reference contact, kg.
 pub const EFFECTIVE_MASS: f64 = 1e-4;
+/// Effective modulus E* of the reference contact, Pa.
 pub const EFFECTIVE_MODULUS: f64 = 1.1e11;
+/// Effective shear modulus G* of the reference contact, Pa.
 pub const EFFECTIVE_SHEAR_MODULUS: f64 = 2.1e10;
+/// Friction coefficient μ of the reference contact.
 pub const FRICTION: f64 = 0.4;
+/// Effective Hollomon constants σ0* (Pa) and m of the reference contact.
 pub const HOLLOMON: Hollomon = Hollomon {
     strength: 1e9,
     exponent: 0.15,
@@ -40,8 +45,11 @@ pub fn pair() -> PairProperties {
 /// loaded to `overlap` at the rate `rate` (> 0: approaching).
 #[derive(Clone, Copy, Debug)]
 pub struct NormalExample {
+    /// The law, with its parameters.
     pub law: NormalLaw,
+    /// Overlap δ reached, m.
     pub overlap: f64,
+    /// Overlap rate dδ/dt, m/s (> 0: approaching).
     pub rate: f64,
     /// What the law's source gives, N.
     pub force: f64,
@@ -50,7 +58,9 @@ pub struct NormalExample {
 /// A tangential law's closed form: the force after one step from a fresh state.
 #[derive(Clone, Copy, Debug)]
 pub struct TangentialExample {
+    /// The law, with its parameters.
     pub law: TangentialLaw,
+    /// The contact and the step the law is evaluated at.
     pub input: TangentialInput,
     /// What the law's source gives, N.
     pub force: Vec3,
@@ -107,6 +117,7 @@ pub fn sliding_force(input: &TangentialInput) -> Vec3 {
 
 /// The overlaps every normal law is checked at, m, and the loading rate, m/s.
 pub const OVERLAPS: [f64; 4] = [1e-8, 1e-7, 1e-6, 5e-6];
+/// Overlap rate dδ/dt of the normal examples, m/s.
 pub const LOADING_RATE: f64 = 0.01;
 
 /// A normal law's examples: a fresh contact loaded to each of `OVERLAPS` at

@@ -12,6 +12,7 @@ use serde::{Deserialize, Serialize};
 use std::any::Any;
 use std::fmt::Debug;
 
+/// The state of every contact of one run, `S` being the state type of the scene's laws.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct ContactStates<S> {
     /// One per neighbour-list pair, in the list's order; empty when `S` is empty.
@@ -54,8 +55,11 @@ impl<S: ContactState> ContactStates<S> {
 
 /// A `ContactStates<S>` whose `S` only the force loop knows.
 pub trait StateStore: Debug + Send + Sync {
+    /// The concrete store, for the force loop to take back as its own type.
     fn as_any(&self) -> &dyn Any;
+    /// The concrete store, mutable.
     fn as_any_mut(&mut self) -> &mut dyn Any;
+    /// A boxed copy of the store.
     fn clone_box(&self) -> Box<dyn StateStore>;
     /// Whether the law keeps anything per contact.
     fn is_kept(&self) -> bool;
@@ -68,6 +72,7 @@ pub trait StateStore: Debug + Send + Sync {
     fn pair_tangential(&self, k: usize) -> Option<Vec3>;
     /// Whether the store fits `pairs` pairs, `particles` particles and `boundaries` walls.
     fn fits(&self, pairs: usize, particles: usize, boundaries: usize) -> bool;
+    /// The store as JSON, for checkpoints.
     fn to_json(&self) -> serde_json::Value;
     /// Replace the contents by a store written by `to_json` for the same laws.
     fn load_json(&mut self, value: serde_json::Value) -> Result<(), String>;

@@ -18,6 +18,8 @@
 use crate::contact::model::CohesionModel;
 use crate::error::Errors;
 
+/// Van der Waals (Hamaker) attraction between the surfaces of two bodies: held at
+/// its value at h_min for smaller gaps (and overlaps), zero beyond h_c.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct VanDerWaals {
@@ -33,6 +35,7 @@ pub struct VanDerWaals {
 #[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
 #[serde(tag = "law", rename_all = "snake_case")]
 pub enum Cohesion {
+    /// Hamaker's van der Waals attraction.
     VanDerWaals(VanDerWaals),
 }
 
@@ -44,6 +47,7 @@ impl Cohesion {
         }
     }
 
+    /// The rules of the law's parameters; `path` is where the scene holds the role.
     pub fn check(&self, path: &str, errors: &mut Errors) {
         match self {
             Cohesion::VanDerWaals(c) => c.check(path, errors),

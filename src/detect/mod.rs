@@ -14,14 +14,21 @@ use crate::contact::states::StateStore;
 use crate::particles::Vec3;
 use crate::space::Space;
 
+/// Broad-phase algorithm that finds the neighbour list's candidate pairs; all give the
+/// same sorted list.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Detector {
+    /// Every pair tested, O(N²): the reference.
     Brute,
+    /// Linked cells of edge ≥ 2 R_max + margin.
     Cells,
+    /// One cell grid per size class (He, Dong & Zhou 2007), for wide size distributions.
     Multigrid,
 }
 
 impl Detector {
+    /// All pairs (i < j) whose surfaces are closer than `margin` (m) through the nearest
+    /// periodic image, in lexicographic order.
     pub fn candidate_pairs(
         &self,
         position: &[Vec3],
@@ -42,18 +49,25 @@ impl Detector {
 /// carries each pair's state over by merging the two sorted lists.
 #[derive(Clone, Debug)]
 pub struct NeighborList {
+    /// Algorithm that builds the list.
     pub detector: Detector,
+    /// Verlet skin, m: the extra range that lets the list be reused until some particle
+    /// has moved skin/2.
     pub skin: f64,
     /// Range beyond touching at which the contact law still acts, m.
     pub reach: f64,
+    /// Candidate pairs of particle indices (i < j), sorted lexicographically.
     pub pairs: Vec<(u32, u32)>,
+    /// Domain with its periodic axes, for nearest-image distances.
     pub space: Space,
     pub(crate) reference_position: Vec<Vec3>,
     pub(crate) reference_radius: Vec<f64>,
+    /// Number of builds so far.
     pub builds: u64,
 }
 
 impl NeighborList {
+    /// An empty list, built at the first `update`.
     pub fn new(detector: Detector, skin: f64, reach: f64, space: Space) -> Self {
         NeighborList {
             space,
@@ -98,6 +112,8 @@ impl NeighborList {
         }
     }
 
+    /// Build the list now from the current positions and radii, and hand the old and
+    /// new pair lists to `states` so each surviving pair keeps its contact history.
     pub fn rebuild(&mut self, position: &[Vec3], radius: &[f64], states: &mut dyn StateStore) {
         let pairs =
             self.detector

@@ -92,10 +92,15 @@ pub enum Lid {
 /// of them is discarded).
 #[derive(Clone, Debug)]
 pub struct BoxFill {
+    /// Box width W, m.
     pub width: f64,
+    /// Fill height H, m (the lid).
     pub height: f64,
+    /// Size law of the disc radii.
     pub law: SizeDistribution,
+    /// Which discs count as inside the box of height H.
     pub lid: Lid,
+    /// Consecutive discs resting above the lid after which filling stops.
     pub patience: usize,
 }
 

@@ -38,28 +38,44 @@ const MIN_KEPT_PROBABILITY: f64 = 1e-4;
 #[derive(Clone, Debug, PartialEq, Deserialize, Serialize)]
 #[serde(tag = "law", rename_all = "snake_case", deny_unknown_fields)]
 pub enum SizeDistribution {
+    /// Every particle of radius R.
     Mono {
+        /// Radius R, m.
         radius: f64,
     },
+    /// Radius uniform on [min, max].
     Uniform {
+        /// Smallest radius a, m.
         min: f64,
+        /// Largest radius b, m.
         max: f64,
     },
+    /// Radii rᵢ drawn with number fractions fᵢ.
     Discrete {
+        /// The radii rᵢ, m.
         radii: Vec<f64>,
+        /// Number fraction fᵢ of each radius, summing to 1.
         number_fractions: Vec<f64>,
     },
+    /// ln r normal with median m and standard deviation s, optionally truncated to
+    /// [min, max].
     LogNormal {
+        /// Median radius (the table's m), in metres.
         median: f64,
         /// Standard deviation of ln r.
         sigma: f64,
+        /// Smallest radius kept, m (none: no lower cut).
         #[serde(default)]
         min: Option<f64>,
+        /// Largest radius kept, m (none: no upper cut).
         #[serde(default)]
         max: Option<f64>,
     },
+    /// Piecewise-linear cumulative number distribution F(rᵢ) = Fᵢ.
     Tabulated {
+        /// Radii rᵢ, strictly increasing, m.
         radius: Vec<f64>,
+        /// Cumulative number fraction Fᵢ at each radius, from 0 to 1.
         cumulative: Vec<f64>,
     },
 }
@@ -85,6 +101,8 @@ pub(crate) fn each_positive_finite(name: &str, values: &[f64]) -> Result<(), Str
 }
 
 impl SizeDistribution {
+    /// Check the parameters: positive finite radii, ordered bounds, fractions summing to
+    /// 1, a truncation that keeps enough of the log-normal; the error names the field.
     pub fn validate(&self) -> Result<(), String> {
         match self {
             SizeDistribution::Mono { radius } => positive_finite("radius", *radius),

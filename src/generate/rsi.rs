@@ -18,7 +18,9 @@ use rand_chacha::ChaCha8Rng;
 /// An insertion region: the box [lower, upper] that must contain whole spheres.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct InsertionBox {
+    /// Lower corner, m.
     pub lower: Vec3,
+    /// Upper corner, m.
     pub upper: Vec3,
 }
 
@@ -43,7 +45,9 @@ impl InsertionBox {
 /// within reach and the test is the same inequality, so the accepted positions are
 /// those of the all-pairs test, bit for bit.
 pub struct Placed {
+    /// Sphere centres, m.
     pub position: Vec<Vec3>,
+    /// Sphere radii, m.
     pub radius: Vec<f64>,
     grid: CellGrid,
     space: Space,
@@ -78,6 +82,7 @@ impl Placed {
         placed
     }
 
+    /// Add a sphere of centre x and radius r without a clearance test.
     pub fn add(&mut self, x: Vec3, r: f64) {
         self.grid.insert(&x, self.position.len());
         self.position.push(x);

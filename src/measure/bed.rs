@@ -40,6 +40,8 @@ use crate::measure::region::{Region, ball_volume};
 use crate::particles::Vec3;
 use crate::space::Space;
 
+/// Packing measures of a settled bed: its surface height H and its bulk, surface-layer
+/// and interior solid fractions φ.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Bed {
     /// Height of the free surface above the floor (H).

@@ -49,6 +49,8 @@ pub struct CoordinationOptions {
     pub interior: Option<Region>,
 }
 
+/// Coordination numbers of a packing: the mean Z over the counted particles, each
+/// particle's count z_i and their distribution.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Coordination {
     /// Z over the counted particles (0 when none are counted).
@@ -66,6 +68,10 @@ pub struct Coordination {
     pub histogram: Vec<usize>,
 }
 
+/// Coordination of the spheres (`positions`, `radii`, m) over the candidate `pairs`,
+/// with the contact tolerance and the rattler and interior filters of `options`.
+/// Errors (naming the argument) on mismatched lengths, a negative or non-finite
+/// tolerance, an invalid interior region, or a pair index out of range.
 pub fn coordination(
     positions: &[Vec3],
     radii: &[f64],

@@ -27,13 +27,18 @@ use std::f64::consts::PI;
 /// One layer or shell of a profile; `near` and `far` are its distances from the wall.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Layer {
+    /// Distance of its wall-side face from the wall, m.
     pub near: f64,
+    /// Distance of its far face from the wall, m.
     pub far: f64,
+    /// Volume of the layer, m³.
     pub volume: f64,
+    /// Solid fraction φ_j: volume of solid in the layer over its volume.
     pub solid_fraction: f64,
 }
 
 impl Layer {
+    /// Porosity 1 − φ_j of the layer.
     pub fn porosity(&self) -> f64 {
         1.0 - self.solid_fraction
     }
@@ -45,15 +50,21 @@ pub struct PlaneProfile {
     /// The container's interior whose layers are measured: a box, a slab normal to
     /// `axis` (laterally periodic beds) or a cylinder with its axis along `axis`.
     pub domain: Region,
+    /// Coordinate axis k normal to the wall (0 = x, 1 = y, 2 = z).
     pub axis: usize,
     /// Coordinate of the wall along `axis`.
     pub wall: f64,
     /// Whether the bed lies on the positive side of the wall.
     pub positive_side: bool,
+    /// Thickness t of each layer, m.
     pub thickness: f64,
+    /// Number of layers, counted from the wall.
     pub layers: usize,
 }
 
+/// Solid fraction φ_j of each layer of `spec`, nearest the wall first. Errors (naming
+/// the field) on a bad axis, layer count or thickness, an invalid domain, or layers
+/// reaching outside the domain.
 pub fn plane_wall_profile(
     positions: &[Vec3],
     radii: &[f64],

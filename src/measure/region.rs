@@ -48,26 +48,39 @@ use std::sync::OnceLock;
 /// the coordinate axes; the cylinder's axis may point anywhere. All are closed sets.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Region {
+    /// Axis-aligned box [lower, upper].
     Box {
+        /// Lower corner, m.
         lower: Vec3,
+        /// Upper corner, m.
         upper: Vec3,
     },
     /// `lo ≤ x[axis] ≤ hi`, unbounded along the other two axes (infinite volume; see
     /// `packing::packing_fraction` for its use in laterally periodic beds).
     Slab {
+        /// Axis normal to the slab (0 = x, 1 = y, 2 = z).
         axis: usize,
+        /// Lower bound along `axis`, m.
         lo: f64,
+        /// Upper bound along `axis`, m.
         hi: f64,
     },
     /// `base` is the centre of the bottom disc; `axis` is normalised on use.
     Cylinder {
+        /// Centre of the bottom disc, m.
         base: Vec3,
+        /// Direction of the cylinder's axis, from the base towards the top.
         axis: Vec3,
+        /// Cylinder radius R, m.
         radius: f64,
+        /// Height H along the axis, m.
         height: f64,
     },
+    /// Ball of centre C and radius R.
     Sphere {
+        /// Centre C, m.
         centre: Vec3,
+        /// Radius R, m.
         radius: f64,
     },
 }
@@ -135,6 +148,7 @@ impl Region {
         }
     }
 
+    /// Whether a point lies in the region (boundary included).
     pub fn contains_point(&self, p: &Vec3) -> bool {
         match *self {
             Region::Box { lower, upper } => (0..3).all(|k| lower[k] <= p[k] && p[k] <= upper[k]),
@@ -202,6 +216,7 @@ impl Region {
     }
 }
 
+/// Volume 4/3 π r³ of a ball of radius r.
 pub fn ball_volume(r: f64) -> f64 {
     4.0 / 3.0 * PI * r * r * r
 }

@@ -24,14 +24,20 @@ use crate::space::Space;
 /// A wall the RVE must keep clear of.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum WallSurface {
+    /// Plane through `point` with normal `normal` (either sign, any length).
     Plane {
+        /// A point of the plane, m.
         point: Vec3,
+        /// Normal of the plane; normalised on use.
         normal: Vec3,
     },
     /// The inside of an unbounded cylindrical wall (a die).
     Cylinder {
+        /// A point on the cylinder's axis, m.
         point: Vec3,
+        /// Direction â of the axis; normalised on use.
         axis: Vec3,
+        /// Cylinder radius R, m.
         radius: f64,
     },
 }

@@ -34,41 +34,58 @@
 use crate::error::{Result, TampError};
 use crate::particles::Vec3;
 
+/// What a composition counts: particles, or solid volume.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Basis {
+    /// w_i = 1: fractions by number.
     Number,
+    /// w_i = r_i³: fractions by volume (by mass for equal solid densities).
     Volume,
 }
 
 /// The bed's vertical extent; `None` takes it from the particles.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct BedExtent {
+    /// Lowest point of the bed along the vertical, m.
     pub bottom: Option<f64>,
+    /// Highest point of the bed along the vertical, m.
     pub top: Option<f64>,
 }
 
+/// What one horizontal layer of the bed holds.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LayerComposition {
+    /// Number of particles whose centre lies in the layer.
     pub particles: usize,
     /// Weighted fraction of species A; `None` for an empty layer.
     pub fraction_a: Option<f64>,
 }
 
+/// Composition of the bed's top and bottom layers.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SurfaceLayers {
+    /// Centres within the layer thickness below the top.
     pub top: LayerComposition,
+    /// Centres within the layer thickness above the bottom.
     pub bottom: LayerComposition,
 }
 
+/// How to measure the segregation index: the vertical axis, the number n of layers,
+/// the bed extent and the weighting.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SegregationSpec {
     /// Vertical axis (0, 1 or 2).
     pub axis: usize,
+    /// Number n of horizontal layers of equal thickness.
     pub layers: usize,
+    /// The bed's vertical extent [bottom, top].
     pub extent: BedExtent,
+    /// Weighting of the particles.
     pub basis: Basis,
 }
 
+/// Segregation of species A along the vertical: the fraction p of A, the index
+/// S = σ/σ₀, Lacey's mixing index M and each layer's composition.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Segregation {
     /// Fraction of species A in the bed, p.
@@ -120,6 +137,9 @@ pub fn surface_layers(
     })
 }
 
+/// Segregation index S and Lacey's index M of species A (`is_a`) over the n layers of
+/// `spec`. Errors (naming the field) on mismatched lengths, a bad axis, an empty or
+/// inverted extent, zero layers, or a bed lacking one of the two species.
 pub fn segregation(
     positions: &[Vec3],
     radii: &[f64],

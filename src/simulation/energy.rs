@@ -92,10 +92,13 @@ impl Simulation {
         })
     }
 
+    /// Kinetic energy of translation and spin of all particles, Σ ½ m v² + ½ I ω², J.
     pub fn kinetic_energy(&self) -> f64 {
         self.particles.translational_kinetic_energy() + self.particles.rotational_kinetic_energy()
     }
 
+    /// Mechanical energy E_mech: kinetic energy plus the energy stored in the contacts'
+    /// springs, J.
     pub fn mechanical_energy(&self) -> f64 {
         self.kinetic_energy() + self.stored_energy()
     }

@@ -43,6 +43,7 @@ impl Simulation {
         }
     }
 
+    /// Whether a growth stage is under way at the current time.
     pub fn is_growing(&self) -> bool {
         self.growth.is_some_and(|g| g.is_growing(self.time))
     }

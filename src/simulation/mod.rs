@@ -42,6 +42,8 @@ mod growth_stage;
 mod pour;
 mod records;
 
+/// Safeguards that stop a run as unstable: bounds on overlap, energy gain and
+/// per-step motion.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StabilityLimits {
     /// Largest overlap allowed, as a fraction of the smaller radius of the contact.
@@ -68,19 +70,32 @@ impl Default for StabilityLimits {
     }
 }
 
+/// One DEM run: the particles, walls and contact law, the clock, the neighbour list,
+/// the contact history and the energy book.
 #[derive(Clone, Debug)]
 pub struct Simulation {
+    /// The particles' state arrays (position, velocity, spin, force, …).
     pub particles: Particles,
     /// Boundaries (walls, containers, meshes), each with its own shape, material and motion.
     pub walls: Vec<Boundary>,
+    /// The scene's materials; particles and walls refer to them by index.
     pub materials: Vec<Material>,
+    /// Contact parameters of each pair of materials (E*, G*, friction coefficient, …).
     pub pair_table: PairTable,
+    /// The scene's contact law: its normal, damping, tangential and cohesion models and
+    /// lever arm.
     pub law: ContactLaw,
+    /// Gravitational acceleration g, m/s²; `None` without gravity.
     pub gravity: Option<Vec3>,
+    /// Whether spins are integrated (torques act); off, particles only translate.
     pub rotation: bool,
+    /// Time step Δt, s.
     pub dt: f64,
+    /// Steps taken so far.
     pub step: u64,
+    /// Simulated time t, s.
     pub time: f64,
+    /// Verlet neighbour list with skin: the candidate pairs.
     pub neighbors: NeighborList,
     /// What each pair and wall contact keeps between steps, typed by the scene's
     /// laws (`contact::states`).
@@ -96,6 +111,7 @@ pub struct Simulation {
     smallest_radius: f64,
     /// Force the particles exert on each wall at the current step, N.
     pub wall_force: Vec<Vec3>,
+    /// The safeguards that stop an unstable run.
     pub limits: StabilityLimits,
     /// Work done on the particles by gravity and prescribed bodies since the start, J.
     pub external_work: f64,
@@ -106,6 +122,7 @@ pub struct Simulation {
     pub max_overlap_ratio: f64,
     /// Growth stage (Zhong 2009 §6.1): radii grow to `target_radius`, gravity off.
     pub growth: Option<Growth>,
+    /// Per particle, the final radius R_i the growth stage grows to, m (empty without one).
     pub target_radius: Vec<f64>,
     /// Pouring sources (particles entering during the run).
     pub sources: Vec<Source>,
@@ -114,6 +131,9 @@ pub struct Simulation {
 }
 
 impl Simulation {
+    /// A run at t = 0 from its particles, walls, materials and law: builds the neighbour
+    /// list and the forces at t = 0 and opens the energy book. Fails when a contact at
+    /// t = 0 is already unstable (coincident centres, an overlap beyond the limit).
     #[allow(clippy::too_many_arguments)]
     pub fn new(
         particles: Particles,
@@ -172,6 +192,9 @@ impl Simulation {
         Ok(sim)
     }
 
+    /// Advance one time step Δt (velocity-Verlet half kick, drift, forces, half kick).
+    /// Fails, naming the step and the cause, when the run turns unstable (a stability
+    /// limit broken, a non-finite state).
     pub fn step(&mut self) -> Result<()> {
         self.advance(None)
     }

@@ -25,9 +25,13 @@ use super::{Candidate, ShapeContact, push_distinct, within_reach};
 use crate::error::{Result, TampError};
 use crate::particles::Vec3;
 
+/// The inside of an axis-aligned box as a container; each present face pushes
+/// inward.
 #[derive(Clone, Debug)]
 pub struct BoxShape {
+    /// Lower corner, m.
     pub lower: Vec3,
+    /// Upper corner, m.
     pub upper: Vec3,
     /// Which faces exist, in facet order (−x, +x, −y, +y, −z, +z).
     pub faces: [bool; 6],
@@ -99,6 +103,8 @@ impl BoxShape {
                 .all(|b| p[b] >= self.lower[b] - tol && p[b] <= self.upper[b] + tol)
     }
 
+    /// Append the contacts of a sphere with the present faces and their rims, one per
+    /// distinct touching point (facet = face number).
     pub fn contacts(&self, centre: &Vec3, radius: f64, reach: f64, out: &mut Vec<ShapeContact>) {
         // At most one candidate per face, so they fit on the stack.
         let mut candidates = [Candidate::default(); 6];

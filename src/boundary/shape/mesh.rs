@@ -37,6 +37,8 @@ use super::{Candidate, ShapeContact, push_distinct, within_reach};
 use crate::error::{Result, TampError};
 use crate::particles::Vec3;
 
+/// A two-sided triangle mesh with a uniform cell grid for finding the triangles near
+/// a sphere.
 #[derive(Clone, Debug)]
 pub struct Mesh {
     triangles: Vec<Triangle>,
@@ -353,10 +355,12 @@ impl Mesh {
         Self::from_height_grid(x.0, y.0, dx, dy, nx, ny, &z)
     }
 
+    /// The non-degenerate triangles, in facet order.
     pub fn triangles(&self) -> &[Triangle] {
         &self.triangles
     }
 
+    /// Number of triangles.
     pub fn len(&self) -> usize {
         self.triangles.len()
     }
@@ -434,6 +438,8 @@ impl Mesh {
         });
     }
 
+    /// Append the contacts of a sphere with the mesh, one per distinct touching point
+    /// (facet = triangle index).
     pub fn contacts(&self, centre: &Vec3, radius: f64, reach: f64, out: &mut Vec<ShapeContact>) {
         let mut candidates: Vec<Candidate> = Vec::new();
         self.for_each_near(centre, radius + reach, |t| {

@@ -39,22 +39,35 @@ pub use triangle::{Feature, Triangle};
 
 use crate::particles::Vec3;
 
+/// One touching part of a shape, as the module's contract defines it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ShapeContact {
+    /// Unit normal from the surface towards the sphere centre.
     pub normal: Vec3,
+    /// Overlap δ = r − (centre-to-surface distance), m; negative across a gap.
     pub overlap: f64,
+    /// Which part of the shape is touched (box face, mesh triangle, profile segment); 0
+    /// for single-surface shapes.
     pub facet: u32,
 }
 
+/// A wall's geometry in its rest frame, one of the kinds of Zhong 2009 §3.
 #[derive(Clone, Debug)]
 pub enum Shape {
+    /// Infinite one-sided plane.
     Plane(Plane),
+    /// Inside of an axis-aligned box, some faces possibly open.
     Box(BoxShape),
+    /// Thin two-sided surface of revolution of a polyline (cylinder, cone, funnel).
     Revolved(Revolved),
+    /// Two-sided triangle mesh (polygon sets, STL files, height fields).
     Mesh(Mesh),
 }
 
 impl Shape {
+    /// Append the contacts of a sphere of centre `centre` (rest frame) and radius
+    /// `radius` with this shape, those within `reach` of it included, as the module's
+    /// contract states.
     // `always`: every sphere asks every wall every step; as a call the plane's few
     // instructions paid for the call and for reloading the centre.
     #[inline(always)]

@@ -7,8 +7,10 @@
 use super::ShapeContact;
 use crate::particles::Vec3;
 
+/// An infinite one-sided plane through a point, facing the particles.
 #[derive(Clone, Debug)]
 pub struct Plane {
+    /// A point of the plane, m.
     pub point: Vec3,
     /// Unit normal, pointing towards the particles.
     pub normal: Vec3,
@@ -21,6 +23,7 @@ impl Plane {
         (x - self.point).dot(&self.normal)
     }
 
+    /// Append the contact of a sphere with the plane (facet 0) when δ > −`reach`.
     #[inline(always)]
     pub fn contacts(&self, centre: &Vec3, radius: f64, reach: f64, out: &mut Vec<ShapeContact>) {
         let overlap = radius - self.distance(centre);

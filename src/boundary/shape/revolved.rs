@@ -34,6 +34,8 @@ use super::{Candidate, ShapeContact, perpendicular, push_distinct, within_reach}
 use crate::error::{Result, TampError};
 use crate::particles::Vec3;
 
+/// A thin two-sided surface of revolution: a polyline profile (ρ, h) turned about an
+/// axis.
 #[derive(Clone, Debug)]
 pub struct Revolved {
     origin: Vec3,
@@ -162,6 +164,7 @@ impl Revolved {
         )
     }
 
+    /// Point of the axis where h = 0, m.
     pub fn origin(&self) -> Vec3 {
         self.origin
     }
@@ -171,6 +174,7 @@ impl Revolved {
         self.axis
     }
 
+    /// The profile's (ρ, h) points: distance from the axis and height along it, m.
     pub fn profile(&self) -> &[(f64, f64)] {
         &self.profile
     }
@@ -201,6 +205,8 @@ impl Revolved {
         (rho - sr).hypot(h - sh) <= 1e-9 * self.scale
     }
 
+    /// Append the contacts of a sphere with the surface, one per distinct touching point
+    /// (facet = profile segment index).
     pub fn contacts(&self, centre: &Vec3, radius: f64, reach: f64, out: &mut Vec<ShapeContact>) {
         let (rho, h, u) = self.meridian(centre);
         let mut candidates: Vec<Candidate> = Vec::new();

@@ -23,8 +23,11 @@ use crate::particles::Vec3;
 /// first vertex: 0 = ab, 1 = bc, 2 = ca.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Feature {
+    /// Strictly inside the triangle.
     Face,
+    /// On edge k (0 = ab, 1 = bc, 2 = ca).
     Edge(u8),
+    /// At vertex k (0 = a, 1 = b, 2 = c).
     Vertex(u8),
 }
 
@@ -40,8 +43,10 @@ impl Feature {
     }
 }
 
+/// A non-degenerate triangle with its unit normal and length scale.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Triangle {
+    /// Corners a, b, c, m.
     pub vertices: [Vec3; 3],
     /// Unit normal, (b − a) × (c − a) normalised.
     pub normal: Vec3,

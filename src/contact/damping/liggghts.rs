@@ -66,10 +66,12 @@ impl LiggghtsModel {
 #[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct LiggghtsRestitution {
+    /// Coefficient of restitution e LIGGGHTS is given, in (0.05, 1].
     pub restitution: f64,
 }
 
 impl LiggghtsRestitution {
+    /// The damping `kind` in the scene file.
     pub const NAME: &str = "liggghts_restitution";
 
     /// The dashpot it is beside `normal`, or why LIGGGHTS has none.
@@ -82,6 +84,8 @@ impl LiggghtsRestitution {
         }
     }
 
+    /// The rules of `restitution`, and that the scene's normal law has a LIGGGHTS model
+    /// with this damping; `path` is where the scene holds the damping role.
     pub fn check(&self, path: &str, roles: Roles, e: &mut Errors) {
         let restitution = self.restitution;
         if !restitution_is_valid(restitution) {

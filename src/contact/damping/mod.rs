@@ -33,6 +33,7 @@ pub use viscous::{Constant, MassVelocity, Viscoelastic, Viscous};
 #[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct CriticalFraction {
+    /// Damping ratio ξ ≥ 0: the fraction of the critical damping 2√(m* k_n); 1 is critical.
     pub xi: f64,
 }
 
@@ -82,7 +83,9 @@ impl CriticalFraction {
 #[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
 pub enum Damping {
+    /// c_n = ξ · 2√(m* k_n) (Rojek eqs 6–10).
     CriticalFraction(CriticalFraction),
+    /// c_n = γ_n, a fixed coefficient (viscous.rs).
     Constant(Constant),
     /// LAMMPS's `damping mass_velocity` (viscous.rs).
     MassVelocity(MassVelocity),

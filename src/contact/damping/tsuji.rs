@@ -32,10 +32,12 @@ use crate::error::Errors;
 #[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct Tsuji {
+    /// The restitution coefficient e Marshall's fit reads, in [0, 1].
     pub restitution: f64,
 }
 
 impl Tsuji {
+    /// The damping `kind` in the scene file.
     pub const NAME: &str = "tsuji";
 
     /// The dashpot it is beside `normal`, or why LAMMPS's tsuji is not defined there.
@@ -48,6 +50,8 @@ impl Tsuji {
         })
     }
 
+    /// The rules of `restitution`, and that LAMMPS defines tsuji beside the scene's normal
+    /// law; `path` is where the scene holds the damping role.
     pub fn check(&self, path: &str, roles: Roles, e: &mut Errors) {
         let restitution = self.restitution;
         if !(0.0..=1.0).contains(&restitution) {

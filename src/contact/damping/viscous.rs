@@ -32,6 +32,7 @@ use crate::error::Errors;
 #[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct Constant {
+    /// Normal damping coefficient γ_n ≥ 0, N·s/m.
     pub gamma_n: f64,
 }
 
@@ -39,6 +40,7 @@ pub struct Constant {
 #[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct MassVelocity {
+    /// η_n0 ≥ 0, 1/s: the damping coefficient per unit effective mass.
     pub eta_n0: f64,
 }
 
@@ -46,14 +48,19 @@ pub struct MassVelocity {
 #[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct Viscoelastic {
+    /// η_n0 ≥ 0, 1/(m·s): the damping coefficient per unit effective mass and unit
+    /// contact radius.
     pub eta_n0: f64,
 }
 
 /// The compiled form of the three kinds.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Viscous {
+    /// c_n = γ_n.
     Constant(Constant),
+    /// c_n = η_n0 · m*.
     MassVelocity(MassVelocity),
+    /// c_n = η_n0 · m* · √(δR*).
     Viscoelastic(Viscoelastic),
 }
 

@@ -20,14 +20,17 @@ use crate::contact::model::{LiggghtsDeck, LiggghtsRefusal, LiggghtsScene, Needs}
 use crate::contact::registry::{self, NormalExample};
 use crate::material::PairProperties;
 
+/// Hertz elastic normal force F_n = 4/3 E* √R* δ^{3/2}, N (eq 2).
 pub fn hertz_force(overlap: f64, effective_radius: f64, effective_modulus: f64) -> f64 {
     4.0 / 3.0 * effective_modulus * (effective_radius * overlap).sqrt() * overlap
 }
 
+/// Hertz tangent stiffness k_n = dF/dδ = 2 E* √(R* δ), N/m (eq 9).
 pub fn hertz_stiffness(overlap: f64, effective_radius: f64, effective_modulus: f64) -> f64 {
     2.0 * effective_modulus * (effective_radius * overlap).sqrt()
 }
 
+/// Elastic energy stored at overlap δ, U = 8/15 E* √R* δ^{5/2}, J.
 pub fn hertz_energy(overlap: f64, effective_radius: f64, effective_modulus: f64) -> f64 {
     8.0 / 15.0 * effective_modulus * effective_radius.sqrt() * overlap.powf(2.5)
 }
@@ -37,6 +40,7 @@ pub fn hertz_overlap_at_force(force: f64, effective_radius: f64, effective_modul
     (force / (4.0 / 3.0 * effective_modulus * effective_radius.sqrt())).powf(2.0 / 3.0)
 }
 
+/// Largest overlap δ_max of an undamped head-on collision at approach speed v, m.
 pub fn hertz_max_overlap(
     effective_mass: f64,
     approach_speed: f64,
@@ -53,6 +57,7 @@ pub fn hertz_max_overlap(
 /// double precision: the test `duration_constant_is_the_gamma_expression` recomputes it.
 pub const HERTZ_DURATION_CONSTANT: f64 = 3.218_065_459_719_043_5;
 
+/// Duration t_c of an undamped head-on collision at approach speed v, s.
 pub fn hertz_contact_duration(
     effective_mass: f64,
     approach_speed: f64,

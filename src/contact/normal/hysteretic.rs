@@ -16,6 +16,7 @@ use crate::contact::registry::{self, NormalExample};
 use crate::error::Errors;
 use crate::material::PairProperties;
 
+/// Hysteretic force k_n δ (1 + γ sgn(dδ/dt)), N: stiffer while the overlap grows.
 pub fn hysteretic_force(overlap: f64, overlap_rate: f64, stiffness: f64, hysteresis: f64) -> f64 {
     let factor = if overlap_rate > 0.0 {
         1.0 + hysteresis
@@ -36,7 +37,9 @@ pub fn hysteretic_restitution(hysteresis: f64) -> f64 {
 #[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct Hysteretic {
+    /// Base normal stiffness k_n, N/m.
     pub stiffness: f64,
+    /// Hysteresis factor γ, dimensionless, in [0, 1).
     pub hysteresis: f64,
 }
 

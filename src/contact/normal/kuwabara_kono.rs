@@ -20,6 +20,7 @@ use crate::contact::registry::{self, NormalExample};
 use crate::error::Errors;
 use crate::material::PairProperties;
 
+/// Viscoelastic Hertz force k̃ (δ^{3/2} + 3/2 A δ^{1/2} dδ/dt), clamped at zero, N.
 pub fn kuwabara_kono_force(
     overlap: f64,
     overlap_rate: f64,
@@ -39,6 +40,7 @@ pub fn kuwabara_kono_force(
 #[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct KuwabaraKono {
+    /// Dissipation time A ≥ 0 of the material pair, s.
     pub dissipation_time: f64,
 }
 

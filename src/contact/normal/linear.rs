@@ -19,10 +19,12 @@ use crate::contact::registry::{self, NormalExample};
 use crate::error::Errors;
 use crate::material::PairProperties;
 
+/// Linear spring force F_n = k_n δ, N.
 pub fn linear_force(stiffness: f64, overlap: f64) -> f64 {
     stiffness * overlap
 }
 
+/// Elastic energy U = ½ k_n δ², J.
 pub fn linear_energy(stiffness: f64, overlap: f64) -> f64 {
     0.5 * stiffness * overlap * overlap
 }
@@ -31,11 +33,15 @@ pub fn linear_energy(stiffness: f64, overlap: f64) -> f64 {
 /// decay rate β = γ_n / (2 m*), damped frequency ω = √(ω₀² − β²).
 #[derive(Clone, Copy, Debug)]
 pub struct LinearCollision {
+    /// Undamped natural frequency ω₀ = √(k_n/m*), rad/s.
     pub omega0: f64,
+    /// Decay rate β = γ_n/(2m*), 1/s.
     pub beta: f64,
 }
 
 impl LinearCollision {
+    /// The oscillator of a contact with stiffness k_n (N/m), effective mass m* (kg) and
+    /// dashpot γ_n (N·s/m).
     pub fn new(stiffness: f64, effective_mass: f64, gamma_n: f64) -> Self {
         LinearCollision {
             omega0: (stiffness / effective_mass).sqrt(),
@@ -43,6 +49,7 @@ impl LinearCollision {
         }
     }
 
+    /// Damped frequency ω = √(ω₀² − β²), rad/s (NaN when overdamped, β > ω₀).
     pub fn damped_frequency(&self) -> f64 {
         (self.omega0.powi(2) - self.beta.powi(2)).sqrt()
     }
@@ -114,6 +121,7 @@ fn characteristic_velocity(
 #[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct Linear {
+    /// Normal spring stiffness k_n, N/m.
     pub stiffness: f64,
 }
 

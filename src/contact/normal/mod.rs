@@ -30,6 +30,7 @@ pub use walton_braun::WaltonBraun;
 /// branch, m (Walton–Braun, Storåkers).
 #[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct PeakOverlap {
+    /// Largest overlap δ_max reached so far, m.
     pub max_overlap: f64,
 }
 
@@ -75,6 +76,7 @@ macro_rules! each_normal {
 }
 
 impl NormalLaw {
+    /// See `NormalModel::name`.
     pub fn name(&self) -> &'static str {
         each_normal!(self, n => n.name())
     }

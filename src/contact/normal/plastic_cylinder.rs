@@ -41,7 +41,9 @@ pub fn loading_stiffness(overlap: f64, effective_radius: f64, yield_stress: f64)
 /// The normal response of a contact that has been loaded to `max_overlap`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PlasticCylinderResponse {
+    /// Normal force per unit depth F_N, N/m.
     pub force: f64,
+    /// Tangent stiffness per unit depth dF_N/du_N, N/m².
     pub stiffness: f64,
     /// The largest overlap after this state (u_max, or u_N when loading further).
     pub max_overlap: f64,

@@ -60,11 +60,16 @@ pub fn storakers_overlap_at_force(force: f64, effective_radius: f64, hollomon: H
     (force / c).powf(1.0 / (1.0 + 0.5 * hollomon.exponent))
 }
 
+/// The Storåkers law at one contact, with the pair's R*, E* and σ0*, m fixed.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StorakersContact {
+    /// Effective radius R*, m.
     pub effective_radius: f64,
+    /// Effective modulus E* of the elastic (Hertz) unloading branch and cap, Pa.
     pub effective_modulus: f64,
+    /// Effective Hollomon constants σ0* and m of the pair.
     pub hollomon: Hollomon,
+    /// Whether the loading force is min(F_p, F_Hertz).
     pub min_with_hertz: bool,
 }
 
@@ -129,7 +134,9 @@ impl StorakersContact {
 /// One head-on impact on a Storåkers contact, from its curves (`StorakersContact::impact`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StorakersImpact {
+    /// Largest overlap δ_max of the impact, m.
     pub max_overlap: f64,
+    /// Largest normal force F_max of the impact, N.
     pub max_force: f64,
     /// From first touch until the overlap closes, s.
     pub duration: f64,
@@ -269,6 +276,7 @@ impl StorakersContact {
 #[derive(Clone, Copy, Debug, Default, PartialEq, serde::Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct Storakers {
+    /// Cap the plastic loading force by the Hertz force (default false).
     #[serde(default)]
     pub min_with_hertz: bool,
 }

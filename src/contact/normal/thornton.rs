@@ -194,8 +194,11 @@ impl crate::contact::model::ContactState for ThorntonState {}
 /// The law at one contact: R*, E* and p_y.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ThorntonContact {
+    /// Effective radius R*, m.
     pub effective_radius: f64,
+    /// Effective modulus E*, Pa.
     pub effective_modulus: f64,
+    /// Limiting contact pressure p_y, Pa.
     pub yield_pressure: f64,
 }
 
@@ -390,7 +393,9 @@ impl ThorntonContact {
 #[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct Thornton {
+    /// Limiting contact pressure p_y, Pa (> 0).
     pub yield_pressure: f64,
+    /// Unloading and reloading form after yield (default `thornton_1997`).
     #[serde(default)]
     pub unloading: Unloading,
 }

@@ -37,6 +37,8 @@ pub fn walton_braun_response(
     }
 }
 
+/// Energy recoverable by unloading from `overlap`, ½ k₂ (δ − δ₀)², J, with δ₀ the
+/// permanent set of the largest overlap reached (this one included).
 pub fn walton_braun_energy(
     overlap: f64,
     max_overlap: f64,
@@ -51,7 +53,9 @@ pub fn walton_braun_energy(
 #[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct WaltonBraun {
+    /// Loading stiffness k₁ of the virgin branch, N/m.
     pub loading_stiffness: f64,
+    /// Unloading and reloading stiffness k₂ ≥ k₁, N/m.
     pub unloading_stiffness: f64,
 }
 

@@ -12,6 +12,7 @@ use crate::contact::registry::{self, TangentialExample};
 
 use crate::particles::Vec3;
 
+/// Kinetic friction force −μ max(F_n, 0) v_t/|v_t| on particle i, N; zero when v_t = 0.
 #[inline]
 pub fn coulomb_force(tangential_velocity: &Vec3, friction: f64, normal_force: f64) -> Vec3 {
     let speed = tangential_velocity.norm();

@@ -62,6 +62,7 @@ pub fn cundall_strack_force(
 #[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct CundallStrack {
+    /// Tangential spring stiffness k_s, N/m.
     pub stiffness: f64,
 }
 

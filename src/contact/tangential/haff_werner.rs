@@ -15,6 +15,8 @@ use crate::error::Errors;
 
 use crate::particles::Vec3;
 
+/// Viscous friction −min(γ_s |v_t|, μ max(F_n, 0)) v_t/|v_t| on particle i, N; zero
+/// when v_t = 0.
 #[inline]
 pub fn haff_werner_force(
     tangential_velocity: &Vec3,
@@ -34,6 +36,7 @@ pub fn haff_werner_force(
 #[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct HaffWerner {
+    /// Tangential damping coefficient γ_s, N·s/m.
     pub damping: f64,
 }
 

@@ -43,6 +43,9 @@ pub fn incremental_step(force: &mut Vec3, input: &TangentialInput, stiffness: f6
     )
 }
 
+/// One step of Rojek's eq 11 on the stored force: rotate it into the plane normal to
+/// `normal`, add −k_t v_t Δt, cap it to μ max(F_n, 0). Returns the new tangential
+/// force on particle i, N, which is also the new state.
 #[inline]
 pub fn incremental_force(
     force: &mut Vec3,

@@ -119,6 +119,7 @@ impl Variant {
         }
     }
 
+    /// Every variant, in LAMMPS's order.
     pub const ALL: [Variant; 4] = [
         Variant::Mindlin,
         Variant::MindlinForce,
@@ -139,6 +140,7 @@ impl Variant {
 #[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct LammpsMindlin {
+    /// Which of LAMMPS's four Mindlin models.
     pub variant: Variant,
     /// x_γ,t: the tangential dashpot over the normal one, γ_t = x_γ,t η_n; 0 (no
     /// dashpot) when absent.
@@ -151,7 +153,9 @@ pub struct LammpsMindlin {
 /// `history[3]`), m.
 #[derive(Clone, Copy, Debug, Default, PartialEq, serde::Deserialize, serde::Serialize)]
 pub struct MindlinHistory {
+    /// The history h: a displacement (m), or a force (N) for the force variants.
     pub history: Vec3,
+    /// Contact radius a = √(R*δ) at the last update, m (rescale variants only).
     pub contact_radius: f64,
 }
 

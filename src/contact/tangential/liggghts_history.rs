@@ -105,8 +105,11 @@ pub fn liggghts_history_force(
 #[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct LiggghtsHistory {
+    /// The LIGGGHTS normal model whose k_t is used, bound from the normal law.
     #[serde(skip)]
     pub model: LiggghtsModel,
+    /// Damping ratio ξ of the tangential dashpot, bound from the damping role (NaN until
+    /// bound).
     #[serde(skip, default = "unbound")]
     pub xi: f64,
 }
@@ -137,7 +140,9 @@ impl LiggghtsHistory {
 /// A combination of roles LIGGGHTS's `tangential history` is not defined with, and why.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Refused {
+    /// The normal law has no LIGGGHTS `model` with this tangential history.
     NormalLaw(String),
+    /// The damping kind is not LIGGGHTS's restitution damping.
     Damping(String),
 }
 

@@ -28,6 +28,8 @@ use super::scalar_axis::{finish, split};
 use crate::particles::Vec3;
 use std::ops::ControlFlow;
 
+/// One step of eq 19 along the loading axis, with initial stiffness k₀ = 8G*a
+/// (`initial_stiffness`, N/m). Returns the tangential force on particle i, N.
 #[inline]
 pub fn mindlin_deresiewicz_force(
     history: &mut ScalarAxisState,

@@ -16,6 +16,7 @@ use crate::contact::model::Needs;
 use crate::contact::registry::{self, TangentialExample};
 use crate::particles::Vec3;
 
+/// No-slip tangential stiffness k_t = 8 G* √(R* δ), N/m (eq 12).
 pub fn mindlin_no_slip_stiffness(
     overlap: f64,
     effective_radius: f64,

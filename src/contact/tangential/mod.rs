@@ -83,16 +83,23 @@ macro_rules! each_tangential {
 /// What a tangential law reads from the contact besides its state.
 #[derive(Clone, Copy, Debug)]
 pub struct TangentialInput {
+    /// Unit normal n from the partner to particle i.
     pub normal: Vec3,
+    /// Tangential relative velocity v_t of i's contact point, m/s.
     pub tangential_velocity: Vec3,
+    /// Time step Δt, s.
     pub dt: f64,
+    /// Coulomb friction coefficient μ of the pair.
     pub friction: f64,
     /// Total normal force (elastic + damping), N.
     pub normal_force: f64,
     /// Tangent stiffness of the normal law, N/m.
     pub normal_stiffness: f64,
+    /// Overlap δ, m.
     pub overlap: f64,
+    /// Effective radius R*, m.
     pub effective_radius: f64,
+    /// Effective shear modulus G*, Pa (0 when the materials have no elastic constants).
     pub effective_shear_modulus: f64,
     /// m*, kg (the tangential damping of `liggghts_history`).
     pub effective_mass: f64,
@@ -108,6 +115,7 @@ impl TangentialLaw {
         each_tangential!(self, t => t.lammps())
     }
 
+    /// See `TangentialModel::name`.
     pub fn name(&self) -> &'static str {
         each_tangential!(self, t => t.name())
     }

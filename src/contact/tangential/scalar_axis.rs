@@ -40,6 +40,7 @@ pub struct ScalarAxisState {
     pub turning_force: f64,
     /// Normal force at the previous step, N (its increment ΔF_n drives Mindlin–Deresiewicz).
     pub previous_normal_force: f64,
+    /// Loading branch k: first loading, unloading or reloading.
     pub branch: TangentialBranch,
     /// Unit loading axis.
     pub axis: Vec3,
@@ -64,9 +65,13 @@ impl ContactState for ScalarAxisState {
 
 /// Displacement increment split on the axis: (ê, along, across).
 pub struct AxisIncrement {
+    /// Unit loading axis ê in the current contact plane.
     pub axis: Vec3,
+    /// Stored force along ê, N (signed).
     pub force_along: f64,
+    /// Displacement increment along ê, m (signed).
     pub along: f64,
+    /// Part of the displacement increment across ê, m.
     pub across: Vec3,
 }
 

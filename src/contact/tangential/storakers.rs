@@ -15,6 +15,7 @@ use crate::contact::registry::{self, TangentialExample};
 use crate::error::Errors;
 use crate::particles::Vec3;
 
+/// Tangential stiffness k_t = β k_n, N/m (eq 21).
 pub fn storakers_tangential_stiffness(beta: f64, normal_stiffness: f64) -> f64 {
     beta * normal_stiffness
 }
@@ -23,6 +24,7 @@ pub fn storakers_tangential_stiffness(beta: f64, normal_stiffness: f64) -> f64 {
 #[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct Storakers {
+    /// Ratio β = k_t/k_n of tangential to normal stiffness, dimensionless.
     pub beta: f64,
 }
 

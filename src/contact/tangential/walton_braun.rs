@@ -23,6 +23,8 @@ use super::scalar_axis::{finish, split};
 use crate::particles::Vec3;
 use std::ops::ControlFlow;
 
+/// One step of eqs 26–27 along the loading axis, with initial stiffness k₀
+/// (`initial_stiffness`, N/m). Returns the tangential force on particle i, N.
 #[inline]
 pub fn walton_braun_tangential_force(
     history: &mut ScalarAxisState,
@@ -69,6 +71,7 @@ pub fn walton_braun_tangential_force(
 #[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct WaltonBraun {
+    /// Initial tangential stiffness k₀, N/m.
     pub stiffness: f64,
 }
 
