@@ -21,8 +21,7 @@
 //!   pair: v_c = v_i − v_j − (R_i ω_i + R_j ω_j) × n,  T_{i,j} = −(R_{i,j} − δ/2) n × F_t
 //!   wall: v_c = v_i − v_w − R_i ω_i × n,              T_i = −R_i n × F_t
 //!
-//! The two differ by δ/R in the spin terms, of order 1e-3 in a stiff impact
-//! (docs/lammps.md, behaviours found).
+//! The two differ by δ/R in the spin terms (docs/lammps.md, behaviours found).
 
 /// The scene's convention (`contact.lever_arm`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Deserialize, serde::Serialize)]

@@ -8,9 +8,8 @@
 //!       for Hertz contacts; e is the `damp` coefficient of the normal model)
 //!   η = d √(m* F_n/δ),  F_d = η dδ/dt   (F_n the elastic normal force)
 //!
-//! d is not exactly the damping that gives restitution e: LAMMPS's own fit. Measured in
-//! the two-sphere case (verification/lammps_two_sphere_hertz.json), e = 0.5 gives a
-//! rebound of 0.616 with hertz. LAMMPS releases after 22 Jul 2025 multiply d by √2
+//! d is not exactly the damping that gives restitution e: LAMMPS's own fit (the
+//! rebound it gives is measured in docs/lammps.md, `lammps_two_sphere_hertz`). LAMMPS releases after 22 Jul 2025 multiply d by √2
 //! ("for effective mass convention (as in Tsuji 1992)"); this law is the 22 Jul 2025
 //! one, which the recorded LAMMPS runs check.
 //!

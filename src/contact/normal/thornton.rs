@@ -52,11 +52,11 @@
 //!   δ_r = [δ_max^{3/2} − 3F_max/(4E*√R*)]^{2/3},
 //! the original Hertz curve shifted *down*. The slope at the new overlap makes the
 //! sum a right Riemann sum, first order in Δδ: LIGGGHTS gains O(Δt) energy even in a
-//! purely elastic impact (e = 1.000006 at Δt = 5e-11 s in the deck of the tests).
+//! purely elastic impact (measured in docs/models/thornton.md).
 //!
 //! Which is right: the two leave the turning point with the same slope 2E*a_p but
-//! curve differently, and LIGGGHTS returns less energy: its restitution is 0.7 %
-//! (v/v_y = 1.5) to 7 % (v/v_y = 100) below Thornton's, tending to the factor √(5/6).
+//! curve differently, and LIGGGHTS returns less energy: its restitution is below
+//! Thornton's (docs/models/thornton.md), tending to the factor √(5/6) at high speed.
 //! `thornton_1997` is the paper's model (and the non-adhesive limit Thornton & Ning
 //! 1998 build on); `liggghts` is what users of that peer get, kept to cross-check
 //! against it. The cause: LIGGGHTS estimates the plastic contact radius from the

@@ -4,7 +4,8 @@
 //!
 //!   k_t = 8 G* √(R* δ) = 8 G* a          (eq 12; a = √(R* δ) the contact radius)
 //!   1/G* = (2 − ν_i)/G_i + (2 − ν_j)/G_j  (eq 13)
-//!   |F_t| ≤ μ |F_n|                      (eq 14)
+//!   |F_t| ≤ μ max(F_n, 0)                (eq 14 writes μ|F_n|; tamp's laws cap at the
+//!                                         compressive normal force, contact/model.rs)
 //!
 //! Micro-slip inside the contact is ignored (that is the full Mindlin–Deresiewicz
 //! law, `mindlin_deresiewicz.rs`). History: the tangential force vector (N).
