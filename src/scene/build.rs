@@ -1,29 +1,25 @@
-//! Assemble a `Simulation` from a validated scene: only the roles the scene names
-//! are built; random insertion uses the scene's seed.
+//! Assemble a `Simulation` from a validated scene, from the topics' builds (the
+//! material and pair tables, the walls, the space, the particles and sources): only
+//! the roles the scene names are built; random placement uses the scene's seed.
 
 use super::schema::*;
 use crate::accuracy::step::{COST_PER_PARTICLE_STEP, DEFAULT_ACCURACY, STABILITY_ALPHA};
-use crate::boundary::Boundary;
-use crate::contact::ContactLaw;
-use crate::detect::{Detector, NeighborList, locality};
+use crate::detect::{NeighborList, locality};
 use crate::error::{Result, TampError};
-use crate::generate::pour::Source;
-use crate::generate::rsi::{InsertionBox, Placed};
-use crate::generate::{ballistic, random_unit};
 use crate::growth::Growth;
 use crate::material::Material;
-use crate::output::progress::Progress;
-use crate::particles::{Motion, Particles, Vec3};
-use crate::simulation::{Simulation, StabilityLimits};
-use crate::space::Space;
-use rand::SeedableRng;
-use rand_chacha::ChaCha8Rng;
+use crate::particles::Vec3;
+use crate::simulation::Simulation;
 
+/// A built scene: the simulation ready to step, and what its build found.
 pub struct BuiltScene {
+    /// The simulation at t = 0, first forces computed.
     pub sim: Simulation,
     /// α · Δt_cr (Rojek eqs 26–29), when it can be estimated.
     pub dt_estimate: Option<f64>,
+    /// Steps the run lasts (its maximum, with `run.until`).
     pub steps: u64,
+    /// Warnings for stderr and `summary.json`.
     pub warnings: Vec<String>,
     /// How the step was chosen, when tamp chose it from an accuracy or an implied
     /// characteristic velocity: printed to stderr by `tamp run`.
@@ -34,13 +30,6 @@ pub struct BuiltScene {
 
 pub(super) fn v3(a: &[f64; 3]) -> Vec3 {
     Vec3::new(a[0], a[1], a[2])
-}
-
-fn insertion_box(region: &BoxRegion) -> InsertionBox {
-    InsertionBox {
-        lower: v3(&region.lower),
-        upper: v3(&region.upper),
-    }
 }
 
 /// Rules on what the inputs make together, checked once the scene is built: every
@@ -140,6 +129,8 @@ fn check_speeds(scene: &Scene, sim: &Simulation) -> Result<Vec<String>> {
     Ok(warnings)
 }
 
+/// The simulation a validated scene describes, its time step chosen, and what the
+/// choice printed.
 pub fn build(scene: &Scene) -> Result<BuiltScene> {
     super::memory::check(scene, None)?;
     let materials: Vec<Material> = super::materials::build(&scene.materials);
@@ -153,115 +144,10 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
     let pair_table = super::contact::pair_table(&scene.contact, &materials, &material_id);
 
     let walls = super::walls::build(&scene.walls, &material_id, &scene.base_dir)?;
-    let mut space = Space::open();
-    for (a, axis) in scene
-        .periodic
-        .iter()
-        .flat_map(|p| p.axes().into_iter().enumerate())
-    {
-        space.periodic[a] = axis.map(|[lo, hi]| (lo, hi - lo));
-    }
+    let space = super::physics::space(scene.periodic.as_ref());
 
-    let inertia_scale = scene.rotation.as_ref().map_or(1.0, |r| r.inertia_scale);
-    let mut particles = Particles::default();
-    let count = scene.particles.len()
-        + scene.insert.iter().map(|i| i.count).sum::<usize>()
-        + scene.deposit.iter().map(|d| d.count).sum::<usize>();
-    particles.try_reserve(count).map_err(|e| {
-        TampError::input(
-            "scene",
-            format!(
-                "memory for {count} particles could not be allocated ({e}); make the scene smaller"
-            ),
-        )
-    })?;
-    for p in &scene.particles {
-        let m = material_id(&p.material);
-        let motion = p
-            .prescribed_velocity
-            .map_or(Motion::Free, |v| Motion::Prescribed(v3(&v)));
-        particles.push(
-            v3(&p.position),
-            p.velocity.map_or(Vec3::zeros(), |v| v3(&v)),
-            p.omega.map_or(Vec3::zeros(), |v| v3(&v)),
-            p.radius,
-            materials[m].particle_density(),
-            m,
-            inertia_scale,
-            motion,
-        );
-    }
-    let explicit = particles.len();
-
-    let mut rng = ChaCha8Rng::seed_from_u64(scene.seed);
-    // Spheres placed before a growth stage only need to be apart at their starting size.
-    let placement_scale = scene.growth.as_ref().map_or(1.0, |g| g.initial_fraction);
-    for (k, dep) in scene.deposit.iter().enumerate() {
-        let law = dep.radius.distribution();
-        let radii: Vec<f64> = (0..dep.count).map(|_| law.sample(&mut rng)).collect();
-        let positions = ballistic::deposit(
-            &radii,
-            (dep.footprint[0], dep.footprint[1]),
-            dep.floor,
-            &space,
-            &mut rng,
-        )
-        .map_err(|rule| TampError::input(format!("deposit[{k}]"), rule))?;
-        let m = material_id(&dep.material);
-        for (x, r) in positions.into_iter().zip(radii) {
-            particles.push(
-                x,
-                Vec3::zeros(),
-                Vec3::zeros(),
-                r,
-                materials[m].particle_density(),
-                m,
-                inertia_scale,
-                Motion::Free,
-            );
-        }
-    }
-    // Explicit and deposited spheres are placed without looking at each other or at
-    // the walls; inserted ones are clear by construction, so they come after.
-    check_initial_overlaps(
-        &particles,
-        explicit,
-        &walls,
-        &space,
-        scene.stability.initial_overlap_tolerance,
-    )?;
-    let mut sources = Vec::new();
-    for (k, ins) in scene.insert.iter().enumerate() {
-        if let Some(sch) = &ins.schedule {
-            sources.push(Source {
-                region: insertion_box(&ins.region),
-                radius: ins.radius.distribution(),
-                material: material_id(&ins.material),
-                speed: ins.speed,
-                spin: ins.spin,
-                every: sch.every,
-                per_event: sch.per_event,
-                max_attempts: ins.max_attempts,
-                next: sch.start,
-                remaining: ins.count,
-                pending_radius: None,
-                rng: ChaCha8Rng::seed_from_u64(scene.seed.wrapping_add(1 + k as u64)),
-            });
-            continue;
-        }
-        insert_random(
-            &mut particles,
-            &walls,
-            &space,
-            placement_scale,
-            ins,
-            k,
-            material_id(&ins.material),
-            &materials,
-            inertia_scale,
-            &mut rng,
-        )?;
-    }
+    let (mut particles, sources) =
+        super::particles::place(scene, &materials, &material_id, &walls, &space)?;
 
     let law = scene.contact.law();
     // Particles still to be poured count: the skin must suit the smallest of them.
@@ -276,18 +162,14 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
                 .filter(|&r| r > 0.0),
         )
         .fold(f64::INFINITY, f64::min);
-    check_period(
+    super::physics::check_period(
         &space,
         &particles,
         &sources,
         &law,
         scene.broad_phase.skin_fraction * r_min,
     )?;
-    let detector = match scene.broad_phase.kind {
-        DetectorSpec::Brute => Detector::Brute,
-        DetectorSpec::Cells => Detector::Cells,
-        DetectorSpec::Multigrid => Detector::Multigrid,
-    };
+    let detector = scene.broad_phase.kind.detector();
     if scene.broad_phase.sort {
         let r_max = particles.radius.iter().cloned().fold(0.0, f64::max);
         let edge = 2.0 * r_max + scene.broad_phase.skin_fraction * r_min;
@@ -299,12 +181,7 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
         law.reach(),
         space,
     );
-    let limits = StabilityLimits {
-        max_overlap_fraction: scene.stability.max_overlap_fraction,
-        max_energy_growth: scene.stability.max_energy_growth,
-        check_every: scene.stability.check_every,
-        max_step_fraction: scene.stability.max_step_fraction,
-    };
+    let limits = scene.stability.limits();
     // A growth stage starts from the initial fraction of every radius; the
     // simulation is built at that size so no force is ever computed at full size.
     let target_radius = particles.radius.clone();
@@ -328,7 +205,7 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
     )?;
 
     sim.sources = sources;
-    sim.inertia_scale = inertia_scale;
+    sim.inertia_scale = super::physics::inertia_scale(scene.rotation.as_ref());
     if let Some(g) = &scene.growth {
         let growth = Growth {
             duration: g.duration,
@@ -459,181 +336,4 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
         notes,
         accuracy: chosen.map(|(_, choice, _)| choice),
     })
-}
-
-/// Initial overlaps among the explicit and deposited particles (through periodic
-/// faces too) and with the walls. The first `explicit` particles are named by their
-/// `particles[k]` path, the rest as deposited particles.
-fn check_initial_overlaps(
-    p: &Particles,
-    explicit: usize,
-    walls: &[Boundary],
-    space: &Space,
-    tolerance: f64,
-) -> Result<()> {
-    let path = |i: usize| {
-        if i < explicit {
-            format!("particles[{i}].position")
-        } else {
-            format!("deposit (particle {i})")
-        }
-    };
-    let pairs = crate::detect::cells::candidate_pairs_in(&p.position, &p.radius, 0.0, space);
-    let mut errors = Vec::new();
-    for (i, j) in pairs {
-        let (i, j) = (i as usize, j as usize);
-        let distance = space
-            .displacement(&p.position[i], &p.position[j])
-            .norm_squared()
-            .sqrt();
-        // Two centres at distance zero (or so close that the squared distance
-        // underflows, as the force loop computes it) leave the contact normal
-        // undefined: no tolerance makes that a contact, so it is bad input whatever
-        // the tolerance, not an instability of a run that never started.
-        if distance == 0.0 {
-            let other = path(i);
-            let other = other.trim_end_matches(".position");
-            let apart = space.displacement(&p.position[i], &p.position[j]).amax();
-            let rule = if apart == 0.0 {
-                format!("has the same centre as {other}: the contact normal is undefined")
-            } else {
-                format!(
-                    "has its centre {apart:e} m from that of {other}, too close for a contact normal (the squared distance underflows)"
-                )
-            };
-            errors.push(TampError::input(path(j), rule));
-            continue;
-        }
-        let overlap = p.radius[i] + p.radius[j] - distance;
-        let fraction = overlap / p.radius[i].min(p.radius[j]);
-        if fraction > tolerance {
-            errors.push(TampError::input(
-                path(j),
-                format!(
-                    "overlaps {} by {overlap:.4e} m ({fraction:.3e} of the smaller radius); \
-                     stability.initial_overlap_tolerance allows {tolerance:e}",
-                    path(i).trim_end_matches(".position")
-                ),
-            ));
-        }
-    }
-    for (k, wall) in walls.iter().enumerate() {
-        for i in 0..p.len() {
-            let overlap = wall.deepest_overlap(&p.position[i], p.radius[i]);
-            if overlap / p.radius[i] > tolerance {
-                errors.push(TampError::input(
-                    path(i),
-                    format!(
-                        "penetrates walls[{k}] ('{}') by {overlap:.4e} m; stability.initial_overlap_tolerance allows {tolerance:e} of the radius",
-                        wall.name
-                    ),
-                ));
-            }
-        }
-    }
-    match errors.len() {
-        0 => Ok(()),
-        1 => Err(errors.pop().unwrap()),
-        _ => Err(TampError::InputMany(errors)),
-    }
-}
-
-/// Random sequential insertion of an `insert` block at t = 0 (`generate::rsi`).
-#[allow(clippy::too_many_arguments)]
-fn insert_random(
-    particles: &mut Particles,
-    walls: &[Boundary],
-    space: &Space,
-    placement_scale: f64,
-    ins: &InsertSpec,
-    index: usize,
-    material: usize,
-    materials: &[Material],
-    inertia_scale: f64,
-    rng: &mut ChaCha8Rng,
-) -> Result<()> {
-    let region = insertion_box(&ins.region);
-    let law = ins.radius.distribution();
-    let clear = |x: &Vec3, r: f64| Boundary::clear_of_all(walls, x, r);
-    let mut placed = Placed::with(
-        space,
-        &particles.position,
-        &particles.radius,
-        law.max_radius(),
-    );
-    let mut progress = Progress::new(&format!("insert[{index}]"), ins.count as u64, false);
-    for count in 0..ins.count {
-        let r = law.sample(rng);
-        let position = placed
-            .place(r, &region, &clear, placement_scale, rng, ins.max_attempts)
-            .ok_or_else(|| {
-                TampError::input(
-                    format!("insert[{index}].count"),
-                    format!(
-                        "placed only {count} of {} particles in {} attempts; the region is too full",
-                        ins.count, ins.max_attempts
-                    ),
-                )
-            })?;
-        if count % 1024 == 0 {
-            progress.set(count as u64);
-        }
-        let velocity = random_unit(rng) * ins.speed;
-        let omega = random_unit(rng) * ins.spin;
-        particles.push(
-            position,
-            velocity,
-            omega,
-            r,
-            materials[material].particle_density(),
-            material,
-            inertia_scale,
-            Motion::Free,
-        );
-    }
-    progress.finish();
-    Ok(())
-}
-
-/// The minimum-image convention needs every interaction range below half the
-/// period: L > 2 (2 R_max + skin + reach), R_max counting particles still to be
-/// poured. Particles must start inside the periodic interval.
-fn check_period(
-    space: &Space,
-    p: &Particles,
-    sources: &[Source],
-    law: &ContactLaw,
-    skin: f64,
-) -> Result<()> {
-    let r_max = p
-        .radius
-        .iter()
-        .cloned()
-        .chain(sources.iter().map(|s| s.radius.max_radius()))
-        .fold(0.0, f64::max);
-    let range = 2.0 * r_max + skin + law.reach();
-    for (a, axis) in space.periodic.iter().enumerate() {
-        let Some((lo, length)) = *axis else { continue };
-        let name = ["x", "y", "z"][a];
-        if length <= 2.0 * range {
-            return Err(TampError::input(
-                format!("periodic.{name}"),
-                format!(
-                    "the period {length:e} m must exceed twice the interaction range 2·R_max + skin + cohesion reach = {range:e} m"
-                ),
-            ));
-        }
-        let hi = lo + length;
-        if let Some(i) = (0..p.len()).find(|&i| !(p.position[i][a] >= lo && p.position[i][a] < hi))
-        {
-            return Err(TampError::input(
-                format!("periodic.{name}"),
-                format!(
-                    "particle {i} starts outside [{lo:e}, {hi:e}) at {name} = {:e}",
-                    p.position[i][a]
-                ),
-            ));
-        }
-    }
-    Ok(())
 }

@@ -7,10 +7,21 @@
 //!             "region": {"lower": [0, 0, 0.01], "upper": [0.02, 0.02, 0.05]}}]
 //! ```
 
+use super::build::v3;
 use super::materials::MaterialNames;
 use super::schema::Scene;
-use crate::error::Errors;
+use crate::boundary::Boundary;
+use crate::error::{Errors, Result, TampError};
 use crate::generate::distribution::SizeDistribution;
+use crate::generate::pour::Source;
+use crate::generate::rsi::{InsertionBox, Placed};
+use crate::generate::{ballistic, random_unit};
+use crate::material::Material;
+use crate::output::progress::Progress;
+use crate::particles::{Motion, Particles, Vec3};
+use crate::space::Space;
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 
 /// One particle given explicitly.
@@ -271,4 +282,260 @@ fn radius_law_max(e: &mut Errors, path: &str, radius: &RadiusSpec) -> f64 {
         return 0.0;
     }
     r_max
+}
+
+/// The particles at t = 0 and the pouring sources, drawn from the scene's seed in
+/// the file's order: explicit particles, deposits, then inserts (poured ones become
+/// sources with their own seed). Explicit and deposited spheres must not overlap
+/// each other or the walls beyond `stability.initial_overlap_tolerance`.
+pub fn place(
+    scene: &Scene,
+    materials: &[Material],
+    material_id: &dyn Fn(&str) -> usize,
+    walls: &[Boundary],
+    space: &Space,
+) -> Result<(Particles, Vec<Source>)> {
+    let inertia_scale = super::physics::inertia_scale(scene.rotation.as_ref());
+    let mut particles = Particles::default();
+    let count = scene.particles.len()
+        + scene.insert.iter().map(|i| i.count).sum::<usize>()
+        + scene.deposit.iter().map(|d| d.count).sum::<usize>();
+    particles.try_reserve(count).map_err(|e| {
+        TampError::input(
+            "scene",
+            format!(
+                "memory for {count} particles could not be allocated ({e}); make the scene smaller"
+            ),
+        )
+    })?;
+    for p in &scene.particles {
+        let m = material_id(&p.material);
+        let motion = p
+            .prescribed_velocity
+            .map_or(Motion::Free, |v| Motion::Prescribed(v3(&v)));
+        particles.push(
+            v3(&p.position),
+            p.velocity.map_or(Vec3::zeros(), |v| v3(&v)),
+            p.omega.map_or(Vec3::zeros(), |v| v3(&v)),
+            p.radius,
+            materials[m].particle_density(),
+            m,
+            inertia_scale,
+            motion,
+        );
+    }
+    let explicit = particles.len();
+
+    let mut rng = ChaCha8Rng::seed_from_u64(scene.seed);
+    // Spheres placed before a growth stage only need to be apart at their starting size.
+    let placement_scale = scene.growth.as_ref().map_or(1.0, |g| g.initial_fraction);
+    for (k, dep) in scene.deposit.iter().enumerate() {
+        let law = dep.radius.distribution();
+        let radii: Vec<f64> = (0..dep.count).map(|_| law.sample(&mut rng)).collect();
+        let positions = ballistic::deposit(
+            &radii,
+            (dep.footprint[0], dep.footprint[1]),
+            dep.floor,
+            space,
+            &mut rng,
+        )
+        .map_err(|rule| TampError::input(format!("deposit[{k}]"), rule))?;
+        let m = material_id(&dep.material);
+        for (x, r) in positions.into_iter().zip(radii) {
+            particles.push(
+                x,
+                Vec3::zeros(),
+                Vec3::zeros(),
+                r,
+                materials[m].particle_density(),
+                m,
+                inertia_scale,
+                Motion::Free,
+            );
+        }
+    }
+    // Explicit and deposited spheres are placed without looking at each other or at
+    // the walls; inserted ones are clear by construction, so they come after.
+    check_initial_overlaps(
+        &particles,
+        explicit,
+        walls,
+        space,
+        scene.stability.initial_overlap_tolerance,
+    )?;
+    let mut sources = Vec::new();
+    for (k, ins) in scene.insert.iter().enumerate() {
+        if let Some(sch) = &ins.schedule {
+            sources.push(Source {
+                region: insertion_box(&ins.region),
+                radius: ins.radius.distribution(),
+                material: material_id(&ins.material),
+                speed: ins.speed,
+                spin: ins.spin,
+                every: sch.every,
+                per_event: sch.per_event,
+                max_attempts: ins.max_attempts,
+                next: sch.start,
+                remaining: ins.count,
+                pending_radius: None,
+                rng: ChaCha8Rng::seed_from_u64(scene.seed.wrapping_add(1 + k as u64)),
+            });
+            continue;
+        }
+        insert_random(
+            &mut particles,
+            walls,
+            space,
+            placement_scale,
+            ins,
+            k,
+            material_id(&ins.material),
+            materials,
+            inertia_scale,
+            &mut rng,
+        )?;
+    }
+
+    Ok((particles, sources))
+}
+
+fn insertion_box(region: &BoxRegion) -> InsertionBox {
+    InsertionBox {
+        lower: v3(&region.lower),
+        upper: v3(&region.upper),
+    }
+}
+
+/// Initial overlaps among the explicit and deposited particles (through periodic
+/// faces too) and with the walls. The first `explicit` particles are named by their
+/// `particles[k]` path, the rest as deposited particles.
+fn check_initial_overlaps(
+    p: &Particles,
+    explicit: usize,
+    walls: &[Boundary],
+    space: &Space,
+    tolerance: f64,
+) -> Result<()> {
+    let path = |i: usize| {
+        if i < explicit {
+            format!("particles[{i}].position")
+        } else {
+            format!("deposit (particle {i})")
+        }
+    };
+    let pairs = crate::detect::cells::candidate_pairs_in(&p.position, &p.radius, 0.0, space);
+    let mut errors = Vec::new();
+    for (i, j) in pairs {
+        let (i, j) = (i as usize, j as usize);
+        let distance = space
+            .displacement(&p.position[i], &p.position[j])
+            .norm_squared()
+            .sqrt();
+        // Two centres at distance zero (or so close that the squared distance
+        // underflows, as the force loop computes it) leave the contact normal
+        // undefined: no tolerance makes that a contact, so it is bad input whatever
+        // the tolerance, not an instability of a run that never started.
+        if distance == 0.0 {
+            let other = path(i);
+            let other = other.trim_end_matches(".position");
+            let apart = space.displacement(&p.position[i], &p.position[j]).amax();
+            let rule = if apart == 0.0 {
+                format!("has the same centre as {other}: the contact normal is undefined")
+            } else {
+                format!(
+                    "has its centre {apart:e} m from that of {other}, too close for a contact normal (the squared distance underflows)"
+                )
+            };
+            errors.push(TampError::input(path(j), rule));
+            continue;
+        }
+        let overlap = p.radius[i] + p.radius[j] - distance;
+        let fraction = overlap / p.radius[i].min(p.radius[j]);
+        if fraction > tolerance {
+            errors.push(TampError::input(
+                path(j),
+                format!(
+                    "overlaps {} by {overlap:.4e} m ({fraction:.3e} of the smaller radius); \
+                     stability.initial_overlap_tolerance allows {tolerance:e}",
+                    path(i).trim_end_matches(".position")
+                ),
+            ));
+        }
+    }
+    for (k, wall) in walls.iter().enumerate() {
+        for i in 0..p.len() {
+            let overlap = wall.deepest_overlap(&p.position[i], p.radius[i]);
+            if overlap / p.radius[i] > tolerance {
+                errors.push(TampError::input(
+                    path(i),
+                    format!(
+                        "penetrates walls[{k}] ('{}') by {overlap:.4e} m; stability.initial_overlap_tolerance allows {tolerance:e} of the radius",
+                        wall.name
+                    ),
+                ));
+            }
+        }
+    }
+    match errors.len() {
+        0 => Ok(()),
+        1 => Err(errors.pop().unwrap()),
+        _ => Err(TampError::InputMany(errors)),
+    }
+}
+
+/// Random sequential insertion of an `insert` block at t = 0 (`generate::rsi`).
+#[allow(clippy::too_many_arguments)]
+fn insert_random(
+    particles: &mut Particles,
+    walls: &[Boundary],
+    space: &Space,
+    placement_scale: f64,
+    ins: &InsertSpec,
+    index: usize,
+    material: usize,
+    materials: &[Material],
+    inertia_scale: f64,
+    rng: &mut ChaCha8Rng,
+) -> Result<()> {
+    let region = insertion_box(&ins.region);
+    let law = ins.radius.distribution();
+    let clear = |x: &Vec3, r: f64| Boundary::clear_of_all(walls, x, r);
+    let mut placed = Placed::with(
+        space,
+        &particles.position,
+        &particles.radius,
+        law.max_radius(),
+    );
+    let mut progress = Progress::new(&format!("insert[{index}]"), ins.count as u64, false);
+    for count in 0..ins.count {
+        let r = law.sample(rng);
+        let position = placed
+            .place(r, &region, &clear, placement_scale, rng, ins.max_attempts)
+            .ok_or_else(|| {
+                TampError::input(
+                    format!("insert[{index}].count"),
+                    format!(
+                        "placed only {count} of {} particles in {} attempts; the region is too full",
+                        ins.count, ins.max_attempts
+                    ),
+                )
+            })?;
+        if count % 1024 == 0 {
+            progress.set(count as u64);
+        }
+        let velocity = random_unit(rng) * ins.speed;
+        let omega = random_unit(rng) * ins.spin;
+        particles.push(
+            position,
+            velocity,
+            omega,
+            r,
+            materials[material].particle_density(),
+            material,
+            inertia_scale,
+            Motion::Free,
+        );
+    }
+    progress.finish();
+    Ok(())
 }

@@ -8,7 +8,11 @@
 //! ```
 
 use super::schema::Scene;
-use crate::error::Errors;
+use crate::contact::ContactLaw;
+use crate::error::{Errors, Result, TampError};
+use crate::generate::pour::Source;
+use crate::particles::Particles;
+use crate::space::Space;
 use serde::{Deserialize, Serialize};
 
 /// Periodic axes, each `[lo, hi]` in m; absent axes are open.
@@ -57,6 +61,12 @@ fn one() -> f64 {
     1.0
 }
 
+/// The factor on every moment of inertia: the scene's, or 1 (also without rotation,
+/// where the inertia is never used).
+pub fn inertia_scale(rotation: Option<&RotationSpec>) -> f64 {
+    rotation.map_or(1.0, |r| r.inertia_scale)
+}
+
 /// Gravity finite, periods of positive length, growth and rotation in range.
 pub fn validate(scene: &Scene, e: &mut Errors) {
     if let Some(g) = &scene.gravity {
@@ -90,4 +100,59 @@ pub fn validate(scene: &Scene, e: &mut Errors) {
     if let Some(r) = &scene.rotation {
         e.positive("rotation.inertia_scale", r.inertia_scale);
     }
+}
+
+/// The periodic space of the scene (open along every axis it does not name).
+pub fn space(periodic: Option<&PeriodicSpec>) -> Space {
+    let mut space = Space::open();
+    for (a, axis) in periodic
+        .iter()
+        .flat_map(|p| p.axes().into_iter().enumerate())
+    {
+        space.periodic[a] = axis.map(|[lo, hi]| (lo, hi - lo));
+    }
+    space
+}
+
+/// The minimum-image convention needs every interaction range below half the
+/// period: L > 2 (2 R_max + skin + reach), R_max counting particles still to be
+/// poured. Particles must start inside the periodic interval.
+pub fn check_period(
+    space: &Space,
+    p: &Particles,
+    sources: &[Source],
+    law: &ContactLaw,
+    skin: f64,
+) -> Result<()> {
+    let r_max = p
+        .radius
+        .iter()
+        .cloned()
+        .chain(sources.iter().map(|s| s.radius.max_radius()))
+        .fold(0.0, f64::max);
+    let range = 2.0 * r_max + skin + law.reach();
+    for (a, axis) in space.periodic.iter().enumerate() {
+        let Some((lo, length)) = *axis else { continue };
+        let name = ["x", "y", "z"][a];
+        if length <= 2.0 * range {
+            return Err(TampError::input(
+                format!("periodic.{name}"),
+                format!(
+                    "the period {length:e} m must exceed twice the interaction range 2·R_max + skin + cohesion reach = {range:e} m"
+                ),
+            ));
+        }
+        let hi = lo + length;
+        if let Some(i) = (0..p.len()).find(|&i| !(p.position[i][a] >= lo && p.position[i][a] < hi))
+        {
+            return Err(TampError::input(
+                format!("periodic.{name}"),
+                format!(
+                    "particle {i} starts outside [{lo:e}, {hi:e}) at {name} = {:e}",
+                    p.position[i][a]
+                ),
+            ));
+        }
+    }
+    Ok(())
 }

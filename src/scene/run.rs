@@ -9,6 +9,7 @@
 //! ```
 
 use super::schema::Scene;
+use crate::detect::Detector;
 use crate::error::Errors;
 use crate::simulation::StabilityLimits;
 use crate::until::UntilSpec;
@@ -105,6 +106,17 @@ impl Default for BroadPhaseSpec {
     }
 }
 
+impl DetectorSpec {
+    /// The detector the neighbour list runs.
+    pub fn detector(self) -> Detector {
+        match self {
+            DetectorSpec::Brute => Detector::Brute,
+            DetectorSpec::Cells => Detector::Cells,
+            DetectorSpec::Multigrid => Detector::Multigrid,
+        }
+    }
+}
+
 fn default_detector() -> DetectorSpec {
     DetectorSpec::Cells
 }
@@ -156,6 +168,18 @@ impl Default for StabilitySpec {
             check_every: default_check_every(),
             max_step_fraction: default_max_step_fraction(),
             initial_overlap_tolerance: default_initial_overlap(),
+        }
+    }
+}
+
+impl StabilitySpec {
+    /// The limits the simulation checks as it runs.
+    pub fn limits(&self) -> StabilityLimits {
+        StabilityLimits {
+            max_overlap_fraction: self.max_overlap_fraction,
+            max_energy_growth: self.max_energy_growth,
+            check_every: self.check_every,
+            max_step_fraction: self.max_step_fraction,
         }
     }
 }
