@@ -81,20 +81,7 @@ fn prescribed_partner_damps_like_a_wall() {
 #[test]
 fn lammps_tangential_dashpots_count_in_the_critical_step() {
     let estimate = |x_gamma_t: f64| {
-        build(json!({
-            "materials": [{"name": "m", "density": 2500, "youngs_modulus": 1e7, "poisson_ratio": 0.3}],
-            "contact": {
-                "normal": {"law": "linear", "stiffness": 1e4},
-                "damping": {"kind": "constant", "gamma_n": 0.1},
-                "tangential": {"law": "lammps_linear_history", "stiffness": 1e4, "x_gamma_t": x_gamma_t, "friction": 0.3},
-                "lever_arm": "lammps"
-            },
-            "particles": [{"position": [0, 0, 0], "radius": 0.001, "material": "m"}],
-            "rotation": {},
-            "time_step": {"alpha": 1.0}, "run": {"steps": 1}
-        }))
-        .dt_estimate
-        .expect("a linear law has a stiffness")
+        free_sphere_step_estimate(json!({"kind": "constant", "gamma_n": 0.1}), x_gamma_t)
     };
     let m = 2500.0 * 4.0 / 3.0 * std::f64::consts::PI * 1e-9;
     let k = 3.5 * 1e4;
@@ -125,22 +112,7 @@ fn lammps_tangential_dashpots_count_in_the_critical_step() {
 #[test]
 fn mass_scaled_dashpots_count_in_the_critical_step() {
     let m = 2500.0 * 4.0 / 3.0 * std::f64::consts::PI * 1e-9;
-    let estimate = |damping: serde_json::Value| {
-        build(json!({
-            "materials": [{"name": "m", "density": 2500, "youngs_modulus": 1e7, "poisson_ratio": 0.3}],
-            "contact": {
-                "normal": {"law": "linear", "stiffness": 1e4},
-                "damping": damping,
-                "tangential": {"law": "lammps_linear_history", "stiffness": 1e4, "x_gamma_t": 0.0, "friction": 0.3},
-                "lever_arm": "lammps"
-            },
-            "particles": [{"position": [0, 0, 0], "radius": 0.001, "material": "m"}],
-            "rotation": {},
-            "time_step": {"alpha": 1.0}, "run": {"steps": 1}
-        }))
-        .dt_estimate
-        .expect("a linear law has a stiffness")
-    };
+    let estimate = |damping: serde_json::Value| free_sphere_step_estimate(damping, 0.0);
     let k = 3.5 * 1e4;
     let xi = 0.1 / (2.0 * (k * m).sqrt());
     let eq_28 = 2.0 / (k / m).sqrt() * ((1.0 + xi * xi).sqrt() - xi);
@@ -151,4 +123,24 @@ fn mass_scaled_dashpots_count_in_the_critical_step() {
     ] {
         approx::assert_relative_eq!(estimate(damping.clone()), eq_28, max_relative = 1e-12);
     }
+}
+
+/// The critical-step estimate (α = 1) of one free sphere (R = 1 mm, ρ = 2500) with
+/// `linear` k_n = 1e4 N/m, the dashpot `damping` and `lammps_linear_history` k_t =
+/// 1e4 N/m with its tangential dashpot x_γ,t.
+fn free_sphere_step_estimate(damping: serde_json::Value, x_gamma_t: f64) -> f64 {
+    build(json!({
+        "materials": [{"name": "m", "density": 2500, "youngs_modulus": 1e7, "poisson_ratio": 0.3}],
+        "contact": {
+            "normal": {"law": "linear", "stiffness": 1e4},
+            "damping": damping,
+            "tangential": {"law": "lammps_linear_history", "stiffness": 1e4, "x_gamma_t": x_gamma_t, "friction": 0.3},
+            "lever_arm": "lammps"
+        },
+        "particles": [{"position": [0, 0, 0], "radius": 0.001, "material": "m"}],
+        "rotation": {},
+        "time_step": {"alpha": 1.0}, "run": {"steps": 1}
+    }))
+    .dt_estimate
+    .expect("a linear law has a stiffness")
 }
