@@ -1,41 +1,32 @@
-//! tamp: a verification-first discrete element method reference implementation for
-//! powder packing and cold die compaction. See README.md and docs/architecture.md.
+//! tamp: what checks tamp's DEM core (the `tamp-core` crate) and connects it to other
+//! codes: verification cases with independent references, studies of accuracy and cost,
+//! the LIGGGHTS and LAMMPS exports and cross-checks, comparison of dumps, plots and
+//! pictures. See README.md and docs/architecture.md.
+//!
+//! The core's modules are re-exported under their own names, so `tamp::scene` and
+//! `crate::scene` name the same module as `tamp_core::scene`.
 
-pub mod accuracy;
-pub mod boundary;
-pub mod checkpoint;
+pub use tamp_core::{
+    GIT_COMMIT, Result, SOURCE_TREE, TampError, VERSION, accuracy, boundary, checkpoint, contact,
+    detect, error, expression, generate, growth, integrate, interrupt, material, measure, output,
+    particles, process, quadrature, quasistatic, run, scene, simulation, space, timestep, until,
+};
+pub use tamp_core::{each_normal, each_tangential};
+
 pub mod compare;
-pub mod contact;
-pub mod detect;
-pub mod error;
-pub mod expression;
-pub mod generate;
-pub mod growth;
-pub mod integrate;
-pub mod interrupt;
 pub mod lammps;
 pub mod liggghts;
-pub mod material;
-pub mod measure;
-pub mod output;
-pub mod particles;
-pub mod process;
-pub mod quadrature;
-pub mod quasistatic;
-pub mod run;
-pub mod scene;
-pub mod simulation;
-pub mod space;
+pub mod plot;
 pub mod study;
-pub mod timestep;
-pub mod until;
 pub mod verify;
+pub mod views;
 
-pub use error::{Result, TampError};
-
-/// Version and commit this binary was built from.
-pub const VERSION: &str = env!("CARGO_PKG_VERSION");
-pub const GIT_COMMIT: &str = env!("TAMP_GIT_COMMIT");
-/// Git objects of `src/` and `Cargo.lock` this build was made from (`-dirty` when they
-/// had uncommitted changes): equal for two builds whose results must be equal.
-pub const SOURCE_TREE: &str = env!("TAMP_SOURCE_TREE");
+/// The checked-in scene `verification/<name>.scene.json`, for unit tests. It lives at the
+/// crate's root so that the exporters' tests need not import `verify`, which imports them.
+#[cfg(test)]
+pub(crate) fn checked_in_scene(name: &str) -> scene::Scene {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("verification")
+        .join(format!("{name}.scene.json"));
+    scene::load(&path).expect("a valid scene").0
+}

@@ -3,10 +3,10 @@
 
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
+use tamp::measure::sample::mean_sd;
 use tamp::particles::Vec3;
 use tamp::space::Space;
 use tamp::study::deposition_3d::{bulk, pile};
-use tamp::study::mean_sd;
 
 /// Visscher & Bolsterli (1972) report φ ≈ 0.582 for 3D steepest-descent deposition
 /// of equal spheres. Survey (`tamp study deposition-3d`, docs/generation.md): N = 10⁴ in a 12 d × 12 d

@@ -307,7 +307,7 @@ pub fn export_pressing(scene: &Scene, sha: &str, out_dir: &Path) -> Result<Expor
 mod tests {
     use super::*;
 
-    use crate::verify::checked_in_scene as scene;
+    use crate::checked_in_scene as scene;
 
     #[test]
     fn the_lammps_die_scene_is_expressible_and_the_paper_law_is_refused_by_field() {

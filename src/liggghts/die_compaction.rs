@@ -198,7 +198,7 @@ pub fn export_pressing(scene: &Scene, sha: &str, out_dir: &Path) -> Result<Expor
 mod tests {
     use super::*;
 
-    use crate::verify::checked_in_scene as scene;
+    use crate::checked_in_scene as scene;
 
     #[test]
     fn a_die_with_its_curvature_is_refused_and_a_flat_one_is_not() {

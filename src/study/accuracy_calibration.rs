@@ -157,7 +157,7 @@ pub fn section(rows: &[CalibrationRow]) -> String {
         "## Accuracy calibration: the error model of `time_step.accuracy`
 
 `tamp study accuracy-calibration --out docs` (src/study/accuracy_calibration.rs,
-the impacts in src/accuracy/calibration.rs): two equal steel spheres (R = 1 mm,
+the impacts in core/src/accuracy/calibration.rs): two equal steel spheres (R = 1 mm,
 ρ = 7800 kg/m³, E = 200 GPa, ν = 0.3) meet head-on at 1 m/s; the linear laws take
 k = 10⁶ N/m (Walton–Braun k₂/k₁ = 1.25, 2, 4 and 10), the damped linear law γ_n for
 e = 0.9, 0.5 and 0.1, the damped Hertz law (dashpot ξ · 2√(m* k_n): `critical_fraction`,
@@ -168,7 +168,7 @@ touch falls at four places within a step. t_c is the closed-form contact duratio
 for Walton–Braun, where it is the stiffer branch's π√(m*/k₂): that branch is the shortest
 part of the contact, and measured in it the constants hold from k₂/k₁ = 1.25 to 10, so
 the model covers every ratio up to 10 (above, an explicit accuracy is refused). Error:
-|measured − reference| / reference (src/accuracy/impact.rs; the rebound velocity's is the
+|measured − reference| / reference (core/src/accuracy/impact.rs; the rebound velocity's is the
 restitution's). The references are closed forms (linear: Zhong 2009 eqs 7–9; Hertz:
 Johnson 1985 §11.4; Walton–Braun: Zhong eq 16 with e = √(k₁/k₂) and the flight through
 the permanent set), except damped Hertz: its overlap, force and duration have no closed
@@ -176,7 +176,7 @@ form (its restitution is LIGGGHTS's relation e(ξ), which RK4 of the equation be
 2e-7, the gap halving with the step; LAMMPS `tsuji`'s fit is not: asked for 0.5 it rebounds at 0.616), but in the units
 δ_s = (m* v²/K)^{2/5}, δ_s/v, K δ_s^{3/2} it is one equation per ξ, x'' = −x^{3/2} −
 2√(3/2) ξ x^{1/4} x', solved by classical Runge–Kutta at 20 000 steps per unit time
-(src/accuracy/damped_hertz.rs: halving its step moves no quantity by more than 3.5e-7 (ξ = 0.05, 0.3, 0.6), the test allows 1e-6, 100 times below the finest accuracy checked, and ξ = 0 gives
+(core/src/accuracy/damped_hertz.rs: halving its step moves no quantity by more than 3.5e-7 (ξ = 0.05, 0.3, 0.6), the test allows 1e-6, 100 times below the finest accuracy checked, and ξ = 0 gives
 Johnson's closed forms), a different integrator from tamp's. Fit per law
 and quantity, error ≈ C (Δt/t_c)^p: p by least squares on the worst error at each
 step over Δt/t_c ≤ 1/16, C the envelope (largest error/(Δt/t_c)^p over Δt/t_c ≤ 1/8), so
@@ -269,7 +269,7 @@ on its impacts would certify a law that creates energy in the scenes it is used 
          forces are continuous at touch; their slope jumps (Hertz's is 0 then grows as \
          √δ), which leaves them second order. Damped Hertz is first order too (p = 1.02–1.15) \
          although its dashpot force ξ·2√(m* k_n)·δ' starts from 0 at touch: a dashpot \
-         sees the half-step velocity v_{n+½} (src/integrate.rs), an O(Δt) lag, which is \
+         sees the half-step velocity v_{n+½} (core/src/integrate.rs), an O(Δt) lag, which is \
          first order whenever the damping force matters; the damped linear law has both \
          causes. The same holds for the laws calibrated since: Kuwabara–Kono's dashpot \
          vanishes at touch (δ^{1/2}) yet it is first order (p = 1.06–1.23), for the \

@@ -25,7 +25,7 @@
 use super::accuracy_cost::Row;
 use crate::accuracy::step::Choice;
 use crate::error::Result;
-use crate::output::plot::{Panel, Series, write_svg};
+use crate::plot::{Panel, Series, write_svg};
 use crate::scene::schema::Scene;
 use serde::{Deserialize, Serialize};
 use std::fmt::Write as _;
@@ -272,7 +272,7 @@ log-log), at the coarsest step from which every finer step is within the accurac
 steps is extended; *lower bound*: the coarsest step swept already meets it; *not
 reached*: the error stops falling (the reference carries a model error, or the
 quantity is chaotic). Beside it, the step `time_step.accuracy` chooses for the
-case's scene (src/accuracy/; its characteristic velocity kept) and the measured wall
+case's scene (core/src/accuracy/; its characteristic velocity kept) and the measured wall
 time at that step; *none* where the scene's law has no error model. The data are in
 `accuracy-cost/accuracy_inverse.csv`.
 

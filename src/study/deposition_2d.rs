@@ -17,10 +17,11 @@
 //! Each row gives the mean and the sample standard deviation over the seeds. Writes
 //! `<out>/deposition-2d/{survey,interior,width}.csv` and prints the tables.
 
-use super::{mean_sd, write_csv};
+use super::write_csv;
 use crate::error::{Result, TampError};
 use crate::generate::ballistic_2d::{BoxFill, Lid, boundary_contacts};
 use crate::generate::distribution::SizeDistribution;
+use crate::measure::sample::mean_sd;
 use crate::quasistatic::{CylinderPacking, Vec2};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;

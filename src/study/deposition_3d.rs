@@ -22,10 +22,11 @@
 //!
 //! Writes `<out>/deposition-3d/{survey,seeds,stress}.csv` and prints the tables.
 
-use super::{mean_sd, write_csv};
+use super::write_csv;
 use crate::error::{Result, TampError};
 use crate::generate::distribution::SizeDistribution;
 use crate::generate::{ballistic, measure};
+use crate::measure::sample::mean_sd;
 use crate::measure::{Region, packing::packing_fraction};
 use crate::particles::Vec3;
 use crate::space::Space;

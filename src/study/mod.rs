@@ -16,14 +16,6 @@ pub mod stable_alpha;
 use crate::error::{Result, TampError};
 use std::path::Path;
 
-/// Mean and sample standard deviation (n − 1 in the denominator; 0 for one value).
-pub fn mean_sd(x: &[f64]) -> (f64, f64) {
-    let n = x.len() as f64;
-    let mean = x.iter().sum::<f64>() / n;
-    let var = x.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0).max(1.0);
-    (mean, var.sqrt())
-}
-
 /// Rows as CSV with a header, written atomically (studies are rerun case by case, so a
 /// file is either the old one or the whole new one).
 fn write_csv<T: serde::Serialize>(path: &Path, rows: &[T]) -> Result<()> {

@@ -5,7 +5,7 @@
 use super::accuracy_cost::{Row, observed_order};
 use super::stable_alpha::StableRow;
 use crate::error::{Result, TampError};
-use crate::output::plot::{Panel, Series, write_svg};
+use crate::plot::{Panel, Series, write_svg};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -301,7 +301,7 @@ is the same. Each run is judged exactly as `tamp verify` judges it, against the
 case's own independent reference and tolerance (verification/<case>.json); *worst
 error / tolerance* is the largest over the case's quantities, so a run passes when
 it is at most 1. α is the step over the critical step tamp estimates for the scene
-at t = 0 (src/timestep.rs); it is blank when the scene gives a fixed step and the
+at t = 0 (core/src/timestep.rs); it is blank when the scene gives a fixed step and the
 law's stiffness needs a characteristic velocity the scene does not give.
 
 The *observed order* is Richardson's self-convergence order p = log₂(|Q(4h) − Q(2h)|

@@ -472,7 +472,7 @@ period); R = 1 mm steel (E = 200 GPa, ν = 0.3, ρ = 7800 kg/m³; the linear law
 k_n = 10⁶ N/m), or NiAl (Rojek 2016 Table 2) for Storåkers; friction μ = 0.5. α_max
 is the largest α = Δt/Δt_cr (bisection to 0.5 %) at which 4000 steps gain less than
 10 times the initial kinetic energy (src/study/stable_alpha.rs). Δt_cr is tamp's
-estimate at t = 0 (src/timestep.rs): it takes each particle's summed normal contact
+estimate at t = 0 (core/src/timestep.rs): it takes each particle's summed normal contact
 stiffness, its summed tangential stiffness times the lever 1 + mR²/I of rotation,
 and the damping ratio (Rojek eq 28).
 
@@ -515,7 +515,7 @@ Reading the table:
   over the contacts. Until 2026-11-21 the estimate took the *largest* k_t times the lever
   1 + mR²/I, and this lattice was stable only to α = 0.60 with the Mindlin laws
   (k_t ≈ 0.8 k_n) and 1.02 with k_t = 2/7 k_n; the estimate now sums k_t over the contacts
-  like it sums k_n (src/simulation/critical_step.rs), which moves every row to α_max ≥ 1. Rojek 2016
+  like it sums k_n (core/src/simulation/critical_step.rs), which moves every row to α_max ≥ 1. Rojek 2016
   §3.4 makes the same observation (with equal normal and tangential stiffness the
   rotational eigenfrequency exceeds the translational one) and scales the rotational
   inertia by 10 instead (`rotation.inertia_scale`), which lowers the lever 1 + mR²/I.

@@ -307,15 +307,6 @@ pub fn verification_dir() -> PathBuf {
         .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("verification"))
 }
 
-/// The checked-in scene `verification/<name>.scene.json`, for unit tests.
-#[cfg(test)]
-pub(crate) fn checked_in_scene(name: &str) -> crate::scene::Scene {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("verification")
-        .join(format!("{name}.scene.json"));
-    crate::scene::load(&path).expect("a valid scene").0
-}
-
 pub fn load_specs(dir: &Path) -> Result<Vec<CaseSpec>> {
     let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
         .map_err(|e| TampError::io(format!("reading {}", dir.display()), e))?

@@ -1,5 +1,5 @@
 //! `time_step.accuracy` keeps its promise on impacts its calibration did not use
-//! (src/accuracy/calibration.rs used equal 1 mm steel spheres at 1 m/s): other
+//! (core/src/accuracy/calibration.rs used equal 1 mm steel spheres at 1 m/s): other
 //! materials, radii, speeds, a rigid and an elastic wall, critical-fraction damping,
 //! Walton–Braun unloading ratios k₂/k₁ = 1.5 and 6 (calibrated: 1.25, 2, 4, 10), Hertz
 //! damped by `liggghts_restitution`, `tsuji` and `critical_fraction` at dampings the
@@ -7,8 +7,8 @@
 //! Coulomb friction, and a sliding oblique impact with Coulomb friction. Each runs with `{"accuracy": a}` and no characteristic velocity (tamp
 //! implies it from the motion) for a = 1e-2, 1e-3, 1e-4, from three places of first
 //! touch within a step; the relative error of each impact quantity against the
-//! law's closed form (src/accuracy/impact.rs; for damped Hertz its one-parameter
-//! equation solved by Runge–Kutta, src/accuracy/damped_hertz.rs) must be at most a. The sliding impact
+//! law's closed form (core/src/accuracy/impact.rs; for damped Hertz its one-parameter
+//! equation solved by Runge–Kutta, core/src/accuracy/damped_hertz.rs) must be at most a. The sliding impact
 //! is also held to the rigid-body sliding limit Δv_t = μ (1 + e) v_n (Brach 1991;
 //! see sliding_oblique_impact), e = 1 for elastic Hertz. Thornton's elastic–perfectly-
 //! plastic law (calibrated on 1 mm steel pairs at p_y = 1 GPa, v/v_y = 0.5–30) is

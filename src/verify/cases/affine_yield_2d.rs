@@ -33,7 +33,7 @@
 use super::ballistic_deposition_2d::fill;
 use crate::error::Result;
 use crate::generate::distribution::SizeDistribution;
-use crate::output::plot::{Panel, Series, write_svg};
+use crate::plot::{Panel, Series, write_svg};
 use crate::quasistatic::affine_yield::{Sym2, closed_die_yield, hydrostatic_yield};
 use crate::quasistatic::compaction::{StrainPath, compact};
 use crate::quasistatic::network::{Constraint, Friction, Network, NetworkSettings};

@@ -27,7 +27,7 @@
 use crate::error::{Result, TampError};
 use crate::generate::ballistic_2d::{BoxFill, Lid, boundary_contacts};
 use crate::generate::distribution::SizeDistribution;
-use crate::output::plot::write_segments_svg;
+use crate::plot::write_segments_svg;
 use crate::quasistatic::CylinderPacking;
 use crate::verify::{CaseContext, Measured};
 use rand::SeedableRng;

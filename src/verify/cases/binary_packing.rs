@@ -34,8 +34,8 @@
 use crate::error::{Result, TampError};
 use crate::measure::bed::bulk_packing_fraction;
 use crate::measure::region::ball_volume;
-use crate::output::plot::{Panel, Series, write_svg};
 use crate::particles::Vec3;
+use crate::plot::{Panel, Series, write_svg};
 use crate::scene::schema::{BoxRegion, PeriodicSpec, RadiusSpec};
 use crate::scene::{self, Scene};
 use crate::verify::{CaseContext, Measured};

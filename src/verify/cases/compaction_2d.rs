@@ -66,7 +66,7 @@
 
 use super::compacted_deposit::{Compacted, SEED, compacted, run_label};
 use crate::error::Result;
-use crate::output::plot::{Panel, Series, write_svg};
+use crate::plot::{Panel, Series, write_svg};
 use crate::quasistatic::compaction::{CompactionRecord, StrainPath};
 use crate::quasistatic::network::{Constraint, Friction};
 use crate::verify::{CaseContext, Measured};

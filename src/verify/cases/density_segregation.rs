@@ -21,9 +21,9 @@
 
 use crate::error::Result;
 use crate::measure::segregation::{Basis, BedExtent, SegregationSpec, segregation, surface_layers};
-use crate::output::views::{self, ColourBy, View};
 use crate::scene;
 use crate::verify::{CaseContext, Measured};
+use crate::views::{self, ColourBy, View};
 
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let scene = ctx.scene()?;

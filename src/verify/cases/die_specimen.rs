@@ -59,7 +59,7 @@ fn fill_key(scene: &Scene) -> Result<String> {
 mod tests {
     use super::*;
 
-    use crate::verify::checked_in_scene as scene;
+    use crate::checked_in_scene as scene;
 
     #[test]
     fn the_three_small_die_cases_share_a_fill_and_other_seeds_or_fills_do_not() {

@@ -18,7 +18,7 @@
 use super::liggghts_inputs::Mismatches;
 use crate::contact::damping::{Damping, LiggghtsRestitution};
 use crate::error::{Result, TampError};
-use crate::output::plot::{Panel, Series, write_svg};
+use crate::plot::{Panel, Series, write_svg};
 use crate::scene::{self, Scene};
 use crate::verify::{CaseContext, Measured};
 use serde::Deserialize;

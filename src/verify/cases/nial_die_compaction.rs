@@ -35,7 +35,7 @@ use crate::checkpoint::{self, Checkpoint};
 use crate::contact::normal::{NormalLaw, Storakers};
 use crate::contact::tangential::{TangentialLaw, storakers};
 use crate::error::{Result, TampError};
-use crate::output::plot::{Panel, Series, write_svg};
+use crate::plot::{Panel, Series, write_svg};
 use crate::process::die_compaction::{self, PressRecord, PressState, Pressing, Specimen};
 use crate::scene::schema::{HollomonSpec, Scene};
 use crate::verify::{CaseContext, Measured, parallel};
@@ -312,7 +312,7 @@ fn write_force_chains(
             )
         })
         .collect();
-    crate::output::plot::write_segments_svg(
+    crate::plot::write_segments_svg(
         &ctx.report_dir
             .join(format!("{}_force_chains.svg", ctx.spec.name)),
         &format!(

@@ -25,8 +25,8 @@
 
 use crate::error::{Result, TampError};
 use crate::liggghts::import::state_measures;
+use crate::measure::sample::mean_sd;
 use crate::scene;
-use crate::study::mean_sd;
 use crate::verify::{CaseContext, Measured};
 use serde::Deserialize;
 use std::fmt::Write as _;

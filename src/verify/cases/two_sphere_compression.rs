@@ -10,7 +10,7 @@
 use super::rojek_models::{MODELS, material_constants, overlap_at_force, with_model};
 use crate::error::Result;
 use crate::measure::collision::{CompressionSample, compress_to_force};
-use crate::output::plot::{Panel, Series, write_svg};
+use crate::plot::{Panel, Series, write_svg};
 use crate::scene;
 use crate::verify::{CaseContext, Measured};
 use std::fmt::Write;

@@ -54,7 +54,7 @@
 
 use super::compacted_deposit::{SEED, compacted, run_label};
 use crate::error::{Result, TampError};
-use crate::output::plot::{Panel, Series, write_svg};
+use crate::plot::{Panel, Series, write_svg};
 use crate::quasistatic::affine_yield::Sym2;
 use crate::quasistatic::compaction::StrainPath;
 use crate::quasistatic::network::{Constraint, Friction, Network};

@@ -1,10 +1,23 @@
 //! Records the git commit tamp was built from, for the provenance block of every output,
-//! and the git objects of the code that decides results (`src/`, `Cargo.lock`), so work
-//! saved by one build can be recognised by another build of the same code.
+//! and the git objects of the code that decides results (`core/`, `src/`, `Cargo.lock`),
+//! so work saved by one build can be recognised by another build of the same code. Git
+//! runs at the repository's top (this crate's parent directory), so that paths name the
+//! same trees whichever crate is being built.
+use std::path::{Path, PathBuf};
 use std::process::Command;
 
+fn git(top: &Path) -> Command {
+    let mut command = Command::new("git");
+    command.current_dir(top);
+    command
+}
+
 fn main() {
-    let commit = Command::new("git")
+    let top = PathBuf::from(std::env::var_os("CARGO_MANIFEST_DIR").expect("cargo sets it"))
+        .parent()
+        .expect("core/ lies inside the repository")
+        .to_path_buf();
+    let commit = git(&top)
         .args(["rev-parse", "HEAD"])
         .output()
         .ok()
@@ -13,7 +26,7 @@ fn main() {
         .unwrap_or_else(|| "unknown".to_string());
     // --no-optional-locks: a plain `git status` may refresh and rewrite .git/index,
     // which this script watches, so the next cargo command would rebuild tamp again.
-    let dirty = Command::new("git")
+    let dirty = git(&top)
         .args([
             "--no-optional-locks",
             "status",
@@ -30,8 +43,8 @@ fn main() {
         commit
     };
     println!("cargo:rustc-env=TAMP_GIT_COMMIT={commit}");
-    let source = Command::new("git")
-        .args(["rev-parse", "HEAD:src", "HEAD:Cargo.lock"])
+    let source = git(&top)
+        .args(["rev-parse", "HEAD:core", "HEAD:src", "HEAD:Cargo.lock"])
         .output()
         .ok()
         .filter(|o| o.status.success())
@@ -42,16 +55,16 @@ fn main() {
                 .join("+")
         })
         .unwrap_or_else(|| "unknown".to_string());
-    let source_dirty = Command::new("git")
+    let source_dirty = git(&top)
         .args([
             "--no-optional-locks",
             "status",
             "--porcelain",
             "--",
+            "core",
             "src",
             "Cargo.lock",
             "Cargo.toml",
-            "build.rs",
         ])
         .output()
         .ok()
@@ -65,8 +78,8 @@ fn main() {
     println!("cargo:rustc-env=TAMP_SOURCE_TREE={source}");
     // Ask git where HEAD and the index are: in a worktree `.git` is a file, and a
     // path that does not exist would make cargo rebuild tamp on every command.
-    let git_dir = Command::new("git")
-        .args(["rev-parse", "--git-dir"])
+    let git_dir = git(&top)
+        .args(["rev-parse", "--absolute-git-dir"])
         .output()
         .ok()
         .filter(|o| o.status.success())

@@ -672,7 +672,7 @@ pub fn render(
     match ext.as_deref() {
         Some("svg") => {
             let text = svg(view, positions, radii, colour, bounds, pixels)?;
-            super::write_atomic(path, text.as_bytes())
+            crate::output::write_atomic(path, text.as_bytes())
         }
         Some("png") => {
             let image = raster(view, positions, radii, colour, bounds, pixels)?;

@@ -180,7 +180,7 @@ pub fn write_svg(path: &Path, panels: &[Panel]) -> Result<()> {
         }
         root.present().map_err(draw_err)?;
     }
-    super::write_atomic(path, svg.as_bytes())
+    crate::output::write_atomic(path, svg.as_bytes())
 }
 
 /// Line segments drawn to scale (equal units on both axes) over the box
@@ -230,5 +230,5 @@ pub fn write_segments_svg(
             .map_err(draw_err)?;
         root.present().map_err(draw_err)?;
     }
-    super::write_atomic(path, svg.as_bytes())
+    crate::output::write_atomic(path, svg.as_bytes())
 }

@@ -20,6 +20,7 @@ pub mod packing;
 pub mod profile;
 pub mod region;
 pub mod rve;
+pub mod sample;
 pub mod segregation;
 
 pub use bed::{Bed, bulk_packing_fraction};

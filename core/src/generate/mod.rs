@@ -6,7 +6,7 @@
 pub mod ballistic;
 pub mod ballistic_2d;
 pub mod distribution;
-pub(crate) mod grid;
+pub mod grid;
 pub mod measure;
 pub mod pour;
 pub mod rsi;

@@ -35,7 +35,7 @@ pub struct TimeStepSpec {
     /// Safety factor α of Rojek eq 26 (`alpha()`: 0.2 when absent).
     #[serde(default)]
     pub alpha: Option<f64>,
-    /// The relative error of the impact quantities asked for (src/accuracy/).
+    /// The relative error of the impact quantities asked for (core/src/accuracy/).
     #[serde(default)]
     pub accuracy: Option<f64>,
     /// Impact speed that sets the stiffness of nonlinear laws before contacts exist, m/s.
@@ -125,7 +125,7 @@ fn default_skin() -> f64 {
     0.2
 }
 
-/// The contact detectors (src/detect/).
+/// The contact detectors (core/src/detect/).
 #[derive(Clone, Copy, Debug, Deserialize, Serialize, PartialEq, Eq)]
 #[serde(rename_all = "snake_case")]
 pub enum DetectorSpec {

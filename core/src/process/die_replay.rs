@@ -72,7 +72,7 @@ impl Stroke {
     }
 
     /// The displacement of the punch as an expression of t: Σ_k v_k clamp(t − t_k, 0, T).
-    pub(crate) fn displacement(&self) -> String {
+    pub fn displacement(&self) -> String {
         let terms: Vec<String> = (0..self.heights.len())
             .map(|k| {
                 format!(

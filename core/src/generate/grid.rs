@@ -39,7 +39,9 @@ impl Hasher for CellHasher {
     }
 }
 
-pub(crate) struct CellGrid {
+/// Particles hashed into cubic cells (periodic axes wrap), for the generators' and the
+/// studies' neighbour queries.
+pub struct CellGrid {
     /// Per axis: cell width and, along periodic axes, (lo, number of cells).
     width: [f64; 3],
     periodic: [Option<(f64, i64)>; 3],
@@ -50,7 +52,7 @@ pub(crate) struct CellGrid {
 impl CellGrid {
     /// `min_width` must be at least the largest distance a query has to resolve
     /// per cell step (here: the largest contact distance).
-    pub(crate) fn new(space: &Space, min_width: f64, origin_z: f64) -> Self {
+    pub fn new(space: &Space, min_width: f64, origin_z: f64) -> Self {
         let mut width = [min_width; 3];
         let mut periodic = [None; 3];
         let mut origin = [0.0, 0.0, origin_z];
@@ -96,7 +98,8 @@ impl CellGrid {
         self.origin[2] + layer as f64 * self.width[2]
     }
 
-    pub(crate) fn insert(&mut self, x: &Vec3, id: usize) {
+    /// Files the particle `id` at `x` in its cell.
+    pub fn insert(&mut self, x: &Vec3, id: usize) {
         let key = self.cell_of(x);
         self.cells.entry(key).or_default().push(id);
     }
@@ -114,7 +117,7 @@ impl CellGrid {
 
     /// Ids in the cells covering the axis-aligned box x ± reach (a superset of the
     /// ids within distance `reach`), in a fixed order.
-    pub(crate) fn near(&self, x: &Vec3, reach: f64, out: &mut Vec<usize>) {
+    pub fn near(&self, x: &Vec3, reach: f64, out: &mut Vec<usize>) {
         out.clear();
         let (sx, sy, sz) = (
             self.span(0, x[0], reach),

@@ -4,12 +4,10 @@
 
 pub mod contacts;
 pub mod data_file;
-pub mod plot;
 pub mod progress;
 pub mod run_files;
 pub mod series;
 pub mod summary;
-pub mod views;
 pub mod vtk;
 
 use crate::error::{Result, TampError};
