@@ -7,13 +7,15 @@
 //! `crate::scene` name the same module as `tamp_core::scene`.
 
 pub use tamp_core::{
-    GIT_COMMIT, Result, SOURCE_TREE, TampError, VERSION, accuracy, boundary, checkpoint, contact,
-    detect, error, expression, generate, growth, integrate, interrupt, material, measure, output,
-    particles, process, quadrature, quasistatic, run, scene, simulation, space, timestep, until,
+    GIT_COMMIT, Result, SOURCE_TREE, TampError, VERSION, accuracy, bins, boundary, checkpoint,
+    collision, contact, decimal, detect, error, expression, generate, growth, integrate, interrupt,
+    material, measure, output, particles, process, progress, quadrature, quasistatic, run, scene,
+    simulation, space, timestep, until,
 };
 pub use tamp_core::{each_normal, each_tangential};
 
 pub mod compare;
+pub mod impact_trial;
 pub mod lammps;
 pub mod liggghts;
 pub mod plot;

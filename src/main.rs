@@ -264,7 +264,7 @@ step (a checkpoint is written when output.checkpoint_every is set).";
 fn main() -> ExitCode {
     let cli = Cli::parse();
     if let Command::Run { quiet, .. } = cli.command {
-        tamp::output::progress::set_quiet(quiet);
+        tamp::progress::set_quiet(quiet);
         if let Err(e) = tamp::interrupt::install() {
             eprintln!("warning: SIGINT and SIGTERM will end the run at once: {e}");
         }

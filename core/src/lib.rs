@@ -6,9 +6,12 @@
 //! depends on this one and never the other way. See docs/architecture.md.
 
 pub mod accuracy;
+pub mod bins;
 pub mod boundary;
 pub mod checkpoint;
+pub mod collision;
 pub mod contact;
+pub mod decimal;
 pub mod detect;
 pub mod error;
 pub mod expression;
@@ -21,6 +24,7 @@ pub mod measure;
 pub mod output;
 pub mod particles;
 pub mod process;
+pub mod progress;
 pub mod quadrature;
 pub mod quasistatic;
 pub mod run;

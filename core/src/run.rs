@@ -6,12 +6,12 @@
 use crate::checkpoint::{self, Checkpoint, SimState};
 use crate::contact::record::ContactRecord;
 use crate::error::{Result, TampError};
-use crate::output::progress::Progress;
 use crate::output::{
     self, Provenance,
     series::Series,
     summary::{RunEnd, Summary},
 };
+use crate::progress::Progress;
 use crate::scene;
 use crate::simulation::Simulation;
 use crate::until::Until;

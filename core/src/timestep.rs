@@ -9,6 +9,9 @@
 //! scene's characteristic velocity against an identical particle or any wall (eq 9
 //! at δ_max), or, if larger, the sum of its current contact stiffnesses.
 
+/// α of Rojek eq 26 when the scene gives none.
+pub const DEFAULT_ALPHA: f64 = 0.2;
+
 /// Rojek eq 28 for one mass–spring–dashpot system.
 pub fn critical_time_step(stiffness: f64, mass: f64, damping_ratio: f64) -> f64 {
     let omega = (stiffness / mass).sqrt();

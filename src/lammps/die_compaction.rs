@@ -37,7 +37,7 @@ use crate::scene::{self, Scene};
 use std::fmt::Write as _;
 use std::path::Path;
 
-use crate::output::data_file::g;
+use crate::decimal::g;
 
 /// μ between materials `a` and `b` under the scene's tangential law (0 without one).
 fn friction(scene: &Scene, a: &str, b: &str) -> f64 {

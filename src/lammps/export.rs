@@ -44,7 +44,7 @@ use std::path::Path;
 
 const AXES: [&str; 3] = ["x", "y", "z"];
 
-use crate::output::data_file::g;
+use crate::decimal::g;
 
 /// The contact model of every `pair_coeff` line, with the material's E and ν left as
 /// `{E}` and `{nu}`.

@@ -12,7 +12,7 @@
 //! (comparisons, `%`, other functions and variables), and a division of two integer
 //! expressions, which evalexpr truncates (`1/2` is 0) and LAMMPS does not.
 
-use crate::output::data_file::g;
+use crate::decimal::g;
 use evalexpr::{DefaultNumericTypes, Node, Operator, Value};
 
 /// The LAMMPS names of the evalexpr functions translated one to one.

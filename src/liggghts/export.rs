@@ -307,7 +307,7 @@ fn axis_of(v: &Vec3) -> Option<usize> {
 
 const AXES: [&str; 3] = ["x", "y", "z"];
 
-pub(super) use crate::output::data_file::g;
+pub(super) use crate::decimal::g;
 
 /// The normal laws LIGGGHTS 3.8 has, as "law → model" (from the registry).
 fn exportable_laws() -> String {

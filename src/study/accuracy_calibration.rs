@@ -6,9 +6,10 @@
 //! asymptotic range), C the envelope max error/(Δt/t_c)^p over Δt/t_c ≤ 1/8, the
 //! largest step the model allows (1/16 for the laws of `calibration::largest_ratio`).
 
-use crate::accuracy::calibration::{TOUCH_PHASES, largest_ratio, step_ratios, trials};
+use crate::accuracy::calibration::{TOUCH_PHASES, largest_ratio, step_ratios};
 use crate::accuracy::impact::QUANTITIES;
 use crate::error::Result;
+use crate::impact_trial::calibration_trials;
 use serde::{Deserialize, Serialize};
 use serde_json::json;
 use std::fmt::Write as _;
@@ -57,7 +58,7 @@ pub fn run(out: &Path) -> Result<u8> {
 /// Every calibration run, one row per quantity.
 pub fn measure() -> Result<Vec<CalibrationRow>> {
     let mut rows = Vec::new();
-    for (law, trial) in trials()? {
+    for (law, trial) in calibration_trials()? {
         let exact = trial.exact()?;
         eprintln!("{:<20} t_c = {:.4e} s", trial.name, exact.duration);
         for &ratio in &step_ratios() {

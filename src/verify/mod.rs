@@ -543,7 +543,7 @@ pub fn run_cases(
     // Each case builds its scenes from its own seeds and writes only files named after
     // itself, so what it measures does not depend on what runs beside it; only its
     // wall_s does (cores are shared). Bars would overwrite each other: log lines.
-    crate::output::progress::set_lines_only(jobs > 1);
+    crate::progress::set_lines_only(jobs > 1);
     let results = parallel::map(&selected, jobs, |spec| {
         let r = run_case(spec, &dir, report_dir, reference_data, Variant::default());
         eprintln!(
@@ -558,7 +558,7 @@ pub fn run_cases(
         );
         r
     });
-    crate::output::progress::set_lines_only(false);
+    crate::progress::set_lines_only(false);
     let report = VerificationReport {
         tamp_version: crate::VERSION.to_string(),
         git_commit: crate::GIT_COMMIT.to_string(),

@@ -8,5 +8,4 @@ pub mod damped_hertz;
 pub mod impact;
 pub mod model;
 pub mod step;
-pub mod trial;
 pub mod velocity;

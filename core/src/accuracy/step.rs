@@ -23,7 +23,7 @@ use crate::simulation::Simulation;
 pub const DEFAULT_ACCURACY: f64 = 1e-3;
 
 /// The safety factor the step never exceeds (the default `time_step.alpha`).
-pub const STABILITY_ALPHA: f64 = crate::scene::schema::DEFAULT_ALPHA;
+pub const STABILITY_ALPHA: f64 = crate::timestep::DEFAULT_ALPHA;
 
 /// Wall time of one particle-step of a small collision scene on the machine that
 /// measured it (docs/accuracy-cost.md: "Cost of a step"), s: the prediction of a

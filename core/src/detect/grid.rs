@@ -25,6 +25,7 @@
 //! Distances are the minimum image (`Space::displacement`), unique because the scene
 //! keeps every reach below L/2.
 
+pub(crate) use crate::bins::counting_sort;
 use crate::particles::Vec3;
 use crate::space::Space;
 
@@ -224,26 +225,6 @@ impl Level {
             }
         }
     }
-}
-
-/// Stable counting sort of the items `0..keys.len()` by their key (< `buckets`):
-/// returns `(start, order)`, where `order[start[b]..start[b + 1]]` are the items
-/// with key `b` in increasing order.
-pub(crate) fn counting_sort(keys: &[usize], buckets: usize) -> (Vec<usize>, Vec<u32>) {
-    let mut start = vec![0usize; buckets + 1];
-    for &b in keys {
-        start[b + 1] += 1;
-    }
-    for b in 0..buckets {
-        start[b + 1] += start[b];
-    }
-    let mut fill = start.clone();
-    let mut order = vec![0u32; keys.len()];
-    for (item, &b) in keys.iter().enumerate() {
-        order[fill[b]] = item as u32;
-        fill[b] += 1;
-    }
-    (start, order)
 }
 
 /// All pairs closer than `margin` between surfaces, from levels ordered fine to

@@ -53,8 +53,8 @@
 
 use super::distribution::each_positive_finite;
 use super::grid::CellGrid;
-use crate::output::progress::Progress;
 use crate::particles::Vec3;
+use crate::progress::Progress;
 use crate::space::Space;
 use rand::RngExt;
 use rand_chacha::ChaCha8Rng;

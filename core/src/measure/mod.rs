@@ -14,7 +14,6 @@
 //! Definitions, formulas and their verification are in docs/measures.md.
 
 pub mod bed;
-pub mod collision;
 pub mod coordination;
 pub mod packing;
 pub mod profile;

@@ -470,33 +470,7 @@ const NODES: usize = 24;
 
 fn gauss_legendre() -> &'static [(f64, f64)] {
     static TABLE: OnceLock<Vec<(f64, f64)>> = OnceLock::new();
-    TABLE.get_or_init(|| legendre_rule(NODES))
-}
-
-/// Gauss–Legendre nodes and weights on [0, 1], by Newton iteration on P_n.
-pub(crate) fn legendre_rule(n: usize) -> Vec<(f64, f64)> {
-    (0..n)
-        .map(|i| {
-            let mut x = (PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
-            let mut dp = 1.0;
-            for _ in 0..100 {
-                let (mut p0, mut p1) = (1.0, x);
-                for k in 2..=n {
-                    let kf = k as f64;
-                    let p2 = ((2.0 * kf - 1.0) * x * p1 - (kf - 1.0) * p0) / kf;
-                    p0 = p1;
-                    p1 = p2;
-                }
-                dp = n as f64 * (x * p1 - p0) / (x * x - 1.0);
-                let dx = p1 / dp;
-                x -= dx;
-                if dx.abs() < 1e-16 {
-                    break;
-                }
-            }
-            (0.5 * (1.0 - x), 1.0 / ((1.0 - x * x) * dp * dp))
-        })
-        .collect()
+    TABLE.get_or_init(|| crate::quadrature::legendre_rule(NODES))
 }
 
 /// ∫_a^b f, split at the real parts of the singular points inside (a, b), each
@@ -586,7 +560,7 @@ mod tests {
     #[test]
     fn gauss_legendre_integrates_polynomials_exactly() {
         for n in [NODES, 48] {
-            let table = legendre_rule(n);
+            let table = crate::quadrature::legendre_rule(n);
             let sum: f64 = table.iter().map(|(_, w)| w).sum();
             assert!((sum - 1.0).abs() < 1e-14);
             // Degree 2n − 1 is the highest degree integrated exactly.
@@ -769,7 +743,7 @@ mod tests {
     fn cylinder_quadrature_is_converged() {
         use rand::{RngExt, SeedableRng};
         let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(8);
-        let fine = legendre_rule(48);
+        let fine = crate::quadrature::legendre_rule(48);
         let full = ball_volume(1.0);
         let mut worst = 0.0f64;
         for _ in 0..20_000 {

@@ -5,13 +5,9 @@
 //! form that reads back to the same double, so the peer starts from tamp's state
 //! exactly.
 
+use crate::decimal::g;
 use crate::simulation::Simulation;
 use std::fmt::Write as _;
-
-/// `%.17g`-equivalent: Rust's shortest round-trip form.
-pub fn g(x: f64) -> String {
-    format!("{x:e}")
-}
 
 /// The data file of `sim`'s particles. `peer` names the format in the header
 /// ("LAMMPS", "LIGGGHTS"), `about` follows the scene hash there (empty or ": …"),

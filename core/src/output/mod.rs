@@ -4,7 +4,6 @@
 
 pub mod contacts;
 pub mod data_file;
-pub mod progress;
 pub mod run_files;
 pub mod series;
 pub mod summary;

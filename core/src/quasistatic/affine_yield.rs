@@ -110,7 +110,7 @@ pub fn yield_stress(
     cuts.sort_by(f64::total_cmp);
     cuts.dedup_by(|x, y| (*x - *y).abs() < 1e-15);
 
-    let rule = crate::measure::region::legendre_rule(16);
+    let rule = crate::quadrature::legendre_rule(16);
     let mut out = Sym2::new(0.0, 0.0, 0.0);
     for w in cuts.windows(2) {
         let (lo, hi) = (w[0], w[1]);

@@ -59,8 +59,7 @@ impl TimeStepSpec {
     }
 }
 
-/// α of Rojek eq 26 when the scene gives none.
-pub const DEFAULT_ALPHA: f64 = 0.2;
+pub use crate::timestep::DEFAULT_ALPHA;
 
 /// How long the run lasts.
 #[derive(Clone, Debug, Default, Deserialize, Serialize)]

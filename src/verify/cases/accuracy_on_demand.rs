@@ -25,10 +25,10 @@
 
 use crate::accuracy::impact::QUANTITIES;
 use crate::accuracy::model::for_law;
-use crate::accuracy::trial::{Partner, Trial};
+use crate::collision::plane_collision;
 use crate::contact::normal::linear::LinearCollision;
 use crate::error::Result;
-use crate::measure::collision::plane_collision;
+use crate::impact_trial::{Partner, Trial};
 use crate::particles::Vec3;
 use crate::scene;
 use crate::verify::{CaseContext, Measured};

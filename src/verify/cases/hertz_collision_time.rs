@@ -2,10 +2,10 @@
 //! 0.2 m/s: contact duration (Zhong 2009 eq 13 with the exact constant), maximum
 //! overlap (energy balance) and restitution 1.
 
+use crate::collision::binary_collision;
 use crate::contact::normal::hertz::{hertz_contact_duration, hertz_max_overlap};
 use crate::error::Result;
 use crate::material::{effective_mass, effective_radius};
-use crate::measure::collision::binary_collision;
 use crate::scene;
 use crate::verify::{CaseContext, Measured};
 

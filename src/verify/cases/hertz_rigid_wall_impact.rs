@@ -6,9 +6,9 @@
 //! scene's particle material, not from tamp's pair table, so a wrong mixing rule
 //! (a finite wall term) fails the case.
 
+use crate::collision::plane_collision;
 use crate::contact::normal::hertz::{hertz_contact_duration, hertz_max_overlap};
 use crate::error::{Result, TampError};
-use crate::measure::collision::plane_collision;
 use crate::particles::Vec3;
 use crate::scene;
 use crate::verify::{CaseContext, Measured};

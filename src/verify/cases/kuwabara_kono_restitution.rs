@@ -6,10 +6,10 @@
 //! C₁ from the slowest impact, and the count of speed steps at which e fails to
 //! fall (0).
 
+use crate::collision::binary_collision;
 use crate::contact::normal::{KuwabaraKono, NormalLaw};
 use crate::error::{Result, TampError};
 use crate::material::effective_mass;
-use crate::measure::collision::binary_collision;
 use crate::scene;
 use crate::verify::{CaseContext, Measured};
 

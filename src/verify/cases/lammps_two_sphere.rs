@@ -14,9 +14,9 @@
 
 use super::liggghts_inputs::Mismatches;
 use super::probe::against_peer;
+use crate::collision::binary_collision;
 use crate::contact::damping::{Damping, LiggghtsRestitution, MassVelocity, Tsuji, Viscoelastic};
 use crate::error::{Result, TampError};
-use crate::measure::collision::binary_collision;
 use crate::scene::{self, Scene};
 use crate::verify::{CaseContext, Measured};
 use serde::Deserialize;

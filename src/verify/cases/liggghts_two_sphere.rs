@@ -9,12 +9,12 @@
 
 use super::liggghts_inputs::Mismatches;
 use super::probe::against_peer;
+use crate::collision::binary_collision;
 use crate::contact::damping::liggghts::hooke_stiffness;
 use crate::contact::damping::{Damping, LiggghtsRestitution};
 use crate::contact::normal::{Linear, NormalLaw};
 use crate::error::Result;
 use crate::material::{Material, effective_mass, effective_modulus, effective_radius};
-use crate::measure::collision::binary_collision;
 use crate::measure::region::ball_volume;
 use crate::scene::{self, Scene};
 use crate::verify::{CaseContext, Measured};

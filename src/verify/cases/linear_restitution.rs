@@ -3,12 +3,12 @@
 //! oscillator's closed forms (Zhong eqs 7–9), once with the scene's γ_n (e ≈ 0.5)
 //! and once with γ_n = 0.
 
+use crate::collision::binary_collision;
 use crate::contact::damping::{Constant, Damping};
 use crate::contact::normal::linear::LinearCollision;
 use crate::contact::normal::{Linear, NormalLaw};
 use crate::error::Result;
 use crate::material::effective_mass;
-use crate::measure::collision::binary_collision;
 use crate::scene;
 use crate::verify::{CaseContext, Measured};
 

@@ -27,7 +27,7 @@
 //! `<report>/nial_die_compaction_runs/`: the specimen, each finished pressing, and a
 //! restart checkpoint of each pressing under way. A `tamp verify` that is killed
 //! goes on from there when run again; a file is used only when it was written by a
-//! build of the same code (`SOURCE_TREE`: the git objects of `src/` and `Cargo.lock`,
+//! build of the same code (`SOURCE_TREE`: the git objects of `core/`, `src/` and `Cargo.lock`,
 //! never a build with uncommitted changes) for the same scene (SHA-256 of the scene
 //! as pressed), so a change of code or scene starts the work afresh.
 

@@ -1,6 +1,6 @@
 //! A probed collision against a recorded peer's, as the cases' quantities.
 
-use crate::measure::collision::Collision;
+use crate::collision::Collision;
 use crate::verify::Measured;
 
 /// The three quantities a recorded peer collision is compared on, named

@@ -3,9 +3,9 @@
 //! e = √(k₁/k₂)) and the hysteretic law (Zhong eqs 17–18, e = √((1 − γ)/(1 + γ)),
 //! derived in docs/models/hysteretic.md). One function per case, sharing the probe.
 
+use crate::collision::binary_collision;
 use crate::contact::normal::{Hysteretic, NormalLaw, WaltonBraun};
 use crate::error::{Result, TampError};
-use crate::measure::collision::binary_collision;
 use crate::scene;
 use crate::verify::{CaseContext, Measured};
 

@@ -6,13 +6,13 @@
 //! spheres, the material and p_y; the case sets the speeds from the yield velocity
 //! v_y and the unloading form.
 
+use crate::collision::binary_collision;
 use crate::contact::normal::NormalLaw;
 use crate::contact::normal::thornton::{
     Thornton, Unloading, liggghts_restitution, thornton_1997_restitution, yield_velocity,
 };
 use crate::error::{Result, TampError};
 use crate::material::{effective_mass, effective_radius};
-use crate::measure::collision::binary_collision;
 use crate::scene;
 use crate::verify::{CaseContext, Measured};
 

@@ -7,9 +7,9 @@
 //! R* = 10·2/12 µm, inverted at 0.02 N. The paper reads 0.4–0.5 µm for Storåkers.
 
 use super::rojek_models::{MODELS, material_constants, overlap_at_force, with_model};
+use crate::collision::compress_to_force;
 use crate::error::Result;
 use crate::material::effective_radius;
-use crate::measure::collision::compress_to_force;
 use crate::scene;
 use crate::verify::{CaseContext, Measured};
 

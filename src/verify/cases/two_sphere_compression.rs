@@ -8,8 +8,8 @@
 //! `two_sphere_compression.csv` and `.svg` in the report directory.
 
 use super::rojek_models::{MODELS, material_constants, overlap_at_force, with_model};
+use crate::collision::{CompressionSample, compress_to_force};
 use crate::error::Result;
-use crate::measure::collision::{CompressionSample, compress_to_force};
 use crate::plot::{Panel, Series, write_svg};
 use crate::scene;
 use crate::verify::{CaseContext, Measured};

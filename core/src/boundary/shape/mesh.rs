@@ -34,6 +34,7 @@ use std::path::Path;
 
 use super::triangle::Triangle;
 use super::{Candidate, ShapeContact, push_distinct, within_reach};
+use crate::bins::counting_sort;
 use crate::error::{Result, TampError};
 use crate::particles::Vec3;
 
@@ -55,7 +56,7 @@ struct Grid {
     origin: Vec3,
     cell: f64,
     dims: [usize; 3],
-    start: Vec<u32>,
+    start: Vec<usize>,
     items: Vec<u32>,
     /// Per triangle, the lowest cell index on each axis of its bounding box.
     first_cell: Vec<[usize; 3]>,
@@ -101,24 +102,21 @@ impl Grid {
                 (grid.cell_of(&lo), grid.cell_of(&hi))
             })
             .collect();
-        let ncells = dims[0] * dims[1] * dims[2];
-        let mut count = vec![0u32; ncells + 1];
-        for (lo, hi) in &ranges {
-            grid.for_each_cell(lo, hi, |c| count[c + 1] += 1);
-        }
-        for c in 0..ncells {
-            count[c + 1] += count[c];
-        }
-        let mut fill = count.clone();
-        let mut items = vec![0u32; count[ncells] as usize];
+        // One (cell, triangle) entry per cell a triangle's box overlaps, in triangle
+        // order, so each cell lists its triangles in increasing index.
+        let (mut cell_of_entry, mut triangle_of_entry) = (Vec::new(), Vec::new());
         for (t, (lo, hi)) in ranges.iter().enumerate() {
             grid.for_each_cell(lo, hi, |c| {
-                items[fill[c] as usize] = t as u32;
-                fill[c] += 1;
+                cell_of_entry.push(c);
+                triangle_of_entry.push(t as u32);
             });
         }
-        grid.start = count;
-        grid.items = items;
+        let (start, order) = counting_sort(&cell_of_entry, dims[0] * dims[1] * dims[2]);
+        grid.start = start;
+        grid.items = order
+            .iter()
+            .map(|&e| triangle_of_entry[e as usize])
+            .collect();
         grid.first_cell = ranges.iter().map(|r| r.0).collect();
         grid
     }
@@ -429,7 +427,7 @@ impl Mesh {
                 (c / g.dims[0]) % g.dims[1],
                 c / (g.dims[0] * g.dims[1]),
             ];
-            for &t in &g.items[g.start[c] as usize..g.start[c + 1] as usize] {
+            for &t in &g.items[g.start[c]..g.start[c + 1]] {
                 let first = g.first_cell[t as usize];
                 if (0..3).all(|a| here[a] == first[a].max(clo[a])) {
                     f(t as usize);

@@ -89,8 +89,8 @@ impl TangentialModel for LammpsLinearHistory {
     fn lammps(&self) -> Result<String, NoLammpsModel> {
         Ok(format!(
             "linear_history {} {} {{mu}}",
-            crate::output::data_file::g(self.stiffness),
-            crate::output::data_file::g(self.x_gamma_t)
+            crate::decimal::g(self.stiffness),
+            crate::decimal::g(self.x_gamma_t)
         ))
     }
 

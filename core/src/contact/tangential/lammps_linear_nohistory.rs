@@ -78,7 +78,7 @@ impl TangentialModel for LammpsLinearNohistory {
     fn lammps(&self) -> Result<String, NoLammpsModel> {
         Ok(format!(
             "linear_nohistory {} {{mu}}",
-            crate::output::data_file::g(self.x_gamma_t)
+            crate::decimal::g(self.x_gamma_t)
         ))
     }
 

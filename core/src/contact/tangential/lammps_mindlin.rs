@@ -230,7 +230,7 @@ impl TangentialModel for LammpsMindlin {
         Ok(format!(
             "{} -1 {} {{mu}}",
             self.variant.keyword(),
-            crate::output::data_file::g(self.x_gamma_t)
+            crate::decimal::g(self.x_gamma_t)
         ))
     }
 

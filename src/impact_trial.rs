@@ -1,15 +1,24 @@
 //! One head-on impact run by tamp and compared with its closed form: the experiment
-//! behind the error model (`tamp study accuracy-calibration`) and its check (the
-//! case `accuracy_on_demand`). The bodies feel nothing but their contact (no
-//! gravity), so the probe's largest force is the contact's.
+//! behind the core's error model (`tamp study accuracy-calibration`, which runs
+//! `calibration_trials`) and its check (the case `accuracy_on_demand`). The bodies
+//! feel nothing but their contact (no gravity), so the probe's largest force is the
+//! contact's. It builds its impacts as scenes, so it lives here, beside the cases and
+//! studies, rather than in the core's `accuracy`, which the scene builder uses.
 
-use super::impact::{Impact, closed_form};
+use crate::accuracy::calibration::{
+    DAMPED_RESTITUTION_MIN, DENSITY, RADIUS, STIFFNESS, STORAKERS_SPEED_RATIOS,
+    THORNTON_SPEED_RATIOS, THORNTON_YIELD_PRESSURE, WALTON_BRAUN_RATIOS,
+};
+use crate::accuracy::damped_hertz::{Dashpot, c_for_restitution};
+use crate::accuracy::impact::{Impact, closed_form};
+use crate::collision::{binary_collision, plane_collision};
+use crate::contact::damping::liggghts::LiggghtsModel;
 use crate::contact::normal::NormalLaw;
+use crate::contact::normal::linear::LinearCollision;
 use crate::contact::normal::thornton::yield_velocity;
 use crate::error::{Result, TampError};
 use crate::material::PairProperties;
 use crate::material::{effective_mass, effective_radius};
-use crate::measure::collision::{binary_collision, plane_collision};
 use crate::particles::Vec3;
 use crate::scene;
 use serde_json::{Value, json};
@@ -199,4 +208,165 @@ impl Trial {
             dt: sim.dt,
         })
     }
+}
+
+/// Each law's calibration impacts, by the law's name in `accuracy::calibration::MODELS`.
+pub fn calibration_trials() -> Result<Vec<(&'static str, Trial)>> {
+    let steel = json!([{"name": "steel", "density": DENSITY, "youngs_modulus": 2e11, "poisson_ratio": 0.3}]);
+    let trial = |name, contact| Trial {
+        name,
+        materials: steel.clone(),
+        contact,
+        radius: RADIUS,
+        partner: Partner::Sphere(RADIUS),
+        speed: 1.0,
+    };
+    let m_eff = 0.5 * DENSITY * 4.0 / 3.0 * std::f64::consts::PI * RADIUS.powi(3);
+    let damped = |name, e: f64| {
+        let gamma_n = LinearCollision::gamma_for_restitution(STIFFNESS, m_eff, e);
+        trial(
+            name,
+            json!({"normal": {"law": "linear", "stiffness": STIFFNESS},
+                   "damping": {"kind": "constant", "gamma_n": gamma_n}}),
+        )
+    };
+    let walton_braun = |name, ratio: f64| {
+        trial(
+            name,
+            json!({"normal": {"law": "walton_braun", "loading_stiffness": STIFFNESS,
+                              "unloading_stiffness": ratio * STIFFNESS}}),
+        )
+    };
+    let hertz_damped = |name, e: f64| {
+        trial(
+            name,
+            json!({"normal": {"law": "hertz"},
+                   "damping": {"kind": "critical_fraction",
+                               "xi": LiggghtsModel::Hertz.critical_fraction(e)}}),
+        )
+    };
+    let thornton = |name, v_over_vy| {
+        trial(
+            name,
+            json!({"normal": {"law": "thornton", "yield_pressure": THORNTON_YIELD_PRESSURE}}),
+        )
+        .at_yield_ratio(v_over_vy)
+    };
+    // The speed-dependent dashpots at the c whose unit impact rebounds at e, for the
+    // calibration's pair at 1 m/s (δ_s = (m* v²/K)^{2/5}).
+    let e_star = 2e11 / (2.0 * (1.0 - 0.3f64.powi(2)));
+    let k_hertz = 4.0 / 3.0 * e_star * (0.5 * RADIUS).sqrt();
+    let overlap_scale = (m_eff / k_hertz).powf(0.4);
+    let kuwabara_kono = |name, e: f64| {
+        let c = c_for_restitution(Dashpot::KuwabaraKono, e, 20.0);
+        trial(
+            name,
+            json!({"normal": {"law": "kuwabara_kono",
+                              "dissipation_time": c * overlap_scale / 1.5}}),
+        )
+    };
+    let hertz_constant = |name, e: f64| {
+        let c = c_for_restitution(Dashpot::Constant, e, 1.2);
+        trial(
+            name,
+            json!({"normal": {"law": "hertz"},
+                   "damping": {"kind": "constant", "gamma_n": c * m_eff / overlap_scale}}),
+        )
+    };
+    // NiAl, Rojek Table 2 (clippy mistakes ν = 0.318 for 1/π).
+    #[allow(clippy::approx_constant)]
+    let nial = json!([{"name": "NiAl", "density": 5910.0, "youngs_modulus": 183e9,
+                       "poisson_ratio": 0.318,
+                       "hollomon": {"exponent": 0.2, "yield_stress": 800e6}}]);
+    let storakers = |name, ratio| {
+        Trial {
+            name,
+            materials: nial.clone(),
+            contact: json!({"normal": {"law": "storakers", "min_with_hertz": true}}),
+            radius: 1e-5,
+            partner: Partner::Sphere(1e-5),
+            speed: 1.0,
+        }
+        .at_hertz_crossing_ratio(ratio)
+    };
+    let [s0, s1, s2, s3] = STORAKERS_SPEED_RATIOS;
+    let [r0, r1, r2, r3] = WALTON_BRAUN_RATIOS;
+    let [t0, t1, t2, t3, t4] = THORNTON_SPEED_RATIOS;
+    Ok(vec![
+        (
+            "linear",
+            trial(
+                "linear",
+                json!({"normal": {"law": "linear", "stiffness": STIFFNESS}}),
+            ),
+        ),
+        ("linear_damped", damped("linear, e = 0.9", 0.9)),
+        ("linear_damped", damped("linear, e = 0.5", 0.5)),
+        (
+            "linear_damped",
+            damped("linear, e = 0.1", DAMPED_RESTITUTION_MIN),
+        ),
+        ("hertz", trial("hertz", json!({"normal": {"law": "hertz"}}))),
+        (
+            "walton_braun",
+            walton_braun("walton_braun, k2 = 1.25 k1", r0),
+        ),
+        ("walton_braun", walton_braun("walton_braun, k2 = 2 k1", r1)),
+        ("walton_braun", walton_braun("walton_braun, k2 = 4 k1", r2)),
+        ("walton_braun", walton_braun("walton_braun, k2 = 10 k1", r3)),
+        ("hertz_damped", hertz_damped("hertz, xi for e = 0.9", 0.9)),
+        ("hertz_damped", hertz_damped("hertz, xi for e = 0.5", 0.5)),
+        (
+            "hertz_damped",
+            hertz_damped("hertz, xi for e = 0.1", DAMPED_RESTITUTION_MIN),
+        ),
+        ("thornton", thornton("thornton, v = 0.5 v_y", t0)?),
+        ("thornton", thornton("thornton, v = 1.5 v_y", t1)?),
+        ("thornton", thornton("thornton, v = 3 v_y", t2)?),
+        ("thornton", thornton("thornton, v = 10 v_y", t3)?),
+        ("thornton", thornton("thornton, v = 30 v_y", t4)?),
+        (
+            "kuwabara_kono",
+            kuwabara_kono("kuwabara_kono, A for e = 0.9", 0.9),
+        ),
+        (
+            "kuwabara_kono",
+            kuwabara_kono("kuwabara_kono, A for e = 0.5", 0.5),
+        ),
+        (
+            "kuwabara_kono",
+            kuwabara_kono("kuwabara_kono, A for e = 0.1", DAMPED_RESTITUTION_MIN),
+        ),
+        (
+            "hertz_constant_damped",
+            hertz_constant("hertz, constant gamma_n for e = 0.9", 0.9),
+        ),
+        (
+            "hertz_constant_damped",
+            hertz_constant("hertz, constant gamma_n for e = 0.5", 0.5),
+        ),
+        (
+            "hertz_constant_damped",
+            hertz_constant(
+                "hertz, constant gamma_n for e = 0.1",
+                DAMPED_RESTITUTION_MIN,
+            ),
+        ),
+        (
+            "storakers_min_hertz",
+            storakers("storakers min_with_hertz, NiAl, v = 0.5 v*", s0)?,
+        ),
+        (
+            "storakers_min_hertz",
+            storakers("storakers min_with_hertz, NiAl, v = 1.5 v*", s1)?,
+        ),
+        (
+            "storakers_min_hertz",
+            storakers("storakers min_with_hertz, NiAl, v = 3 v*", s2)?,
+        ),
+        (
+            "storakers_min_hertz",
+            storakers("storakers min_with_hertz, NiAl, v = 10 v*", s3)?,
+        ),
+    ])
 }
