@@ -8,9 +8,9 @@
 
 pub use tamp_core::{
     GIT_COMMIT, Result, SOURCE_TREE, TampError, VERSION, accuracy, bins, boundary, checkpoint,
-    collision, contact, decimal, detect, error, expression, generate, growth, integrate, interrupt,
-    material, measure, output, particles, process, progress, quadrature, quasistatic, run, scene,
-    simulation, space, timestep, until,
+    collision, contact, decimal, detect, document, error, expression, generate, growth, integrate,
+    interrupt, material, measure, output, particles, process, progress, quadrature, quasistatic,
+    run, scene, simulation, space, timestep, until,
 };
 pub use tamp_core::{each_normal, each_tangential};
 
@@ -23,12 +23,17 @@ pub mod study;
 pub mod verify;
 pub mod views;
 
-/// The checked-in scene `verification/<name>.scene.json`, for unit tests. It lives at the
-/// crate's root so that the exporters' tests need not import `verify`, which imports them.
+/// The checked-in die-compaction file `verification/<name>.scene.json`, for unit tests.
+/// It lives at the crate's root so that the exporters' tests need not import `verify`,
+/// which imports them.
 #[cfg(test)]
-pub(crate) fn checked_in_scene(name: &str) -> scene::Scene {
+pub(crate) fn checked_in_die_compaction(
+    name: &str,
+) -> process::die_compaction_file::DieCompactionFile {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("verification")
         .join(format!("{name}.scene.json"));
-    scene::load(&path).expect("a valid scene").0
+    process::die_compaction_file::DieCompactionFile::load(&path)
+        .expect("a valid die-compaction file")
+        .0
 }

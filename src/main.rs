@@ -452,31 +452,34 @@ fn run(
     quiet: bool,
     resume: bool,
 ) -> tamp::error::Result<u8> {
-    let (scene, sha) = tamp::scene::load(scene_path)?;
-    if scene.die_compaction.is_some() {
-        let s = tamp::process::die_compaction_run::run_scene(
-            &scene, &sha, scene_path, out, quiet, resume,
-        )?;
-        println!(
-            "die compaction of {} particles: H0 = {:e} m, initial density {:e} (RVE {:e}); at {:e} Pa density {:e} (RVE {:e}); wrote {}",
-            s.particles,
-            s.h0,
-            s.initial_density_specimen,
-            s.initial_density_rve,
-            s.last.pressure,
-            s.last.density_specimen,
-            s.last.density_rve,
-            out.display()
-        );
-    } else {
-        let s = tamp::run::run_scene(&scene, &sha, scene_path, out, quiet, resume)?;
-        println!(
-            "ran {} steps of {:e} s ({} particles); wrote {}",
-            s.steps,
-            s.provenance.dt,
-            s.particles,
-            out.display()
-        );
+    use tamp::document::Document;
+    match tamp::document::load(scene_path)? {
+        (Document::DieCompaction(file), sha) => {
+            let s = tamp::process::die_compaction_run::run_scene(
+                &file, &sha, scene_path, out, quiet, resume,
+            )?;
+            println!(
+                "die compaction of {} particles: H0 = {:e} m, initial density {:e} (RVE {:e}); at {:e} Pa density {:e} (RVE {:e}); wrote {}",
+                s.particles,
+                s.h0,
+                s.initial_density_specimen,
+                s.initial_density_rve,
+                s.last.pressure,
+                s.last.density_specimen,
+                s.last.density_rve,
+                out.display()
+            );
+        }
+        (Document::Scene(scene), sha) => {
+            let s = tamp::run::run_scene(&scene, &sha, scene_path, out, quiet, resume)?;
+            println!(
+                "ran {} steps of {:e} s ({} particles); wrote {}",
+                s.steps,
+                s.provenance.dt,
+                s.particles,
+                out.display()
+            );
+        }
     }
     Ok(0)
 }

@@ -225,12 +225,13 @@ fn verify_writes_report_and_contract_json() {
     assert!(md.contains("| hertz_yield_onset | F_Y_table2 |"));
 }
 
+/// Every checked-in scene and die-compaction file parses as its kind.
 #[test]
 fn every_verification_scene_parses() {
     for entry in std::fs::read_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/verification")).unwrap() {
         let path = entry.unwrap().path();
         if path.to_string_lossy().ends_with(".scene.json") {
-            tamp::scene::load(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+            tamp::document::load(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         }
     }
 }

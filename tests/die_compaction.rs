@@ -112,13 +112,13 @@ fn killed_compaction_resumes_to_identical_outputs() {
 /// the other filling; the two must be different beds (the funnel is really used).
 #[test]
 fn a_funnel_pour_fills_the_die_with_every_particle() {
-    use tamp::scene::die_compaction::FillMethod;
-    let (mut scene, _) = tamp::scene::load(&scene()).unwrap();
+    use tamp::process::die_compaction_file::{DieCompactionFile, FillMethod};
+    let (mut scene, _) = DieCompactionFile::load(&scene()).unwrap();
     let column = tamp::process::die_compaction::prepare(&scene, true).unwrap();
-    let dc = scene.die_compaction.as_mut().unwrap();
+    let dc = &mut scene.die_compaction;
     dc.fill.method = FillMethod::Funnel;
     let (count, die_radius) = (dc.particles.count, 0.5 * dc.die_diameter);
-    tamp::scene::validate::validate(&scene).unwrap();
+    scene.validate().unwrap();
     let poured = tamp::process::die_compaction::prepare(&scene, true).unwrap();
     assert!(poured.fill_at_rest, "the poured bed did not come to rest");
     assert_eq!(poured.particles.len(), count);

@@ -811,6 +811,28 @@ fn a_die_compaction_of_rigid_particles_is_named() {
     );
 }
 
+/// Issue 26 point 3: a die-compaction file is a process document whose stages set the
+/// particles, walls and run; giving them is refused naming each, and a `tamp run` of
+/// the file tells it from a scene by its `die_compaction` block alone.
+#[test]
+fn a_die_compaction_file_names_the_blocks_its_stages_set() {
+    let mut die: Value = serde_json::from_str(include_str!(
+        "../verification/nial_die_compaction_small.scene.json"
+    ))
+    .unwrap();
+    die["walls"] = json!([{"shape": {"kind": "plane", "point": [0, 0, 0], "normal": [0, 0, 1]}, "material": "die"}]);
+    die["run"] = json!({"steps": 10});
+    die["growth"] = json!({"duration": 1e-6});
+    expect_input_error(
+        die,
+        &[
+            "walls: must be left out of a die_compaction scene: its stages set it",
+            "growth: must be left out of a die_compaction scene: its stages set it",
+            "run: must be left out of a die_compaction scene: its stages set it",
+        ],
+    );
+}
+
 #[test]
 fn a_bad_die_curvature_is_named() {
     let mut die: Value = serde_json::from_str(include_str!(

@@ -13,6 +13,7 @@ pub mod collision;
 pub mod contact;
 pub mod decimal;
 pub mod detect;
+pub mod document;
 pub mod error;
 pub mod expression;
 pub mod generate;

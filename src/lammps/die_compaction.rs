@@ -28,20 +28,23 @@
 //!   which `tamp import-liggghts-dump --die-stroke stroke.json` measures densities.
 
 use super::export::{pair_model, refusals};
-use crate::error::{Result, TampError};
+use crate::error::Result;
 use crate::liggghts::die_compaction::DieStroke;
 use crate::liggghts::export::{DUMP_COLUMNS, Exported, neighbor_skin};
+use crate::process::die_compaction_file::DieCompactionFile;
 use crate::process::die_replay;
+use crate::scene;
+use crate::scene::schema::ContactSpec;
 use crate::scene::walls::Curvature;
-use crate::scene::{self, Scene};
 use std::fmt::Write as _;
 use std::path::Path;
 
 use crate::decimal::g;
 
-/// μ between materials `a` and `b` under the scene's tangential law (0 without one).
-fn friction(scene: &Scene, a: &str, b: &str) -> f64 {
-    scene.contact.tangential.as_ref().map_or(0.0, |t| {
+/// μ between materials `a` and `b` under a contact block's tangential law (0 without
+/// one).
+fn friction(contact: &ContactSpec, a: &str, b: &str) -> f64 {
+    contact.tangential.as_ref().map_or(0.0, |t| {
         t.friction_pairs
             .iter()
             .find(|p| {
@@ -55,16 +58,13 @@ fn friction(scene: &Scene, a: &str, b: &str) -> f64 {
 /// Every field of the die-compaction `scene` its LAMMPS replay cannot express.
 /// The walls are written here (die, floor, punch), so the general export's wall
 /// rules do not apply; its rules for the law, rotation and materials do.
-pub fn die_refusals(scene: &Scene) -> Vec<(String, String)> {
-    let mut probe = die_replay::solid_sphere_scene(scene);
-    probe.walls.clear();
+pub fn die_refusals(file: &DieCompactionFile) -> Vec<(String, String)> {
+    let mut probe = die_replay::solid_sphere_scene(file).shared_scene();
     if let Some(t) = probe.contact.tangential.as_mut() {
         t.friction_pairs.clear();
     }
     let mut out = refusals(&probe);
-    let Some(dc) = scene.die_compaction.as_ref() else {
-        return out;
-    };
+    let (scene, dc) = (file, &file.die_compaction);
     let particle = &dc.particles.material;
     let wall = &dc.wall_material;
     if let Some(t) = &scene.contact.tangential {
@@ -143,23 +143,20 @@ fn displacement_table(stroke: &die_replay::Stroke) -> (Vec<f64>, Vec<f64>) {
     (d, c)
 }
 
-/// Fill, flatten and press `scene` in tamp, then write the LAMMPS replay deck into
+/// Fill, flatten and press `file` in tamp, then write the LAMMPS replay deck into
 /// `out_dir`.
-pub fn export_pressing(scene: &Scene, sha: &str, out_dir: &Path) -> Result<Exported> {
-    let list = die_refusals(scene);
+pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> Result<Exported> {
+    let list = die_refusals(file);
     if !list.is_empty() {
         return Err(crate::error::cannot_export("LAMMPS", list));
     }
-    let dc = scene
-        .die_compaction
-        .as_ref()
-        .ok_or_else(|| TampError::input("die_compaction", "is required"))?;
-    let solid = die_replay::solid_sphere_scene(scene);
+    let (scene, dc) = (file, &file.die_compaction);
+    let solid = die_replay::solid_sphere_scene(file);
     let die_replay::Pressed {
         specimen,
         stroke,
         replay,
-    } = die_replay::press_for_replay(scene, &solid)?;
+    } = die_replay::press_for_replay(file, &solid)?;
     let mut probe = replay.clone();
     if let Some(t) = probe.contact.tangential.as_mut() {
         t.friction_pairs.clear();
@@ -203,10 +200,10 @@ pub fn export_pressing(scene: &Scene, sha: &str, out_dir: &Path) -> Result<Expor
             .replace("{nu}", &g(m.poisson_ratio.unwrap_or(0.0)))
             .replace("{mu}", &g(mu))
     };
-    let pair = line(particle, friction(scene, particle, particle));
+    let pair = line(particle, friction(&scene.contact, particle, particle));
     let wall = line(
         &dc.wall_material,
-        friction(scene, particle, &dc.wall_material),
+        friction(&scene.contact, particle, &dc.wall_material),
     );
     let n = stroke.steps_per_record;
     let steps = n * stroke.heights.len() as u64;
@@ -307,7 +304,7 @@ pub fn export_pressing(scene: &Scene, sha: &str, out_dir: &Path) -> Result<Expor
 mod tests {
     use super::*;
 
-    use crate::checked_in_scene as scene;
+    use crate::checked_in_die_compaction as scene;
 
     #[test]
     fn the_lammps_die_scene_is_expressible_and_the_paper_law_is_refused_by_field() {
@@ -332,7 +329,7 @@ mod tests {
         let paths: Vec<String> = die_refusals(&other).into_iter().map(|(p, _)| p).collect();
         assert_eq!(paths, ["die_compaction.wall_material"]);
         let mut flat = scene("lammps_die_compaction_small");
-        flat.die_compaction.as_mut().unwrap().die_curvature = Curvature::Flat;
+        flat.die_compaction.die_curvature = Curvature::Flat;
         let paths: Vec<String> = die_refusals(&flat).into_iter().map(|(p, _)| p).collect();
         assert_eq!(paths, ["die_compaction.die_curvature"]);
     }
@@ -342,7 +339,7 @@ mod tests {
     #[test]
     fn the_replayed_die_has_the_scenes_curvature() {
         let s = scene("lammps_die_compaction_small");
-        let dc = s.die_compaction.as_ref().unwrap();
+        let dc = &s.die_compaction;
         assert_eq!(dc.die_curvature, Curvature::Mean);
         let specimen = crate::process::die_compaction::Specimen {
             h0: 6e-5,
@@ -461,8 +458,8 @@ mod tests {
     #[test]
     fn walls_take_the_particle_wall_friction_and_particles_their_own() {
         let s = scene("lammps_die_compaction_small");
-        assert_eq!(friction(&s, "NiAl", "NiAl"), 0.0);
-        assert_eq!(friction(&s, "NiAl", "die"), 0.02);
-        assert_eq!(friction(&s, "die", "NiAl"), 0.02);
+        assert_eq!(friction(&s.contact, "NiAl", "NiAl"), 0.0);
+        assert_eq!(friction(&s.contact, "NiAl", "die"), 0.02);
+        assert_eq!(friction(&s.contact, "die", "NiAl"), 0.02);
     }
 }

@@ -34,6 +34,7 @@
 
 use crate::contact::lammps::LammpsNormal;
 use crate::contact::lever_arm::LeverArm;
+use crate::document::Document;
 use crate::error::{Result, TampError};
 use crate::liggghts::export::{DUMP_COLUMNS, Exported, frame_every, load_with_seed, neighbor_skin};
 use crate::particles::Vec3;
@@ -595,13 +596,14 @@ pub fn export_file(
     dump_every: Option<u64>,
     seed: Option<u64>,
 ) -> Result<Exported> {
-    let (scene, sha) = load_with_seed(scene_path, seed)?;
-    if scene.die_compaction.is_some() {
+    match load_with_seed(scene_path, seed)? {
+        (Document::Scene(scene), sha) => export(&scene, &sha, out_dir, dump_every),
         // Its particles exist only after tamp's fill and flatten: the pressing is
         // what is exported, replaying tamp's stroke.
-        return super::die_compaction::export_pressing(&scene, &sha, out_dir);
+        (Document::DieCompaction(file), sha) => {
+            super::die_compaction::export_pressing(&file, &sha, out_dir)
+        }
     }
-    export(&scene, &sha, out_dir, dump_every)
 }
 
 /// Write the deck and the data file for `scene` into `out_dir`.

@@ -33,12 +33,12 @@ use super::export::{
     DUMP_COLUMNS, Exported, contact_model, deck_head, dump_format, g, particles_data,
     plane_triangles, refusals, refuse_all, stl,
 };
-use crate::error::{Result, TampError};
+use crate::error::Result;
 use crate::particles::Vec3;
+use crate::process::die_compaction_file::{DieCompactionFile, DieCompactionSpec};
 use crate::process::die_replay::{self, Stroke};
-use crate::scene::die_compaction::DieCompactionSpec;
+use crate::scene;
 use crate::scene::walls::Curvature;
-use crate::scene::{self, Scene};
 use serde::{Deserialize, Serialize};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -68,9 +68,9 @@ impl DieStroke {
 /// The die-compaction fields LIGGGHTS's replay cannot express (the law's are the
 /// ordinary export's `refusals`): a die with its curvature, since LIGGGHTS's wall
 /// contacts take R* = R_i.
-fn die_refusals(scene: &Scene) -> Vec<(String, String)> {
-    match scene.die_compaction.as_ref() {
-        Some(dc) if dc.die_curvature != Curvature::Flat => vec![(
+fn die_refusals(file: &DieCompactionFile) -> Vec<(String, String)> {
+    match &file.die_compaction {
+        dc if dc.die_curvature != Curvature::Flat => vec![(
             "die_compaction.die_curvature".into(),
             "LIGGGHTS's zcylinder wall gives the die contact R* = R_i (normal_model_hertz.h, is_wall), a flat wall; set \"die_curvature\": \"flat\"".into(),
         )],
@@ -78,23 +78,20 @@ fn die_refusals(scene: &Scene) -> Vec<(String, String)> {
     }
 }
 
-/// Fill, flatten and press `scene` in tamp, then write the replay deck into `out_dir`.
-pub fn export_pressing(scene: &Scene, sha: &str, out_dir: &Path) -> Result<Exported> {
-    let solid = die_replay::solid_sphere_scene(scene);
-    let mut list = refusals(&solid);
-    list.extend(die_refusals(scene));
+/// Fill, flatten and press `file` in tamp, then write the replay deck into `out_dir`.
+pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> Result<Exported> {
+    let solid = die_replay::solid_sphere_scene(file);
+    let mut list = refusals(&solid.shared_scene());
+    list.extend(die_refusals(file));
     if !list.is_empty() {
         return Err(refuse_all(list));
     }
-    let dc = scene
-        .die_compaction
-        .as_ref()
-        .ok_or_else(|| TampError::input("die_compaction", "is required"))?;
+    let dc = &file.die_compaction;
     let die_replay::Pressed {
         specimen,
         stroke,
         replay,
-    } = die_replay::press_for_replay(scene, &solid)?;
+    } = die_replay::press_for_replay(file, &solid)?;
     let sim = scene::build(&replay)?.sim;
     let model = contact_model(&replay, &sim)?;
     crate::output::create_dir(out_dir)?;
@@ -175,7 +172,7 @@ pub fn export_pressing(scene: &Scene, sha: &str, out_dir: &Path) -> Result<Expor
         ),
         "the die is LIGGGHTS's infinite zcylinder primitive; floor and punch are STL squares (run LIGGGHTS with its screen output on: 3.8 crashes reading an STL mesh without a screen)".into(),
     ];
-    if let Some(r) = scene.rotation.as_ref().filter(|r| r.inertia_scale != 1.0) {
+    if let Some(r) = file.rotation.as_ref().filter(|r| r.inertia_scale != 1.0) {
         notes.push(format!(
             "tamp filled, flattened and pressed with rotation.inertia_scale {}; LIGGGHTS's fix nve/sphere has the solid sphere's only, so the replay uses 1",
             r.inertia_scale
@@ -198,7 +195,7 @@ pub fn export_pressing(scene: &Scene, sha: &str, out_dir: &Path) -> Result<Expor
 mod tests {
     use super::*;
 
-    use crate::checked_in_scene as scene;
+    use crate::checked_in_die_compaction as scene;
 
     #[test]
     fn a_die_with_its_curvature_is_refused_and_a_flat_one_is_not() {

@@ -34,6 +34,7 @@ use crate::contact::damping::{CriticalFraction, Damping, LiggghtsRestitution};
 use crate::contact::lever_arm::LeverArm;
 use crate::contact::model::{LiggghtsContact, LiggghtsScene, LiggghtsValues};
 use crate::contact::tangential::TangentialLaw;
+use crate::document::Document;
 use crate::error::{Result, TampError};
 use crate::material::{effective_mass, effective_modulus, effective_radius};
 use crate::particles::Vec3;
@@ -251,14 +252,17 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
     out
 }
 
-/// The scene file and its hash, with `--seed` replacing the scene's seed (a new
-/// random placement, the same scene otherwise).
-pub(crate) fn load_with_seed(path: &Path, seed: Option<u64>) -> Result<(Scene, String)> {
-    let (mut scene, sha) = scene::load(path)?;
+/// The scene or die-compaction file and its hash, with `--seed` replacing the file's
+/// seed (a new random placement, the same scene otherwise).
+pub(crate) fn load_with_seed(path: &Path, seed: Option<u64>) -> Result<(Document, String)> {
+    let (mut document, sha) = crate::document::load(path)?;
     if let Some(seed) = seed {
-        scene.seed = seed;
+        match &mut document {
+            Document::Scene(s) => s.seed = seed,
+            Document::DieCompaction(d) => d.seed = seed,
+        }
     }
-    Ok((scene, sha))
+    Ok((document, sha))
 }
 
 /// The peer's neighbour skin: the scene's skin fraction of the smallest radius.
@@ -291,13 +295,14 @@ pub fn export_file(
     dump_every: Option<u64>,
     seed: Option<u64>,
 ) -> Result<Exported> {
-    let (scene, sha) = load_with_seed(scene_path, seed)?;
-    if scene.die_compaction.is_some() {
+    match load_with_seed(scene_path, seed)? {
+        (Document::Scene(scene), sha) => export(&scene, &sha, out_dir, dump_every),
         // Its particles exist only after tamp's fill and flatten: the pressing is
         // what is exported, replaying tamp's stroke.
-        return super::die_compaction::export_pressing(&scene, &sha, out_dir);
+        (Document::DieCompaction(file), sha) => {
+            super::die_compaction::export_pressing(&file, &sha, out_dir)
+        }
     }
-    export(&scene, &sha, out_dir, dump_every)
 }
 
 /// Axis index of a unit vector along ±x, ±y or ±z.

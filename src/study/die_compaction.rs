@@ -9,8 +9,9 @@
 //!
 //! Writes `<out>/accuracy-cost/die_compaction.csv`; the page (`page.rs`) shows it.
 
-use crate::error::{Result, TampError};
+use crate::error::Result;
 use crate::process::die_compaction::{self, Pressing};
+use crate::process::die_compaction_file::DieCompactionFile;
 use serde::{Deserialize, Serialize};
 use std::fmt::Write;
 use std::path::Path;
@@ -52,21 +53,13 @@ fn deviation(a: &Pressing, b: &Pressing) -> f64 {
 }
 
 pub fn run(scene_path: &Path, out: &Path) -> Result<u8> {
-    let (scene, _) = crate::scene::load(scene_path)?;
-    if scene.die_compaction.is_none() {
-        return Err(TampError::input(
-            "die_compaction",
-            "is required: the study presses a die-compaction scene",
-        ));
-    }
+    let (scene, _) = DieCompactionFile::load(scene_path)?;
     let specimen = die_compaction::prepare(&scene, false)?;
     let mut runs = Vec::new();
     for (ramp, alpha, axis) in SETTINGS {
         let mut s = scene.clone();
         s.time_step.alpha = Some(alpha);
-        if let Some(dc) = s.die_compaction.as_mut() {
-            dc.press.ramp_time = ramp;
-        }
+        s.die_compaction.press.ramp_time = ramp;
         let started = Instant::now();
         let pressing = die_compaction::press(&s, &specimen, false, None, 0, &mut |_| Ok(()))?;
         let wall_s = started.elapsed().as_secs_f64();

@@ -26,8 +26,7 @@ use crate::generate::distribution::SizeDistribution;
 use crate::measure::region::{Region, ball_volume};
 use crate::particles::Vec3;
 use crate::process::die_compaction;
-use crate::scene::Scene;
-use crate::scene::die_compaction::FillMethod;
+use crate::process::die_compaction_file::{DieCompactionFile, FillMethod};
 use crate::scene::schema::RadiusSpec;
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -157,10 +156,15 @@ fn method_name(m: FillMethod) -> &'static str {
     }
 }
 
-fn measure(scene: &Scene, seed: u64, method: FillMethod, sigma: Option<f64>) -> Result<FillRow> {
+fn measure(
+    scene: &DieCompactionFile,
+    seed: u64,
+    method: FillMethod,
+    sigma: Option<f64>,
+) -> Result<FillRow> {
     let mut s = scene.clone();
     s.seed = seed;
-    let dc = s.die_compaction.as_mut().expect("checked by run");
+    let dc = &mut s.die_compaction;
     dc.fill.method = method;
     if method == FillMethod::SettledColumn {
         dc.fill.funnel = None;
@@ -176,8 +180,8 @@ fn measure(scene: &Scene, seed: u64, method: FillMethod, sigma: Option<f64>) -> 
         }
         None => None,
     };
-    crate::scene::validate::validate(&s)?;
-    let dc = s.die_compaction.clone().expect("set above");
+    s.validate()?;
+    let dc = s.die_compaction.clone();
     let started = Instant::now();
     let specimen = die_compaction::prepare(&s, true)?;
     let wall_s = started.elapsed().as_secs_f64();
@@ -222,13 +226,7 @@ fn measure(scene: &Scene, seed: u64, method: FillMethod, sigma: Option<f64>) -> 
 }
 
 pub fn run(o: &Options) -> Result<u8> {
-    let (scene, _) = crate::scene::load(&o.scene)?;
-    if scene.die_compaction.is_none() {
-        return Err(TampError::input(
-            "die_compaction",
-            "is required: the study fills a die-compaction scene",
-        ));
-    }
+    let (scene, _) = DieCompactionFile::load(&o.scene)?;
     let stem = o
         .scene
         .file_name()

@@ -13,6 +13,7 @@ pub mod parallel;
 pub mod report;
 
 use crate::error::{Result, TampError};
+use crate::process::die_compaction_file::DieCompactionFile;
 use crate::scene::{self, Scene};
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
@@ -222,6 +223,21 @@ impl CaseContext<'_> {
         let mut scene = scene::load(&self.dir.join(file))?.0;
         self.variant.apply(&mut scene);
         Ok(scene)
+    }
+
+    /// The case's die-compaction file, with the variant's step and detector applied to
+    /// the scenes its stages share.
+    pub fn die_compaction(&self) -> Result<DieCompactionFile> {
+        let file =
+            self.spec.scene.as_ref().ok_or_else(|| {
+                TampError::Other(format!("case {} names no scene", self.spec.name))
+            })?;
+        let mut process = DieCompactionFile::load(&self.dir.join(file))?.0;
+        let mut shared = process.shared_scene();
+        self.variant.apply(&mut shared);
+        process.time_step = shared.time_step;
+        process.broad_phase = shared.broad_phase;
+        Ok(process)
     }
 }
 

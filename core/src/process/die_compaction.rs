@@ -31,6 +31,8 @@
 //!    height H (the punch face), ΔH/H₀, both densities (the RVE centred at H/2) and
 //!    the forces on punch, floor and die wall are recorded.
 
+use super::die_compaction_file::{DieCompactionFile, DieCompactionSpec, FillMethod};
+use super::funnel::Funnel;
 use crate::checkpoint::SimState;
 use crate::contact::record::ContactRecord;
 use crate::error::{Result, TampError};
@@ -38,8 +40,6 @@ use crate::generate::rsi::{InsertionBox, Placed};
 use crate::measure::{Region, packing::packing_fraction};
 use crate::particles::Vec3;
 use crate::progress::Progress;
-use crate::scene::die_compaction::{DieCompactionSpec, FillMethod};
-use crate::scene::funnel::Funnel;
 use crate::scene::schema::{ContactSpec, ParticleSpec, RunSpec, Scene};
 use crate::scene::walls::{MotionSpec, ShapeSpec, WallSpec};
 use crate::scene::{self, validate};
@@ -134,13 +134,6 @@ impl Pressing {
     }
 }
 
-fn spec(scene: &Scene) -> Result<&DieCompactionSpec> {
-    scene
-        .die_compaction
-        .as_ref()
-        .ok_or_else(|| TampError::input("die_compaction", "is required by this process"))
-}
-
 fn gravity(scene: &Scene) -> Result<Vec3> {
     scene
         .gravity
@@ -161,7 +154,6 @@ fn stage_scene(
 ) -> Result<Scene> {
     let mut s = base.clone();
     s.name = format!("{} — {stage} stage", base.name);
-    s.die_compaction = None;
     // The stages step by α (the press re-estimates it from the contacts), never by
     // the accuracy default of a scene that states no step.
     s.time_step.alpha = Some(base.time_step.alpha());
@@ -458,9 +450,13 @@ fn check_poured(sim: &Simulation, dc: &DieCompactionSpec) -> Result<()> {
 }
 
 /// Fill and flatten: the specimen the press stage starts from.
-pub fn prepare(scene: &Scene, quiet: bool) -> Result<Specimen> {
-    let dc = spec(scene)?;
-    crate::scene::memory::check(scene, None)?;
+pub fn prepare(file: &DieCompactionFile, quiet: bool) -> Result<Specimen> {
+    let (scene, dc) = (&file.shared_scene(), &file.die_compaction);
+    crate::scene::memory::check_with(
+        scene,
+        None,
+        Some(("die_compaction.particles.count", dc.particles.count)),
+    )?;
     let g = gravity(scene)? * dc.fill.gravity_scale;
     let start = fill_start(scene, dc)?;
     let die_top = start.die_top;
@@ -569,8 +565,8 @@ pub fn prepare(scene: &Scene, quiet: bool) -> Result<Specimen> {
 }
 
 /// The press-stage scene for a specimen, under the scene's own contact law.
-pub fn press_scene(scene: &Scene, specimen: &Specimen) -> Result<Scene> {
-    let dc = spec(scene)?;
+pub fn press_scene(file: &DieCompactionFile, specimen: &Specimen) -> Result<Scene> {
+    let (scene, dc) = (&file.shared_scene(), &file.die_compaction);
     let area = PI * (0.5 * dc.die_diameter).powi(2);
     let motion = MotionSpec::Pressure {
         direction: [0.0, 0.0, -1.0],
@@ -615,15 +611,15 @@ fn stop_if_signalled(sim: &Simulation, stage: &str) -> Result<()> {
 /// continues a pressing from its checkpoint; `checkpoint` is called with the state
 /// every `every` steps (0: never).
 pub fn press(
-    scene: &Scene,
+    file: &DieCompactionFile,
     specimen: &Specimen,
     quiet: bool,
     resume: Option<PressState>,
     every: u64,
     checkpoint: &mut dyn FnMut(&PressState) -> Result<()>,
 ) -> Result<Pressing> {
-    let dc = spec(scene)?;
-    let stage = press_scene(scene, specimen)?;
+    let (scene, dc) = (&file.shared_scene(), &file.die_compaction);
+    let stage = press_scene(file, specimen)?;
     let built = scene::build(&stage)?;
     let mut sim = built.sim;
     let (die, floor, punch) = (0, 1, 2);

@@ -40,14 +40,14 @@ pub struct CompactionSummary {
 /// Run the die-compaction file `scene` (read from `scene_path`, whose bytes hash to
 /// `sha`) into `out_dir`.
 pub fn run_scene(
-    scene: &crate::scene::Scene,
+    file: &super::die_compaction_file::DieCompactionFile,
     sha: &str,
     scene_path: &Path,
     out_dir: &Path,
     quiet: bool,
     resume: bool,
 ) -> Result<CompactionSummary> {
-    let every = scene.output.checkpoint_every;
+    let every = file.output.checkpoint_every;
     crate::checkpoint::require_checkpoints_for_resume(resume, every)?;
     // The specimen and the checkpoint are what a resumed run starts from.
     let keep: &[&str] = if resume {
@@ -78,13 +78,13 @@ pub fn run_scene(
         );
         saved.into_state(sha, &specimen_path)?
     } else {
-        let specimen = die_compaction::prepare(scene, quiet)?;
+        let specimen = die_compaction::prepare(file, quiet)?;
         if every > 0 {
             checkpoint::write_checkpoint(&specimen_path, &Checkpoint::new(sha, &specimen))?;
         }
         specimen
     };
-    let press_scene = die_compaction::press_scene(scene, &specimen)?;
+    let press_scene = die_compaction::press_scene(file, &specimen)?;
     let json = serde_json::to_vec_pretty(&press_scene).expect("scene serialises");
     output::write_atomic(&out_dir.join("press.scene.json"), &json)?;
     let state: Option<PressState> = if resume && checkpoint_path.exists() {
@@ -102,7 +102,7 @@ pub fn run_scene(
     let mut write = |state: &PressState| {
         checkpoint::write_checkpoint(&checkpoint_path, &Checkpoint::new(sha, state))
     };
-    let pressing = die_compaction::press(scene, &specimen, quiet, state, every, &mut write)
+    let pressing = die_compaction::press(file, &specimen, quiet, state, every, &mut write)
         .map_err(|e| match e {
             TampError::Interrupted {
                 signal,
@@ -136,8 +136,8 @@ pub fn run_scene(
         .expect("at least two records")
         .clone();
     let summary = CompactionSummary {
-        provenance: Provenance::new(sha.to_string(), scene.seed, last.dt, None, pressing.steps),
-        scene_name: scene.name.clone(),
+        provenance: Provenance::new(sha.to_string(), file.seed, last.dt, None, pressing.steps),
+        scene_name: file.name.clone(),
         particles: specimen.particles.len(),
         h0: specimen.h0,
         initial_density_specimen: specimen.density_specimen,

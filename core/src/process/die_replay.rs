@@ -17,6 +17,7 @@
 //! at the punch height (`die_compaction::densities`).
 
 use super::die_compaction::{self, Pressing, Specimen};
+use super::die_compaction_file::DieCompactionFile;
 use crate::error::{Result, TampError};
 use crate::scene::Scene;
 use crate::scene::walls::MotionSpec;
@@ -96,11 +97,11 @@ pub struct Pressed {
     pub replay: Scene,
 }
 
-/// Fill, flatten and press `scene` in tamp (its own law and inertia), and set up the
+/// Fill, flatten and press `file` in tamp (its own law and inertia), and set up the
 /// replay of the recorded stroke under `solid`.
-pub fn press_for_replay(scene: &Scene, solid: &Scene) -> Result<Pressed> {
-    let specimen = die_compaction::prepare(scene, false)?;
-    let pressing = die_compaction::press(scene, &specimen, false, None, 0, &mut |_| Ok(()))?;
+pub fn press_for_replay(file: &DieCompactionFile, solid: &DieCompactionFile) -> Result<Pressed> {
+    let specimen = die_compaction::prepare(file, false)?;
+    let pressing = die_compaction::press(file, &specimen, false, None, 0, &mut |_| Ok(()))?;
     let stroke = Stroke::of(&pressing, specimen.h0)?;
     let replay = replay_scene(solid, &specimen, &stroke)?;
     Ok(Pressed {
@@ -110,12 +111,12 @@ pub fn press_for_replay(scene: &Scene, solid: &Scene) -> Result<Pressed> {
     })
 }
 
-/// The scene whose pressing a peer with `fix nve/sphere` (LIGGGHTS, LAMMPS) can
-/// replay: `scene` with the moment of inertia of a solid sphere, the only one that
-/// integrator has. tamp's fill, flatten and pressed stroke keep the scene's own
+/// The file whose pressing a peer with `fix nve/sphere` (LIGGGHTS, LAMMPS) can
+/// replay: `file` with the moment of inertia of a solid sphere, the only one that
+/// integrator has. tamp's fill, flatten and pressed stroke keep the file's own
 /// factor; both replays use this one.
-pub fn solid_sphere_scene(scene: &Scene) -> Scene {
-    let mut s = scene.clone();
+pub fn solid_sphere_scene(file: &DieCompactionFile) -> DieCompactionFile {
+    let mut s = file.clone();
     if let Some(r) = s.rotation.as_mut() {
         r.inertia_scale = 1.0;
     }
@@ -137,8 +138,12 @@ pub struct ReplayRecord {
 }
 
 /// The press stage with the punch following `stroke` at its fixed step.
-pub fn replay_scene(scene: &Scene, specimen: &Specimen, stroke: &Stroke) -> Result<Scene> {
-    let mut s = die_compaction::press_scene(scene, specimen)?;
+pub fn replay_scene(
+    file: &DieCompactionFile,
+    specimen: &Specimen,
+    stroke: &Stroke,
+) -> Result<Scene> {
+    let mut s = die_compaction::press_scene(file, specimen)?;
     s.walls[PUNCH].motion = MotionSpec::Displacement {
         x: "0.0".into(),
         y: "0.0".into(),
@@ -152,13 +157,14 @@ pub fn replay_scene(scene: &Scene, specimen: &Specimen, stroke: &Stroke) -> Resu
 
 /// Replay `stroke` on `specimen` under the scene's press law; one record per stroke
 /// record (the first is the specimen before the stroke).
-pub fn replay(scene: &Scene, specimen: &Specimen, stroke: &Stroke) -> Result<Vec<ReplayRecord>> {
-    let dc = scene
-        .die_compaction
-        .as_ref()
-        .ok_or_else(|| TampError::input("die_compaction", "is required by this process"))?;
+pub fn replay(
+    file: &DieCompactionFile,
+    specimen: &Specimen,
+    stroke: &Stroke,
+) -> Result<Vec<ReplayRecord>> {
+    let dc = &file.die_compaction;
     let area = PI * (0.5 * dc.die_diameter).powi(2);
-    let stage = replay_scene(scene, specimen, stroke)?;
+    let stage = replay_scene(file, specimen, stroke)?;
     let mut sim = crate::scene::build(&stage)?.sim;
     let mut out = Vec::with_capacity(stroke.heights.len() + 1);
     let mut record = |sim: &crate::simulation::Simulation| -> Result<()> {

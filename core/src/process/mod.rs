@@ -3,5 +3,7 @@
 //! scene block).
 
 pub mod die_compaction;
+pub mod die_compaction_file;
 pub mod die_compaction_run;
 pub mod die_replay;
+pub mod funnel;

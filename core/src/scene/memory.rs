@@ -31,8 +31,9 @@ struct Share {
 }
 
 /// The shares of the fields whose size the scene sets; `steps` once it is known
-/// (the outputs kept in memory grow with it).
-fn shares(scene: &Scene, steps: Option<u64>) -> Vec<Share> {
+/// (the outputs kept in memory grow with it), and the particles a process adds
+/// (`process`: the field that sets their count, and the count).
+fn shares(scene: &Scene, steps: Option<u64>, process: Option<(&str, usize)>) -> Vec<Share> {
     let mut shares = Vec::new();
     let mut particles = scene.particles.len() as f64;
     if !scene.particles.is_empty() {
@@ -55,11 +56,11 @@ fn shares(scene: &Scene, steps: Option<u64>) -> Vec<Share> {
             bytes: dep.count as f64 * BYTES_PER_PARTICLE,
         });
     }
-    if let Some(dc) = &scene.die_compaction {
-        particles += dc.particles.count as f64;
+    if let Some((path, count)) = process {
+        particles += count as f64;
         shares.push(Share {
-            path: "die_compaction.particles.count".into(),
-            bytes: dc.particles.count as f64 * BYTES_PER_PARTICLE,
+            path: path.into(),
+            bytes: count as f64 * BYTES_PER_PARTICLE,
         });
     }
     for (k, wall) in scene.walls.iter().enumerate() {
@@ -87,14 +88,25 @@ fn shares(scene: &Scene, steps: Option<u64>) -> Vec<Share> {
 
 /// Refuse the scene when its estimate exceeds the memory available now.
 pub fn check(scene: &Scene, steps: Option<u64>) -> Result<()> {
+    check_with(scene, steps, None)
+}
+
+/// `check` of the scene a process's stages share, with the particles the process adds
+/// (the field that sets their count, and the count).
+pub fn check_with(scene: &Scene, steps: Option<u64>, process: Option<(&str, usize)>) -> Result<()> {
     let Some(available) = available_bytes() else {
         return Ok(());
     };
-    check_against(scene, steps, available)
+    check_against(scene, steps, process, available)
 }
 
-fn check_against(scene: &Scene, steps: Option<u64>, available: f64) -> Result<()> {
-    let shares = shares(scene, steps);
+fn check_against(
+    scene: &Scene,
+    steps: Option<u64>,
+    process: Option<(&str, usize)>,
+    available: f64,
+) -> Result<()> {
+    let shares = shares(scene, steps, process);
     let total: f64 = shares.iter().map(|s| s.bytes).sum();
     if total <= available {
         return Ok(());
@@ -167,7 +179,7 @@ mod tests {
     #[test]
     fn a_billion_particles_do_not_fit_in_a_gigabyte() {
         let s = scene(&BASE.replace("COUNT", "1000000000"));
-        let err = check_against(&s, None, 1e9).unwrap_err().to_string();
+        let err = check_against(&s, None, None, 1e9).unwrap_err().to_string();
         assert!(err.contains("insert[0].count"), "{err}");
         assert!(err.contains("1907.349 GiB"), "{err}");
         assert!(err.contains("0.931 GiB"), "{err}");
@@ -176,7 +188,7 @@ mod tests {
     #[test]
     fn a_thousand_particles_fit() {
         let s = scene(&BASE.replace("COUNT", "1000"));
-        assert!(check_against(&s, Some(10), 1e9).is_ok());
+        assert!(check_against(&s, Some(10), None, 1e9).is_ok());
     }
 
     #[test]

@@ -2,8 +2,6 @@
 
 pub mod build;
 pub mod contact;
-pub mod die_compaction;
-pub mod funnel;
 pub mod materials;
 pub mod memory;
 pub mod particles;
@@ -20,8 +18,36 @@ use crate::error::{Result, TampError};
 use sha2::{Digest, Sha256};
 
 /// Parse scene JSON text. Errors name the JSON path (`particles[3].radius`) and the rule;
-/// anything after the scene's JSON is an error too, not ignored.
+/// anything after the scene's JSON is an error too, not ignored. A die-compaction file
+/// is not a scene: it is refused naming `die_compaction` (`document::parse` reads either).
 pub fn parse(text: &str) -> Result<Scene> {
+    if is_process(text)? {
+        return Err(TampError::input(
+            "die_compaction",
+            "makes this file a die-compaction process, not a scene: `tamp run` runs it, and `process::die_compaction_file::DieCompactionFile` reads it",
+        ));
+    }
+    let scene: Scene = parse_json(text)?;
+    validate::validate(&scene)?;
+    Ok(scene)
+}
+
+/// Whether a file's JSON object has a `die_compaction` block, which makes it a process
+/// document rather than a scene. Every other value is skipped unchecked, so this pass
+/// fails only on malformed JSON, and then with the error the typed parse would give.
+pub fn is_process(text: &str) -> Result<bool> {
+    #[derive(serde::Deserialize)]
+    struct Kind {
+        #[serde(default)]
+        die_compaction: Option<serde::de::IgnoredAny>,
+    }
+    Ok(parse_json::<Kind>(text)?.die_compaction.is_some())
+}
+
+/// One JSON object of type `T` from a file's text, unvalidated. Errors name the JSON
+/// path and the rule (`scene` for the top level and for malformed JSON); a byte-order
+/// mark and anything after the object are errors, not ignored.
+pub fn parse_json<T: serde::de::DeserializeOwned>(text: &str) -> Result<T> {
     if text.starts_with('\u{feff}') {
         return Err(TampError::input(
             "scene",
@@ -29,7 +55,7 @@ pub fn parse(text: &str) -> Result<Scene> {
         ));
     }
     let de = &mut serde_json::Deserializer::from_str(text);
-    let scene: Scene = serde_path_to_error::deserialize(&mut *de).map_err(|e| {
+    let value: T = serde_path_to_error::deserialize(&mut *de).map_err(|e| {
         let path = e.path().to_string();
         let inner = e.into_inner();
         // `.` is the top level; `?` is where a syntax error left the path unknown.
@@ -55,14 +81,24 @@ pub fn parse(text: &str) -> Result<Scene> {
             ),
         )
     })?;
-    validate::validate(&scene)?;
-    Ok(scene)
+    Ok(value)
 }
 
-/// Read, parse and validate a scene file; also returns the SHA-256 of its bytes. The path
-/// `-` (or `/dev/stdin`) reads standard input, once; the files a scene read that way names
-/// (meshes, particle files) are then found from the current directory.
-pub fn load(path: &std::path::Path) -> Result<(Scene, String)> {
+/// A file's text as read once, with what a run needs to know of where it came from.
+pub struct Input {
+    /// The file's text (UTF-8).
+    pub text: String,
+    /// SHA-256 of its bytes, hex.
+    pub sha256: String,
+    /// Directory relative file references are found from (empty for standard input:
+    /// the current directory).
+    pub base_dir: std::path::PathBuf,
+}
+
+/// Read a scene or process file once. The path `-` (or `/dev/stdin`) reads standard
+/// input; the files a scene read that way names (meshes, particle files) are then found
+/// from the current directory.
+pub fn read_input(path: &std::path::Path) -> Result<Input> {
     let stdin = is_stdin(path);
     let bytes = if stdin {
         let mut bytes = Vec::new();
@@ -73,14 +109,27 @@ pub fn load(path: &std::path::Path) -> Result<(Scene, String)> {
         std::fs::read(path)
             .map_err(|e| TampError::io(format!("reading scene {}", path.display()), e))?
     };
-    let text = String::from_utf8(bytes.clone())
+    let sha256 = sha256_hex(&bytes);
+    let text = String::from_utf8(bytes)
         .map_err(|_| TampError::input(path.display().to_string(), "must be UTF-8 text"))?;
-    let mut scene = parse(&text)?;
-    scene.base_dir = match path.parent() {
+    let base_dir = match path.parent() {
         Some(dir) if !stdin => dir.to_path_buf(),
         _ => std::path::PathBuf::new(),
     };
-    Ok((scene, sha256_hex(&bytes)))
+    Ok(Input {
+        text,
+        sha256,
+        base_dir,
+    })
+}
+
+/// Read, parse and validate a scene file; also returns the SHA-256 of its bytes
+/// (`read_input` says how `-` reads standard input).
+pub fn load(path: &std::path::Path) -> Result<(Scene, String)> {
+    let input = read_input(path)?;
+    let mut scene = parse(&input.text)?;
+    scene.base_dir = input.base_dir;
+    Ok((scene, input.sha256))
 }
 
 /// Whether `path` names standard input rather than a file.

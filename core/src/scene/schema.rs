@@ -1,11 +1,10 @@
 //! The scene file (JSON): its top level, and every type below it re-exported from
 //! the topic file that holds the type with its rules and its build (materials.rs,
-//! contact.rs, particles.rs, walls.rs, physics.rs, run.rs, die_compaction.rs), so that
+//! contact.rs, particles.rs, walls.rs, physics.rs, run.rs), so that
 //! `scene::schema` names the whole tree. Every field, unit and default is documented
 //! in docs/scene-format.md; unknown fields are rejected.
 
 pub use super::contact::{ContactSpec, FrictionPair, FrictionSpec};
-pub use super::die_compaction::DieCompactionSpec;
 pub use super::materials::{HollomonSpec, MaterialSpec};
 pub use super::particles::{
     BoxRegion, DepositSpec, InsertSpec, ParticleSpec, RadiusSpec, ScheduleSpec, UniformRadius,
@@ -57,7 +56,7 @@ pub struct Scene {
     pub rotation: Option<RotationSpec>,
     /// How the time step is chosen.
     pub time_step: TimeStepSpec,
-    /// Required unless `die_compaction` sets the stages.
+    /// How long the run lasts.
     #[serde(default)]
     pub run: RunSpec,
     /// Contact detection.
@@ -69,10 +68,6 @@ pub struct Scene {
     /// The files a run writes.
     #[serde(default)]
     pub output: OutputSpec,
-    /// The die compaction of Rojek 2016 §5 as a sequence of stages (fill, flatten,
-    /// press); absent for an ordinary run.
-    #[serde(default)]
-    pub die_compaction: Option<DieCompactionSpec>,
     /// Directory of the scene file, for relative paths (STL meshes); not a JSON field.
     #[serde(skip)]
     pub base_dir: std::path::PathBuf,

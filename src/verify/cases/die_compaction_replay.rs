@@ -108,9 +108,9 @@ pub fn lammps(ctx: &CaseContext) -> Result<Vec<Measured>> {
 /// tamp's replay of each recorded stroke against `peer`'s.
 fn compare(ctx: &CaseContext, peer: &str) -> Result<Vec<Measured>> {
     let rows: Vec<Row> = ctx.peer_results(peer)?;
-    let base = ctx.scene()?;
+    let base = ctx.die_compaction()?;
     let scene_file = ctx.spec.scene.as_deref().unwrap_or_default();
-    let sha = crate::scene::load(&ctx.dir.join(scene_file))?.1;
+    let sha = crate::scene::read_input(&ctx.dir.join(scene_file))?.sha256;
     let mut seeds: Vec<u64> = rows.iter().map(|r| r.seed).collect();
     seeds.dedup();
     let mut curves = String::from(
@@ -271,7 +271,7 @@ mod tests {
                 .unwrap();
             let seed1: Vec<&Row> = rows.iter().filter(|r| r.seed == 1).collect();
             let scene = root.join("verification").join(format!("{case}.scene.json"));
-            let sha = crate::scene::load(&scene).unwrap().1;
+            let sha = crate::scene::read_input(&scene).unwrap().sha256;
             let stroke = stroke_of(&seed1);
             recorded_deck_is_current(&recorded.join("seed1"), &sha, &stroke).unwrap();
             let mut moved = stroke.clone();

@@ -15,19 +15,19 @@
 
 use crate::error::{Result, TampError};
 use crate::process::die_compaction::{self, Specimen};
-use crate::scene::Scene;
+use crate::process::die_compaction_file::DieCompactionFile;
 use std::collections::BTreeMap;
 use std::sync::{Arc, Mutex, PoisonError};
 
 type Slot = Arc<Mutex<Option<Specimen>>>;
 
-/// `die_compaction::prepare(scene, true)`, once per process for each fill.
-pub fn prepare(scene: &Scene) -> Result<Specimen> {
+/// `die_compaction::prepare(file, true)`, once per process for each fill.
+pub fn prepare(file: &DieCompactionFile) -> Result<Specimen> {
     static FILLED: Mutex<BTreeMap<String, Slot>> = Mutex::new(BTreeMap::new());
     let slot: Slot = FILLED
         .lock()
         .unwrap_or_else(PoisonError::into_inner)
-        .entry(fill_key(scene)?)
+        .entry(fill_key(file)?)
         .or_default()
         .clone();
     // Held while filling: a second case with the same fill waits for this one.
@@ -35,14 +35,14 @@ pub fn prepare(scene: &Scene) -> Result<Specimen> {
     if let Some(specimen) = slot.as_ref() {
         return Ok(specimen.clone());
     }
-    let specimen = die_compaction::prepare(scene, true)?;
+    let specimen = die_compaction::prepare(file, true)?;
     *slot = Some(specimen.clone());
     Ok(specimen)
 }
 
-/// The scene as the fill and flatten read it.
-fn fill_key(scene: &Scene) -> Result<String> {
-    let mut v = serde_json::to_value(scene)
+/// The file as the fill and flatten read it.
+fn fill_key(file: &DieCompactionFile) -> Result<String> {
+    let mut v = serde_json::to_value(file)
         .map_err(|e| TampError::Other(format!("serialising the scene: {e}")))?;
     if let Some(o) = v.as_object_mut() {
         o.remove("name");
@@ -59,7 +59,7 @@ fn fill_key(scene: &Scene) -> Result<String> {
 mod tests {
     use super::*;
 
-    use crate::checked_in_scene as scene;
+    use crate::checked_in_die_compaction as scene;
 
     #[test]
     fn the_three_small_die_cases_share_a_fill_and_other_seeds_or_fills_do_not() {
@@ -73,7 +73,7 @@ mod tests {
         other.seed = 2;
         assert_ne!(fill_key(&other).unwrap(), lammps);
         let mut other = scene("lammps_die_compaction_small");
-        other.die_compaction.as_mut().unwrap().fill.gravity_scale *= 10.0;
+        other.die_compaction.fill.gravity_scale *= 10.0;
         assert_ne!(fill_key(&other).unwrap(), lammps);
         let mut other = scene("lammps_die_compaction_small");
         other.rotation = None;

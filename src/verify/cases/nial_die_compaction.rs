@@ -37,7 +37,8 @@ use crate::contact::tangential::{TangentialLaw, storakers};
 use crate::error::{Result, TampError};
 use crate::plot::{Panel, Series, write_svg};
 use crate::process::die_compaction::{self, PressRecord, PressState, Pressing, Specimen};
-use crate::scene::schema::{HollomonSpec, Scene};
+use crate::process::die_compaction_file::DieCompactionFile;
+use crate::scene::schema::HollomonSpec;
 use crate::verify::{CaseContext, Measured, parallel};
 use serde::{Deserialize, Serialize, de::DeserializeOwned};
 use std::f64::consts::PI;
@@ -114,7 +115,7 @@ fn full_models() -> Vec<Model> {
 /// The case scene with a model's normal law, Hollomon constants and friction. The
 /// Storåkers runs take Rojek's tangential law (eq 21, k_t = β k_n) with β = 1, the
 /// middle of the 0.5–5 Olsson & Larsson suggest, since §5 does not state it.
-fn with_model(scene: &Scene, model: &Model) -> Result<Scene> {
+fn with_model(scene: &DieCompactionFile, model: &Model) -> Result<DieCompactionFile> {
     let mut s = scene.clone();
     let tangential = s.contact.tangential.as_mut().ok_or_else(|| {
         TampError::Other("the NiAl scene must have a tangential law (wall friction)".into())
@@ -133,7 +134,7 @@ fn with_model(scene: &Scene, model: &Model) -> Result<Scene> {
             });
         }
     }
-    crate::scene::validate::validate(&s)?;
+    s.validate()?;
     Ok(s)
 }
 
@@ -154,7 +155,7 @@ struct Done {
 }
 
 /// The key of saved work: the scene as pressed and the code that pressed it.
-fn sha_of(scene: &Scene) -> String {
+fn sha_of(scene: &DieCompactionFile) -> String {
     let scene = crate::scene::sha256_hex(&serde_json::to_vec(scene).expect("scene serialises"));
     format!("{scene}:{}", crate::SOURCE_TREE)
 }
@@ -179,7 +180,7 @@ impl Store {
 /// Press one specimen under several models, one per core at a time, reusing
 /// and checkpointing work in `store`.
 fn press_all(
-    scene: &Scene,
+    scene: &DieCompactionFile,
     specimen: &Specimen,
     models: &[Model],
     store: &Store,
@@ -274,7 +275,7 @@ fn mpa(points: &[PressRecord], column: fn(&PressRecord) -> f64) -> Vec<(f64, f64
 /// walls), each line 1–8 px wide in proportion to its normal force.
 fn write_force_chains(
     ctx: &CaseContext,
-    scene: &Scene,
+    scene: &DieCompactionFile,
     specimen: &Specimen,
     pressing: &Pressing,
 ) -> Result<()> {
@@ -282,11 +283,7 @@ fn write_force_chains(
         .records
         .last()
         .ok_or_else(|| TampError::Other("a pressing without records".into()))?;
-    let die_radius = scene
-        .die_compaction
-        .as_ref()
-        .map(|dc| 0.5 * dc.die_diameter)
-        .ok_or_else(|| TampError::Other("the NiAl scene needs die_compaction".into()))?;
+    let die_radius = 0.5 * scene.die_compaction.die_diameter;
     let n = specimen.particles.len().max(1) as f64;
     let half_width = specimen.particles.iter().map(|p| p.radius).sum::<f64>() / n;
     let slice: Vec<_> = pressing
@@ -362,16 +359,14 @@ fn write_curves_csv(ctx: &CaseContext, labels: &[&str], pressings: &[Pressing]) 
 }
 
 pub fn small(ctx: &CaseContext) -> Result<Vec<Measured>> {
-    let scene = ctx.scene()?;
+    let scene = ctx.die_compaction()?;
     let specimen = super::die_specimen::prepare(&scene)?;
     let pressing = die_compaction::press(&scene, &specimen, true, None, 0, &mut |_| Ok(()))?;
 
     // The same fill under ten times the gravity: the settled density must not move
     // beyond the packing's own randomness.
     let mut stronger = scene.clone();
-    if let Some(dc) = stronger.die_compaction.as_mut() {
-        dc.fill.gravity_scale *= 10.0;
-    }
+    stronger.die_compaction.fill.gravity_scale *= 10.0;
     let specimen_stronger = die_compaction::prepare(&stronger, true)?;
 
     write_curves_csv(ctx, &["hertz"], std::slice::from_ref(&pressing))?;
@@ -420,11 +415,8 @@ pub fn small(ctx: &CaseContext) -> Result<Vec<Measured>> {
 }
 
 pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {
-    let scene = ctx.scene()?;
-    let dc = scene
-        .die_compaction
-        .as_ref()
-        .ok_or_else(|| TampError::Other("the NiAl scene needs die_compaction".into()))?;
+    let scene = ctx.die_compaction()?;
+    let dc = &scene.die_compaction;
     // Not quiet: this case runs for hours, and its log says how far it got.
     let store = Store {
         dir: ctx.report_dir.join(format!("{}_runs", ctx.spec.name)),

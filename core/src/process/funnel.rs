@@ -21,7 +21,7 @@
 //!   the die's cross-section at solid fraction 0.3): where the tube ends above the
 //!   floor, which the settled bed must stay below.
 
-use super::die_compaction::DieCompactionSpec;
+use super::die_compaction_file::DieCompactionSpec;
 use crate::error::Errors;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;

@@ -1,0 +1,414 @@
+//! A die-compaction file: the cold uniaxial die compaction of Rojek et al. 2016 §5 as
+//! one JSON object, a process document that `process::die_compaction` runs as a short
+//! sequence of stage scenes sharing the particles' state. Its `die_compaction` block
+//! describes the process; its other blocks are those the stage scenes share, written
+//! as in a scene file (docs/scene-format.md):
+//!
+//! ```json
+//! "die_compaction": {
+//!   "die_diameter": 58e-6, "wall_material": "die",
+//!   "particles": {"count": 1751, "material": "NiAl", "radius": {"law": "log_normal", ...}},
+//!   "fill": {"contact": {...}, "gravity_scale": 1e4, "loose_fraction": 0.25,
+//!            "max_duration": 1e-3, "method": "settled_column"},
+//!   "flatten": {"depth": 3e-6, "duration": 1e-5},
+//!   "press": {"pressure": 50e6, "ramp_time": 1e-4, "punch_mass": 1e-9,
+//!             "records": 200, "dt_every": 100},
+//!   "rve_diameter": 54e-6, "die_curvature": "flat"
+//! }
+//! ```
+//! The file's own `contact`, `rotation`, `time_step` and `gravity` are those of the
+//! pressing stage; `fill.contact` is the law used while the die is filled and the
+//! top flattened (frictionless Hertz in the paper). The die, its floor and the punch
+//! are made of `wall_material`, so particle–wall friction is set through
+//! `friction_pairs` of each contact block. `die_curvature` is how the die's curvature
+//! enters the pressing's wall contacts (`scene::walls::Curvature`); the fill and
+//! flatten keep a flat die (`process::die_compaction::press_scene` says why). The
+//! particles, walls, periodic axes, growth and run length are the stages' own, so a
+//! file that gives them is refused, naming each.
+//!
+//! `fill.method` is how the particles reach the die: `settled_column` (the default)
+//! places them in a loose column inside the die; `funnel` places them in a loose cloud
+//! above a funnel that rests in the die's mouth, as Rojek's Fig 13a pours them
+//! (`fill.funnel`, every dimension optional, `process::funnel`; the pour in
+//! `process::die_compaction`).
+
+pub use super::funnel::{FillMethod, FunnelSpec};
+use crate::error::{Errors, Result};
+use crate::scene::contact::{self, LawContext};
+use crate::scene::schema::{
+    BroadPhaseSpec, ContactSpec, DepositSpec, GrowthSpec, InsertSpec, MaterialSpec, OutputSpec,
+    ParticleSpec, PeriodicSpec, RadiusSpec, RotationSpec, RunSpec, Scene, StabilitySpec,
+    TimeStepSpec, WallSpec,
+};
+use crate::scene::walls::Curvature;
+use crate::scene::{materials, physics, run};
+use serde::{Deserialize, Serialize};
+use std::collections::HashSet;
+use std::path::{Path, PathBuf};
+
+/// A die-compaction file: the blocks its stage scenes share, and the process. Its
+/// fields are those of a scene (`scene::Scene`, whose documentation they share) with
+/// `die_compaction` added; the blocks the stages set are read only to be refused.
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct DieCompactionFile {
+    /// A title, copied to the outputs.
+    #[serde(default)]
+    pub name: String,
+    /// Seed of every random choice the process makes (the fill's radii and places).
+    #[serde(default)]
+    pub seed: u64,
+    /// The materials of the particles and of the die.
+    pub materials: Vec<MaterialSpec>,
+    /// The pressing stage's contact law.
+    pub contact: ContactSpec,
+    /// Set by the stages: refused when given.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub particles: Vec<ParticleSpec>,
+    /// Set by the stages: refused when given.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub insert: Vec<InsertSpec>,
+    /// Set by the stages: refused when given.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub deposit: Vec<DepositSpec>,
+    /// Set by the stages: refused when given.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub walls: Vec<WallSpec>,
+    /// Gravitational acceleration, m/s²: required (the die is filled by settling).
+    #[serde(default)]
+    pub gravity: Option<[f64; 3]>,
+    /// Refused when given: the die is not periodic.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub periodic: Option<PeriodicSpec>,
+    /// Refused when given: the stages grow nothing.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub growth: Option<GrowthSpec>,
+    /// Absent means particles do not rotate.
+    #[serde(default)]
+    pub rotation: Option<RotationSpec>,
+    /// How the stages' time step is chosen (α; the press re-estimates it).
+    pub time_step: TimeStepSpec,
+    /// The stages set the run's length: a length given here is refused.
+    #[serde(default)]
+    pub run: RunSpec,
+    /// Contact detection of every stage.
+    #[serde(default)]
+    pub broad_phase: BroadPhaseSpec,
+    /// The limits that stop a stage going wrong (exit 3).
+    #[serde(default)]
+    pub stability: StabilitySpec,
+    /// The files a run writes.
+    #[serde(default)]
+    pub output: OutputSpec,
+    /// The process: die, particles, fill, flatten, press and RVE.
+    pub die_compaction: DieCompactionSpec,
+    /// Directory of the file, for relative paths; not a JSON field.
+    #[serde(skip)]
+    pub base_dir: PathBuf,
+}
+
+impl DieCompactionFile {
+    /// Parse a die-compaction file's JSON text and check every rule. Errors name the
+    /// JSON path and the rule, as a scene's do; a scene file is refused naming
+    /// `die_compaction`.
+    pub fn parse(text: &str) -> Result<Self> {
+        if !crate::scene::is_process(text)? {
+            return Err(crate::error::TampError::input(
+                "die_compaction",
+                "is required: this file is a scene, not a die-compaction process",
+            ));
+        }
+        let file: DieCompactionFile = crate::scene::parse_json(text)?;
+        file.validate()?;
+        Ok(file)
+    }
+
+    /// Read, parse and validate a die-compaction file; also returns the SHA-256 of its
+    /// bytes. `-` (or `/dev/stdin`) reads standard input, as `scene::load` does.
+    pub fn load(path: &Path) -> Result<(Self, String)> {
+        let input = crate::scene::read_input(path)?;
+        let mut file = Self::parse(&input.text)?;
+        file.base_dir = input.base_dir;
+        Ok((file, input.sha256))
+    }
+
+    /// The scene every stage starts from: this file's shared blocks, with no
+    /// particles, walls or run length (each stage sets its own).
+    pub fn shared_scene(&self) -> Scene {
+        Scene {
+            name: self.name.clone(),
+            seed: self.seed,
+            materials: self.materials.clone(),
+            contact: self.contact.clone(),
+            particles: Vec::new(),
+            insert: Vec::new(),
+            deposit: Vec::new(),
+            walls: Vec::new(),
+            gravity: self.gravity,
+            periodic: None,
+            growth: None,
+            rotation: self.rotation.clone(),
+            time_step: self.time_step.clone(),
+            run: RunSpec::default(),
+            broad_phase: self.broad_phase.clone(),
+            stability: self.stability.clone(),
+            output: self.output.clone(),
+            base_dir: self.base_dir.clone(),
+        }
+    }
+
+    /// Every rule of the file; all violations are listed together (exit 2). The
+    /// shared blocks are checked by the scene topics' own rules, the fill stage's
+    /// contact block at its path.
+    pub fn validate(&self) -> Result<()> {
+        let dc = &self.die_compaction;
+        let mut e = Errors(Vec::new());
+        let owned = [
+            ("particles", !self.particles.is_empty()),
+            ("insert", !self.insert.is_empty()),
+            ("deposit", !self.deposit.is_empty()),
+            ("walls", !self.walls.is_empty()),
+            ("periodic", self.periodic.is_some()),
+            ("growth", self.growth.is_some()),
+            (
+                "run",
+                self.run.duration.is_some() || self.run.steps.is_some() || self.run.until.is_some(),
+            ),
+        ];
+        for (field, given) in owned {
+            if given {
+                e.push(
+                    field,
+                    "must be left out of a die_compaction scene: its stages set it",
+                );
+            }
+        }
+        if self.gravity.is_none() {
+            e.push(
+                "gravity",
+                "is required by die_compaction: the die is filled by settling under it",
+            );
+        }
+        if self.time_step.accuracy.is_some() {
+            e.push(
+                "time_step.accuracy",
+                "is not available in a die_compaction scene (its press stage re-estimates the step from the contacts with time_step.alpha); give time_step.alpha",
+            );
+        }
+        let names: HashSet<&str> = self.materials.iter().map(|m| m.name.as_str()).collect();
+        dc.validate(&|name| names.contains(name), &mut e);
+        if let Some(m) = self
+            .materials
+            .iter()
+            .find(|m| m.rigid && m.name == dc.particles.material)
+        {
+            e.push(
+                "die_compaction.particles.material",
+                format!(
+                    "'{}' is rigid: only walls may be made of a rigid material",
+                    m.name
+                ),
+            );
+        }
+        if e.0.is_empty() {
+            // The topics the stages share with an ordinary scene, the particles being
+            // the specimen's and the run's length the stages'.
+            let shared = self.shared_scene();
+            let names = materials::validate(&self.materials, &mut e);
+            let ctx = LawContext {
+                particle_materials: [dc.particles.material.as_str()].into(),
+                rotation: self.rotation.is_some(),
+                materials: &self.materials,
+                names: &names,
+            };
+            contact::validate(&self.contact, "contact", &ctx, &mut e);
+            materials::validate_hardening(&self.materials, &mut e);
+            physics::validate(&shared, &mut e);
+            run::validate_time_step(&self.time_step, &mut e);
+            run::validate_detection_limits_and_output(&shared, &mut e);
+            contact::validate(
+                &dc.fill.contact,
+                "die_compaction.fill.contact",
+                &ctx,
+                &mut e,
+            );
+        }
+        e.finish()
+    }
+}
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct DieCompactionSpec {
+    /// Inner diameter of the cylindrical die, m.
+    pub die_diameter: f64,
+    /// Material of the die wall, its floor and the punch.
+    pub wall_material: String,
+    pub particles: DieParticles,
+    pub fill: FillSpec,
+    pub flatten: FlattenSpec,
+    pub press: PressSpec,
+    /// Diameter of the spherical RVE centred in the specimen, m (Rojek: 54 µm).
+    pub rve_diameter: f64,
+    /// The die's curvature in the contacts of the pressing and its replays: `flat`
+    /// (R* = R) or `mean` (LAMMPS's cylinder wall). Left out of a flat scene's
+    /// serialised form, so the scenes written before it keep their form.
+    #[serde(default, skip_serializing_if = "is_flat")]
+    pub die_curvature: Curvature,
+}
+
+fn is_flat(c: &Curvature) -> bool {
+    *c == Curvature::Flat
+}
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct DieParticles {
+    pub count: usize,
+    pub radius: RadiusSpec,
+    pub material: String,
+}
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct FillSpec {
+    /// Contact law while the die is filled and flattened.
+    pub contact: ContactSpec,
+    /// Factor on the scene's gravity while filling (micrometre particles settle in
+    /// hours of steps under 1 g).
+    pub gravity_scale: f64,
+    /// Solid fraction of the loose random column the particles start in.
+    #[serde(default = "default_loose_fraction")]
+    pub loose_fraction: f64,
+    /// Safety factor α of the fill and flatten stages (default: the scene's); the
+    /// paper's α = 0.1 is stated for pressing.
+    #[serde(default)]
+    pub alpha: Option<f64>,
+    /// Longest settling time, s; settling ends earlier once the bed is at rest.
+    pub max_duration: f64,
+    /// The bed is at rest when its kinetic energy is below this fraction of
+    /// M g' ⟨d⟩ (total mass, scaled gravity, mean diameter).
+    #[serde(default = "default_rest_fraction")]
+    pub rest_fraction: f64,
+    /// How the particles reach the die; absent: `settled_column`.
+    #[serde(default, skip_serializing_if = "FillMethod::is_default")]
+    pub method: FillMethod,
+    /// The funnel of `method: "funnel"` (absent: every dimension at its default).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub funnel: Option<FunnelSpec>,
+}
+
+fn default_loose_fraction() -> f64 {
+    0.25
+}
+
+fn default_rest_fraction() -> f64 {
+    1e-6
+}
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct FlattenSpec {
+    /// How far the punch moves down from first contact, m (Rojek: 3 µm).
+    pub depth: f64,
+    /// Time to move down; the same time to move back up and again to relax, s.
+    pub duration: f64,
+}
+
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct PressSpec {
+    /// Final pressure on the punch, Pa.
+    pub pressure: f64,
+    /// Time over which the pressure rises linearly from zero, s.
+    pub ramp_time: f64,
+    /// Mass of the punch, kg.
+    pub punch_mass: f64,
+    /// Number of records along the ramp (density, height, forces).
+    #[serde(default = "default_records")]
+    pub records: usize,
+    /// Steps between re-estimates of the time step as contacts stiffen (Rojek §3.4).
+    #[serde(default = "default_dt_every")]
+    pub dt_every: u64,
+}
+
+fn default_records() -> usize {
+    100
+}
+
+fn default_dt_every() -> u64 {
+    100
+}
+
+impl DieCompactionSpec {
+    fn validate(&self, material_exists: &dyn Fn(&str) -> bool, e: &mut Errors) {
+        let at = |f: &str| format!("die_compaction.{f}");
+        e.positive(at("die_diameter"), self.die_diameter);
+        for (field, name) in [
+            ("wall_material", &self.wall_material),
+            ("particles.material", &self.particles.material),
+        ] {
+            if !material_exists(name) {
+                e.push(at(field), format!("unknown material '{name}'"));
+            }
+        }
+        if self.particles.count == 0 {
+            e.push(at("particles.count"), "must be >= 1, got 0");
+        }
+        let d = self.particles.radius.distribution();
+        match d.validate() {
+            Err(rule) => e.push(at("particles.radius"), rule),
+            Ok(()) if 2.0 * d.max_radius() >= self.die_diameter || d.max_radius().is_nan() => e
+                .push(
+                    at("particles.radius"),
+                    format!(
+                        "the largest diameter {:e} m must be smaller than the die ({:e} m)",
+                        2.0 * d.max_radius(),
+                        self.die_diameter
+                    ),
+                ),
+            Ok(()) => {}
+        }
+        e.positive(at("fill.gravity_scale"), self.fill.gravity_scale);
+        if !(self.fill.loose_fraction > 0.0 && self.fill.loose_fraction <= 0.3) {
+            e.push(
+                at("fill.loose_fraction"),
+                format!(
+                    "must be in (0, 0.3] (random insertion jams well before 0.38), got {}",
+                    self.fill.loose_fraction
+                ),
+            );
+        }
+        e.positive(at("fill.max_duration"), self.fill.max_duration);
+        if let Some(alpha) = self.fill.alpha
+            && !(alpha > 0.0 && alpha <= 1.0)
+        {
+            e.push(at("fill.alpha"), format!("must be in (0, 1], got {alpha}"));
+        }
+        e.positive(at("fill.rest_fraction"), self.fill.rest_fraction);
+        super::funnel::validate(self, e);
+        e.positive(at("flatten.depth"), self.flatten.depth);
+        e.positive(at("flatten.duration"), self.flatten.duration);
+        e.positive(at("press.pressure"), self.press.pressure);
+        e.positive(at("press.ramp_time"), self.press.ramp_time);
+        e.positive(at("press.punch_mass"), self.press.punch_mass);
+        if self.press.records < 2 {
+            e.push(
+                at("press.records"),
+                format!("must be >= 2, got {}", self.press.records),
+            );
+        }
+        if self.press.dt_every == 0 {
+            e.push(at("press.dt_every"), "must be >= 1, got 0");
+        }
+        if !(self.rve_diameter > 0.0 && self.rve_diameter < self.die_diameter) {
+            e.push(
+                at("rve_diameter"),
+                format!(
+                    "must be > 0 and smaller than the die diameter {:e} m, got {:e}",
+                    self.die_diameter, self.rve_diameter
+                ),
+            );
+        }
+    }
+}
