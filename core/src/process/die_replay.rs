@@ -36,6 +36,7 @@ pub struct Stroke {
     pub interval: f64,
     /// Steps per record interval, and the fixed step interval / steps_per_record.
     pub steps_per_record: u64,
+    /// The fixed time step, `interval / steps_per_record`, s.
     pub dt: f64,
     /// Punch face height at records 1, 2, …, n, m.
     pub heights: Vec<f64>,
@@ -91,8 +92,11 @@ impl Stroke {
 /// flattened specimen, the stroke tamp pressed, and the press stage replaying it
 /// under `solid`'s law (what the peer can express).
 pub struct Pressed {
+    /// The flattened specimen both codes press.
     pub specimen: Specimen,
+    /// The punch stroke of tamp's pressing.
     pub stroke: Stroke,
+    /// The press stage with the punch following the stroke, under the peer's law.
     pub replay: Scene,
 }
 
@@ -125,14 +129,18 @@ pub fn solid_sphere_scene(scene: &Scene) -> Scene {
 /// One record of a replay.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct ReplayRecord {
+    /// Simulated time since the replay began, s.
     pub time: f64,
     /// Punch face height, m.
     pub height: f64,
     /// The particles' force on punch and floor along the pressing direction, over
     /// the die's cross-section, Pa.
     pub punch_pressure: f64,
+    /// The particles' push on the floor over the die's cross-section, Pa.
     pub floor_pressure: f64,
+    /// Solid fraction of the die cylinder up to the punch height H.
     pub density_specimen: f64,
+    /// Solid fraction of the RVE sphere centred on the axis at H/2.
     pub density_rve: f64,
 }
 
