@@ -67,7 +67,7 @@ pub struct Specimen {
     /// The particles as the press stage's explicit particles (position, radius, velocity,
     /// spin, material).
     pub particles: Vec<ParticleSpec>,
-    /// Simulated settling time and whether the bed came to rest within the limit.
+    /// Simulated settling time of the fill, s.
     pub fill_time: f64,
     /// Whether the bed came to rest before `fill.max_duration`.
     pub fill_at_rest: bool,
@@ -84,14 +84,13 @@ pub struct PressRecord {
     pub time: f64,
     /// Pressure applied to the punch, Pa.
     pub pressure: f64,
-    /// What the particles push back on the punch, floor and die wall with, as
-    /// pressures on the die's cross-section (the die's is its axial friction), Pa.
+    /// The particles' push on the punch over the die's cross-section, Pa.
     pub punch_reaction: f64,
     /// The particles' push on the floor over the die's cross-section, Pa.
     pub floor_reaction: f64,
     /// The particles' axial friction on the die wall over the die's cross-section, Pa.
     pub die_friction: f64,
-    /// Punch face height, m, and ΔH/H₀.
+    /// Punch face height H, m.
     pub height: f64,
     /// Height reduction ΔH/H₀ = (H₀ − H)/H₀.
     pub height_reduction: f64,

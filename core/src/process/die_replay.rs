@@ -34,7 +34,7 @@ pub struct Stroke {
     pub h0: f64,
     /// Time between records, s.
     pub interval: f64,
-    /// Steps per record interval, and the fixed step interval / steps_per_record.
+    /// Steps per record interval.
     pub steps_per_record: u64,
     /// The fixed time step, `interval / steps_per_record`, s.
     pub dt: f64,
@@ -133,8 +133,8 @@ pub struct ReplayRecord {
     pub time: f64,
     /// Punch face height, m.
     pub height: f64,
-    /// The particles' force on punch and floor along the pressing direction, over
-    /// the die's cross-section, Pa.
+    /// The particles' force on the punch along the pressing direction, over the die's
+    /// cross-section, Pa.
     pub punch_pressure: f64,
     /// The particles' push on the floor over the die's cross-section, Pa.
     pub floor_pressure: f64,
