@@ -5,6 +5,8 @@
 //! crate against closed forms, papers and peer codes lives in the `tamp` crate, which
 //! depends on this one and never the other way. See docs/architecture.md.
 
+#![warn(missing_docs)]
+
 pub mod accuracy;
 pub mod bins;
 pub mod boundary;

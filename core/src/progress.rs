@@ -12,6 +12,7 @@ use std::time::{Duration, Instant};
 /// threading the flag through every caller of `scene::build` would serve no one.
 static QUIET: AtomicBool = AtomicBool::new(false);
 
+/// `--quiet` for every progress made from now on (false lets them report again).
 pub fn set_quiet(quiet: bool) {
     QUIET.store(quiet, Ordering::Relaxed);
 }
@@ -20,12 +21,15 @@ pub fn set_quiet(quiet: bool) {
 /// running cases side by side), whose bars would overwrite each other.
 static LINES_ONLY: AtomicBool = AtomicBool::new(false);
 
+/// Log lines instead of bars, even on a terminal, for every progress made from now on.
 pub fn set_lines_only(lines_only: bool) {
     LINES_ONLY.store(lines_only, Ordering::Relaxed);
 }
 
 const LOG_EVERY: Duration = Duration::from_secs(60);
 
+/// Progress of one stage (a run's steps, a generator's insertions): a bar on a terminal after
+/// the first second, a line every `LOG_EVERY` when stderr is a log, nothing when quiet.
 pub struct Progress {
     bar: ProgressBar,
     stage: String,
@@ -63,6 +67,7 @@ impl Progress {
         }
     }
 
+    /// Report that `position` of the stage's `len` units are done.
     pub fn set(&mut self, position: u64) {
         if self.show && !self.shown && self.started.elapsed() > Duration::from_secs(1) {
             self.bar.set_draw_target(ProgressDrawTarget::stderr());
@@ -80,6 +85,7 @@ impl Progress {
         }
     }
 
+    /// Remove the bar from the terminal at the end of the stage.
     pub fn finish(self) {
         self.bar.finish_and_clear();
     }

@@ -25,6 +25,7 @@ pub const DAMPED_RESTITUTION_MIN: f64 = 0.1;
 /// the stiffer branch's π√(m*/k₂) (`Impact::time_scale`), so the constants hold across
 /// ratios; the largest calibrated is the largest the model covers.
 pub const WALTON_BRAUN_RATIOS: [f64; 4] = [1.25, 2.0, 4.0, 10.0];
+/// The largest k₂/k₁ calibrated: beyond it an explicit accuracy is refused.
 pub const WALTON_BRAUN_RATIO_MAX: f64 = 10.0;
 
 /// The strongest damping of the damped Hertz calibration: the ξ LIGGGHTS's relation

@@ -40,9 +40,13 @@ const STEPS_PER_UNIT: f64 = 20_000.0;
 /// K δ_s^{3/2}), duration in τ (while x > 0), and rebound speed −x' at separation.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Unit {
+    /// Largest overlap over δ_s.
     pub max_overlap: f64,
+    /// Largest contact force over K δ_s^{3/2}.
     pub max_force: f64,
+    /// Contact duration in units of τ, from touch to separation (x > 0).
     pub duration: f64,
+    /// Rebound speed over approach speed, −x' at separation.
     pub restitution: f64,
 }
 

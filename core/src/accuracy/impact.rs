@@ -55,7 +55,9 @@ pub struct Impact {
     pub time_scale: f64,
     /// From first touch to separation, s.
     pub duration: f64,
+    /// Largest overlap δ_max, m.
     pub max_overlap: f64,
+    /// Largest normal contact force, N.
     pub max_force: f64,
     /// Normal rebound speed over approach speed.
     pub restitution: f64,
@@ -70,6 +72,7 @@ pub const QUANTITIES: [&str; 4] = [
 ];
 
 impl Impact {
+    /// The quantities in the order of [`QUANTITIES`].
     pub fn values(&self) -> [f64; 4] {
         [
             self.max_overlap,

@@ -23,8 +23,12 @@ pub const LARGEST_RATIO: f64 = 0.125;
 /// One law's error for one quantity.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ErrorTerm {
+    /// The impact quantity, one of [`QUANTITIES`](super::impact::QUANTITIES).
     pub quantity: &'static str,
+    /// C: the envelope of error / (Δt/t_c)^p over the calibration's runs.
     pub c: f64,
+    /// p: the order of the error in Δt/t_c (about 2 for a smooth force at first touch,
+    /// about 1 for a jump).
     pub p: f64,
 }
 
@@ -40,6 +44,7 @@ impl ErrorTerm {
 pub struct ErrorModel {
     /// How `tamp study accuracy-calibration` names it.
     pub law: &'static str,
+    /// One term per impact quantity, in the order of [`QUANTITIES`](super::impact::QUANTITIES).
     pub terms: [ErrorTerm; 4],
 }
 

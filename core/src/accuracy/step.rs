@@ -33,17 +33,20 @@ pub const COST_PER_PARTICLE_STEP: f64 = 7.2e-8;
 /// What the accuracy setting chose.
 #[derive(Clone, Copy, Debug)]
 pub struct Choice {
+    /// The time step Δt chosen, s.
     pub dt: f64,
     /// The shortest closed-form contact duration, s.
     pub contact_duration: f64,
     /// The shortest time scale of the error model (`Impact::time_scale`), s.
     pub time_scale: f64,
+    /// The error model of the scene's law.
     pub model: &'static ErrorModel,
     /// True when α = 0.2 times the critical step is smaller than the accuracy's step.
     pub stability_bound: bool,
 }
 
 impl Choice {
+    /// Steps in the shortest closed-form contact, t_c / Δt.
     pub fn steps_per_contact(&self) -> f64 {
         self.contact_duration / self.dt
     }

@@ -39,10 +39,14 @@ const EXACT_PAIRS: usize = 2000;
 /// The implied characteristic velocity and which candidate gave it.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Implied {
+    /// The characteristic velocity, m/s.
     pub speed: f64,
+    /// Which candidate gave it, in words, for messages.
     pub source: String,
 }
 
+/// The characteristic velocity implied by the scene at t = 0: the largest of the
+/// module comment's candidates.
 pub fn implied(sim: &Simulation) -> Implied {
     let p = &sim.particles;
     let mut best = Implied {

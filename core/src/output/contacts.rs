@@ -12,6 +12,9 @@ use vtkio::model::{
     Attribute, Attributes, ByteOrder, DataSet, Piece, PolyDataPiece, Version, VertexNumbers, Vtk,
 };
 
+/// Header of the contacts CSV: step, particle id i, the partner (particle id j or wall
+/// name), the contact point (m), the unit normal from the partner towards i, the normal
+/// force on i (N), the tangential force on i (N) and the overlap δ (m).
 pub const CONTACTS_HEADER: &str = "step,i,j,wall,x,y,z,nx,ny,nz,normal_force,tx,ty,tz,overlap";
 
 /// One row per contact; `i` and `j` are particle ids (as in trajectory.csv), `j`

@@ -13,6 +13,8 @@ use crate::error::{Result, TampError};
 use serde::Serialize;
 use std::path::Path;
 
+/// Write `bytes` to `path` through a temporary file in the same directory and a rename,
+/// so `path` holds either its old content or all of the new.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
     let name = path
         .file_name()
@@ -58,6 +60,7 @@ pub fn claim_dir(out_dir: &Path, input: &Path, outputs: &[&str], keep: &[&str]) 
     Ok(())
 }
 
+/// Create `dir` and its missing parents; an existing directory is kept as it is.
 pub fn create_dir(dir: &Path) -> Result<()> {
     std::fs::create_dir_all(dir)
         .map_err(|e| TampError::io(format!("creating {}", dir.display()), e))
@@ -66,16 +69,26 @@ pub fn create_dir(dir: &Path) -> Result<()> {
 /// Where a result came from: enough to reproduce it.
 #[derive(Clone, Debug, Serialize)]
 pub struct Provenance {
+    /// Version of tamp that made the result (the crate version).
     pub tamp_version: String,
+    /// Commit of the build ([`GIT_COMMIT`](crate::GIT_COMMIT); `-dirty` with uncommitted
+    /// changes).
     pub git_commit: String,
+    /// SHA-256 of the scene file's bytes, in hex.
     pub scene_sha256: String,
+    /// The scene's `seed`, from which the particle generators' random draws follow.
     pub seed: u64,
+    /// Time step Δt used (a die compaction's: the pressing's last), s.
     pub dt: f64,
+    /// α · Δt_cr (Rojek eqs 26–29) when the run could estimate it, s.
     pub dt_estimate: Option<f64>,
+    /// Steps the run lasts (its maximum, with `run.until`; a die compaction's: the
+    /// pressing's).
     pub steps: u64,
 }
 
 impl Provenance {
+    /// Provenance of this build of tamp for a run of the scene hashing to `scene_sha256`.
     pub fn new(
         scene_sha256: String,
         seed: u64,

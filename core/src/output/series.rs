@@ -3,6 +3,8 @@
 use crate::error::{Result, TampError};
 use crate::simulation::Simulation;
 
+/// The rows of series.csv: the chosen columns of a run's quantities, sampled every
+/// `series_every` steps and kept in memory until the run writes them.
 pub struct Series {
     columns: Vec<String>,
     header: Vec<String>,
@@ -76,6 +78,8 @@ impl Series {
         Ok(())
     }
 
+    /// series.csv as bytes: the header, then one row per sample in `{:e}` notation, which
+    /// reads back to the same double.
     pub fn to_csv(&self) -> Result<Vec<u8>> {
         let mut w = csv::Writer::from_writer(Vec::new());
         let err = |e: csv::Error| TampError::Other(format!("writing series.csv: {e}"));

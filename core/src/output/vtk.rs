@@ -53,6 +53,7 @@ pub fn frame(sim: &Simulation, forces: bool) -> Vtk {
     }
 }
 
+/// One particle frame as legacy-VTK ASCII text (see [`frame`]).
 pub fn to_ascii(sim: &Simulation, forces: bool) -> Result<String> {
     let mut s = String::new();
     frame(sim, forces)

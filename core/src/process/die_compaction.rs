@@ -60,11 +60,16 @@ const REST_CHECK_EVERY: u64 = 1000;
 pub struct Specimen {
     /// Height after flattening and unloading (top of the highest particle), m.
     pub h0: f64,
+    /// Solid fraction of the cylinder of the die's radius and height H₀.
     pub density_specimen: f64,
+    /// Solid fraction of the RVE sphere (`rve_diameter`) centred on the axis at H₀/2.
     pub density_rve: f64,
+    /// The particles as the press stage's explicit particles (position, radius, velocity,
+    /// spin, material).
     pub particles: Vec<ParticleSpec>,
-    /// Simulated settling time and whether the bed came to rest within the limit.
+    /// Simulated settling time of the fill, s.
     pub fill_time: f64,
+    /// Whether the bed came to rest before `fill.max_duration`.
     pub fill_at_rest: bool,
     /// The steps each stage took (fill, flatten).
     pub steps: [u64; 2],
@@ -75,32 +80,42 @@ pub struct Specimen {
 /// One record along the pressure ramp.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct PressRecord {
+    /// Simulated time since the pressing began, s.
     pub time: f64,
     /// Pressure applied to the punch, Pa.
     pub pressure: f64,
-    /// What the particles push back on the punch, floor and die wall with, as
-    /// pressures on the die's cross-section (the die's is its axial friction), Pa.
+    /// The particles' push on the punch over the die's cross-section, Pa.
     pub punch_reaction: f64,
+    /// The particles' push on the floor over the die's cross-section, Pa.
     pub floor_reaction: f64,
+    /// The particles' axial friction on the die wall over the die's cross-section, Pa.
     pub die_friction: f64,
-    /// Punch face height, m, and ΔH/H₀.
+    /// Punch face height H, m.
     pub height: f64,
+    /// Height reduction ΔH/H₀ = (H₀ − H)/H₀.
     pub height_reduction: f64,
+    /// Solid fraction of the cylinder of the die's radius and height H.
     pub density_specimen: f64,
+    /// Solid fraction of the RVE sphere centred on the axis at H/2.
     pub density_rve: f64,
     /// Volume of the caps of particles pressed through the floor, punch face and die
     /// wall, m³ (planar caps): what the specimen's exact solid volume leaves out of
     /// the particles' volume.
     pub wall_lens_volume: f64,
+    /// Number of particle–particle and particle–wall contacts.
     pub contact_count: usize,
+    /// Time step in force at the record, s (re-estimated every `press.dt_every` steps).
     pub dt: f64,
+    /// Steps since the pressing began.
     pub step: u64,
 }
 
 /// The press stage of one contact law.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct Pressing {
+    /// The records at equal pressure increments, from p = 0 to the final pressure.
     pub records: Vec<PressRecord>,
+    /// Steps the pressing took.
     pub steps: u64,
     /// Particles whose centre left the die (radially, below the floor or above the
     /// punch face) at some step of the pressing.
@@ -116,7 +131,9 @@ pub struct Pressing {
 /// simulation's state.
 #[derive(Serialize, Deserialize)]
 pub struct PressState {
+    /// The pressing so far.
     pub pressing: Pressing,
+    /// The simulation's state at the checkpoint's step.
     pub sim: SimState,
 }
 

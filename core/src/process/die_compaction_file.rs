@@ -237,6 +237,9 @@ impl DieCompactionFile {
     }
 }
 
+/// The `die_compaction` block: cold uniaxial compaction of a powder in a cylindrical
+/// die (Rojek et al. 2016 §5), from the fill through the flattening of the top to the
+/// pressing, and the RVE in which density is measured.
 #[derive(Clone, Debug, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct DieCompactionSpec {
@@ -244,9 +247,13 @@ pub struct DieCompactionSpec {
     pub die_diameter: f64,
     /// Material of the die wall, its floor and the punch.
     pub wall_material: String,
+    /// The powder poured into the die.
     pub particles: DieParticles,
+    /// How the die is filled and the bed settled.
     pub fill: FillSpec,
+    /// How the punch flattens the top of the settled bed before pressing.
     pub flatten: FlattenSpec,
+    /// How the punch presses the powder.
     pub press: PressSpec,
     /// Diameter of the spherical RVE centred in the specimen, m (Rojek: 54 µm).
     pub rve_diameter: f64,
@@ -261,14 +268,19 @@ fn is_flat(c: &Curvature) -> bool {
     *c == Curvature::Flat
 }
 
+/// The powder of a die compaction: how many particles, of which radii and material.
 #[derive(Clone, Debug, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct DieParticles {
+    /// Number of particles (Rojek: 1751).
     pub count: usize,
+    /// Distribution of the particle radii, m.
     pub radius: RadiusSpec,
+    /// Name of an entry of the scene's `materials`.
     pub material: String,
 }
 
+/// The fill stage: how the particles reach the die and settle under (scaled) gravity.
 #[derive(Clone, Debug, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct FillSpec {
@@ -306,6 +318,8 @@ fn default_rest_fraction() -> f64 {
     1e-6
 }
 
+/// The flatten stage: the punch moves down into the settled bed, back up, and the bed
+/// relaxes, so the pressing starts from a level top.
 #[derive(Clone, Debug, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct FlattenSpec {
@@ -315,6 +329,8 @@ pub struct FlattenSpec {
     pub duration: f64,
 }
 
+/// The pressing stage: a punch of given mass under a pressure ramped linearly to its
+/// final value, with records of the specimen along the ramp.
 #[derive(Clone, Debug, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct PressSpec {

@@ -23,17 +23,29 @@ use crate::output::{self, Provenance};
 use serde::Serialize;
 use std::path::Path;
 
+/// summary.json of a die-compaction run: the flattened specimen and the last record of
+/// the pressing.
 #[derive(Debug, Serialize)]
 pub struct CompactionSummary {
+    /// Where the result came from (Δt and steps are the pressing's).
     pub provenance: Provenance,
+    /// The scene's `name`.
     pub scene_name: String,
+    /// Number of particles in the die.
     pub particles: usize,
+    /// Height H₀ of the flattened specimen (top of the highest particle), m.
     pub h0: f64,
+    /// Solid fraction of the die cylinder of height H₀ before pressing.
     pub initial_density_specimen: f64,
+    /// Solid fraction of the RVE sphere before pressing.
     pub initial_density_rve: f64,
+    /// Simulated settling time of the fill, s.
     pub fill_time: f64,
+    /// Whether the bed came to rest before `fill.max_duration`.
     pub fill_at_rest: bool,
+    /// Steps the pressing took.
     pub press_steps: u64,
+    /// The record at the full pressure.
     pub last: PressRecord,
 }
 

@@ -35,8 +35,9 @@ pub struct Stroke {
     pub h0: f64,
     /// Time between records, s.
     pub interval: f64,
-    /// Steps per record interval, and the fixed step interval / steps_per_record.
+    /// Steps per record interval.
     pub steps_per_record: u64,
+    /// The fixed time step, `interval / steps_per_record`, s.
     pub dt: f64,
     /// Punch face height at records 1, 2, …, n, m.
     pub heights: Vec<f64>,
@@ -92,8 +93,11 @@ impl Stroke {
 /// flattened specimen, the stroke tamp pressed, and the press stage replaying it
 /// under `solid`'s law (what the peer can express).
 pub struct Pressed {
+    /// The flattened specimen both codes press.
     pub specimen: Specimen,
+    /// The punch stroke of tamp's pressing.
     pub stroke: Stroke,
+    /// The press stage with the punch following the stroke, under the peer's law.
     pub replay: Scene,
 }
 
@@ -126,14 +130,18 @@ pub fn solid_sphere_scene(file: &DieCompactionFile) -> DieCompactionFile {
 /// One record of a replay.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct ReplayRecord {
+    /// Simulated time since the replay began, s.
     pub time: f64,
     /// Punch face height, m.
     pub height: f64,
-    /// The particles' force on punch and floor along the pressing direction, over
-    /// the die's cross-section, Pa.
+    /// The particles' force on the punch along the pressing direction, over the die's
+    /// cross-section, Pa.
     pub punch_pressure: f64,
+    /// The particles' push on the floor over the die's cross-section, Pa.
     pub floor_pressure: f64,
+    /// Solid fraction of the die cylinder up to the punch height H.
     pub density_specimen: f64,
+    /// Solid fraction of the RVE sphere centred on the axis at H/2.
     pub density_rve: f64,
 }
 

@@ -26,6 +26,7 @@ use crate::error::Errors;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
+/// How the particles reach the die in the fill stage (`fill.method`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Deserialize, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum FillMethod {
@@ -37,6 +38,7 @@ pub enum FillMethod {
 }
 
 impl FillMethod {
+    /// Whether this is the default method, which a serialised scene leaves out.
     pub fn is_default(&self) -> bool {
         *self == FillMethod::default()
     }
@@ -66,10 +68,15 @@ pub struct FunnelSpec {
 /// The funnel's dimensions with the defaults filled in, m and degrees.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Funnel {
+    /// Inner diameter of the outlet tube, m.
     pub outlet_diameter: f64,
+    /// Length of the outlet tube, m.
     pub outlet_length: f64,
+    /// Diameter of the cone's upper rim, m.
     pub top_diameter: f64,
+    /// Included angle of the cone, degrees.
     pub cone_angle: f64,
+    /// Height of the outlet's lower end above the die floor, m.
     pub outlet_height: f64,
 }
 
@@ -79,6 +86,7 @@ pub struct Funnel {
 const OUTLET_CLEAR_FRACTION: f64 = 0.3;
 
 impl Funnel {
+    /// The funnel of a die compaction, each absent dimension at its default (module comment).
     pub fn of(dc: &DieCompactionSpec) -> Funnel {
         let f = dc.fill.funnel.clone().unwrap_or_default();
         let d = dc.die_diameter;

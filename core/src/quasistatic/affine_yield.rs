@@ -52,12 +52,16 @@ use std::f64::consts::PI;
 /// A symmetric 2D strain or stress (11, 22, 12).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Sym2 {
+    /// Component 11.
     pub xx: f64,
+    /// Component 22.
     pub yy: f64,
+    /// Component 12 (the tensor's, not the engineering shear strain).
     pub xy: f64,
 }
 
 impl Sym2 {
+    /// The tensor with components 11, 22 and 12.
     pub const fn new(xx: f64, yy: f64, xy: f64) -> Self {
         Sym2 { xx, yy, xy }
     }

@@ -8,9 +8,12 @@ use super::network::{AffineDeviation, IncrementReport, Network};
 use crate::error::Result;
 use serde::Serialize;
 
+/// The macroscopic strain path along which a network is compacted (§2.4).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub enum StrainPath {
+    /// Ė₁₁ = Ė₂₂, Ė₁₂ = 0: equal shrinking along both axes.
     Hydrostatic,
+    /// Ė₂₂ < 0, Ė₁₁ = Ė₁₂ = 0: the box closes along x₂ only.
     ClosedDie,
 }
 
@@ -27,16 +30,26 @@ impl StrainPath {
     }
 }
 
+/// The network's state after one compaction increment: a point of the paper's
+/// stress–density and coordination curves (Figs 4–6).
 #[derive(Clone, Copy, Debug, Serialize)]
 pub struct CompactionRecord {
+    /// Relative density D.
     pub density: f64,
     /// Σ/σ_y (eq 13).
     pub stress_xx: f64,
+    /// Σ₂₂/σ_y (eq 13).
     pub stress_yy: f64,
+    /// Σ₁₂/σ_y (eq 13).
     pub stress_xy: f64,
+    /// Coordination number Z: twice the force-carrying contacts over the cylinders.
     pub coordination: f64,
+    /// Fraction of force-carrying contacts that slide.
     pub sliding_fraction: f64,
+    /// FIRE iterations the increment took.
     pub iterations: usize,
+    /// Mean unbalanced force on the free cylinders over the mean contact force at the end
+    /// of the increment.
     pub residual: f64,
     /// False where FIRE ran out of iterations and the increment was carried over
     /// (`NetworkSettings::carry_over`).

@@ -63,6 +63,7 @@ use std::collections::BTreeMap;
 /// The inter-particle friction law (§2.1.2).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub enum Friction {
+    /// μ = 0: contacts carry no shear force.
     Frictionless,
     /// Coulomb coefficient μ, with the shear traction also capped at τ_y.
     Coulomb(f64),
@@ -79,13 +80,18 @@ pub enum Constraint {
     Affine,
 }
 
+/// The parameters of a network solve: the contact laws' constants (σ_y, friction,
+/// unloading and tangential stiffness), which cylinders are prescribed, and the
+/// tolerances of the FIRE corrector and the sparse predictor.
 #[derive(Clone, Copy, Debug, Serialize)]
 pub struct NetworkSettings {
     /// σ_y.
     pub yield_stress: f64,
+    /// The inter-particle friction law (§2.1.2).
     pub friction: Friction,
     /// Whether interior cylinders may rotate (peripheral ones never do).
     pub rotation: bool,
+    /// Which cylinders follow the macroscopic strain (§2.4).
     pub constraint: Constraint,
     /// Unloading/reloading stiffness over loading stiffness (10³ in §3.4).
     pub unloading_factor: f64,
@@ -240,11 +246,13 @@ struct Trial {
 /// Convergence record of one increment.
 #[derive(Clone, Copy, Debug, Serialize)]
 pub struct IncrementReport {
+    /// FIRE iterations the corrector took.
     pub iterations: usize,
     /// Mean unbalanced force on the free nodes over the mean contact force.
     pub residual: f64,
     /// Whether the residual reached the tolerance (see `carry_over`).
     pub converged: bool,
+    /// How far the contacts' relative motion strayed from affine motion (§3.3).
     pub deviation: AffineDeviation,
 }
 
@@ -263,21 +271,32 @@ pub struct IncrementReport {
 /// same ratio of ensemble means is used.
 #[derive(Clone, Copy, Debug, Default, Serialize)]
 pub struct AffineDeviation {
+    /// ⟨|u̇_N − u̇_N^A|⟩ / ⟨|u̇_N^A|⟩: the normal approach's departure from affine motion.
     pub normal: f64,
+    /// ⟨|u̇_T − u̇_T^A|⟩ / ⟨|u̇_N^A|⟩: the slip's departure from affine motion.
     pub tangential: f64,
+    /// ⟨|u̇_T^A|⟩ / ⟨|u̇_N^A|⟩: the slip affine motion alone would give.
     pub affine_tangential: f64,
 }
 
+/// The contact network of Redanz & Fleck (2001) §2.3–2.4: cylinders with two
+/// displacements and a rotation each, their contacts' loading histories, and the box
+/// the macroscopic strain deforms.
 #[derive(Clone)]
 pub struct Network {
+    /// Cylinder radii.
     pub radii: Vec<f64>,
+    /// Cylinder centres in the current box.
     pub centres: Vec<Vec2>,
+    /// Rotation θ of each cylinder since the start, rad.
     pub rotations: Vec<f64>,
     /// Peripheral layer: prescribed in both modes, never rotates.
     pub peripheral: Vec<bool>,
     /// Current box [0, width] × [0, height] (deformed with the macroscopic strain).
     pub width: f64,
+    /// Current box width along x₁.
     pub height: f64,
+    /// Current box height along x₂.
     pub settings: NetworkSettings,
     history: BTreeMap<(usize, usize), ContactHistory>,
     /// Contacts at the last committed state.
@@ -286,6 +305,8 @@ pub struct Network {
 }
 
 impl Network {
+    /// The network of `packing` at rest: no rotations, the peripheral layer marked, and
+    /// the contacts of the pairs already touching, with no loading history.
     pub fn new(packing: &CylinderPacking, settings: NetworkSettings) -> Self {
         let peripheral = peripheral_layer(packing);
         let mut net = Network {
@@ -306,14 +327,17 @@ impl Network {
         net
     }
 
+    /// Number of cylinders.
     pub fn len(&self) -> usize {
         self.radii.len()
     }
 
+    /// Whether the network has no cylinders.
     pub fn is_empty(&self) -> bool {
         self.radii.is_empty()
     }
 
+    /// Current box area, per unit depth.
     pub fn area(&self) -> f64 {
         self.width * self.height
     }

@@ -7,21 +7,29 @@
 
 use serde::{Deserialize, Serialize};
 
+/// A 2D vector in the plane (x₁, x₂).
 pub type Vec2 = nalgebra::Vector2<f64>;
 
+/// Cylinders of unit depth in the box [0, width] × [0, height], as deposited.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct CylinderPacking {
+    /// Box width along x₁.
     pub width: f64,
+    /// Box height along x₂ (the deposition direction).
     pub height: f64,
+    /// Cylinder centres.
     pub centres: Vec<Vec2>,
+    /// Cylinder radii.
     pub radii: Vec<f64>,
 }
 
 impl CylinderPacking {
+    /// Number of cylinders.
     pub fn len(&self) -> usize {
         self.radii.len()
     }
 
+    /// Whether the packing has no cylinders.
     pub fn is_empty(&self) -> bool {
         self.radii.is_empty()
     }
@@ -34,6 +42,7 @@ impl CylinderPacking {
             .sum()
     }
 
+    /// Relative density D: cylinder area over box area (§2.2).
     pub fn density(&self) -> f64 {
         self.solid_area() / (self.width * self.height)
     }

@@ -40,6 +40,8 @@ use super::affine_yield::Sym2;
 use super::network::Network;
 use crate::error::{Result, TampError};
 
+/// How a yield point is probed: the offset strain, the reloading increment, how far to
+/// unload first, and when to give up.
 #[derive(Clone, Copy, Debug)]
 pub struct ProbeSettings {
     /// ε_offset.

@@ -137,6 +137,8 @@ pub fn is_stdin(path: &std::path::Path) -> bool {
     path == std::path::Path::new("-") || path == std::path::Path::new("/dev/stdin")
 }
 
+/// SHA-256 of `bytes` in lowercase hex: the scene's fingerprint in the provenance and in
+/// checkpoints, which a resumed run must match.
 pub fn sha256_hex(bytes: &[u8]) -> String {
     Sha256::digest(bytes)
         .iter()

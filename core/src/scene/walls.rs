@@ -21,33 +21,50 @@ use serde::{Deserialize, Serialize};
 use std::collections::HashSet;
 use std::path::Path;
 
+/// One entry of the scene's `walls`: a rigid boundary that particles touch through a
+/// contact law, made of a shape, the material its contacts use, and a prescribed motion.
 #[derive(Clone, Debug, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct WallSpec {
     /// Used in series columns, the summary and messages; `wall<k>` by default.
     #[serde(default)]
     pub name: Option<String>,
+    /// Name of an entry of the scene's `materials`: the wall's side of every particle-wall
+    /// contact (its E, ν and friction enter E* and the law's coefficients).
     pub material: String,
+    /// The surface, in the wall's rest position.
     pub shape: ShapeSpec,
+    /// How the surface moves during the run; `fixed` when absent.
     #[serde(default)]
     pub motion: MotionSpec,
 }
 
 impl WallSpec {
+    /// The wall's name: the given one, or `wall<k>` for the k-th wall of the scene.
     pub fn name(&self, k: usize) -> String {
         self.name.clone().unwrap_or_else(|| format!("wall{k}"))
     }
 }
 
+/// The surface of a wall as written in the scene file (`kind` selects the variant);
+/// coordinates and lengths in m. [`build`] turns it into a [`Shape`].
 #[derive(Clone, Debug, Deserialize, Serialize)]
 #[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
 pub enum ShapeSpec {
     /// Infinite one-sided plane; `normal` points to the particles.
-    Plane { point: [f64; 3], normal: [f64; 3] },
+    Plane {
+        /// A point of the plane, m.
+        point: [f64; 3],
+        /// Direction towards the particles' side (normalised when built).
+        normal: [f64; 3],
+    },
     /// The inside of an axis-aligned box; `open` lists missing faces ("+z" for no lid).
     Box {
+        /// Corner with the smallest coordinates, m.
         lower: [f64; 3],
+        /// Corner with the largest coordinates, m; larger than `lower` on every axis.
         upper: [f64; 3],
+        /// Faces left out, among "-x", "+x", "-y", "+y", "-z", "+z".
         #[serde(default)]
         open: Vec<String>,
     },
@@ -55,39 +72,61 @@ pub enum ShapeSpec {
     /// measured from `origin`. `curvature`: how the wall's curvature enters the
     /// contact's effective radius, `flat` (the default) or `mean` (`Curvature`).
     Cylinder {
+        /// A point on the axis, m; heights are measured along `axis` from it.
         origin: [f64; 3],
+        /// Direction of the axis (any non-zero length; normalised when built).
         axis: [f64; 3],
+        /// Radius of the cylinder, m.
         radius: f64,
+        /// Height of the lower rim along the axis, m.
         bottom: f64,
+        /// Height of the upper rim along the axis, m; above `bottom`.
         top: f64,
+        /// Flat (the default) or mean-curvature effective radius for its contacts.
         #[serde(default)]
         curvature: Curvature,
     },
     /// Lateral surface of a cone frustum.
     Cone {
+        /// A point on the axis, m; heights are measured along `axis` from it.
         origin: [f64; 3],
+        /// Direction of the axis (any non-zero length; normalised when built).
         axis: [f64; 3],
+        /// Height of the lower rim along the axis, m.
         bottom: f64,
+        /// Radius at `bottom`, m; zero puts the apex there.
         bottom_radius: f64,
+        /// Height of the upper rim along the axis, m; above `bottom`.
         top: f64,
+        /// Radius at `top`, m; zero puts the apex there.
         top_radius: f64,
     },
     /// An outlet tube (from `outlet_bottom` to `outlet_top`) continued by a cone that
     /// widens to `top_radius` at height `top`.
     Funnel {
+        /// A point on the axis, m; heights are measured along `axis` from it.
         origin: [f64; 3],
+        /// Direction of the axis (any non-zero length; normalised when built).
         axis: [f64; 3],
+        /// Radius of the outlet tube, m.
         outlet_radius: f64,
+        /// Height of the outlet's lower end along the axis, m.
         outlet_bottom: f64,
+        /// Height where the tube meets the cone, m.
         outlet_top: f64,
+        /// Radius of the cone at `top`, m; larger than `outlet_radius`.
         top_radius: f64,
+        /// Height of the cone's upper rim along the axis, m; above `outlet_top`.
         top: f64,
     },
     /// z = f(x, y) over a rectangle, as an `expression` of x and y sampled on `cells`,
     /// or as a `grid` of heights. Give exactly one of the two.
     HeightField {
+        /// Extent [low, high] of the surface along x, m.
         x_range: [f64; 2],
+        /// Extent [low, high] of the surface along y, m.
         y_range: [f64; 2],
+        /// Height z (m) as an expression of x and y (m); needs `cells`.
         #[serde(default)]
         expression: Option<String>,
         /// Cells along x and y used to sample the expression.
@@ -99,8 +138,10 @@ pub enum ShapeSpec {
     },
     /// Triangles from an STL file (path relative to the scene file) or convex polygons.
     Mesh {
+        /// Path of an STL file, relative to the scene file's directory.
         #[serde(default)]
         stl: Option<String>,
+        /// Convex polygons, each a list of at least three vertices (m).
         #[serde(default)]
         polygons: Option<Vec<Vec<[f64; 3]>>>,
     },
@@ -119,35 +160,58 @@ pub enum Curvature {
     Mean,
 }
 
+/// How a wall moves, as written in the scene file (`kind` selects the variant).
 #[derive(Clone, Debug, Default, Deserialize, Serialize)]
 #[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
 pub enum MotionSpec {
+    /// The wall stays at its rest position.
     #[default]
     Fixed,
     /// Constant velocity, m/s.
-    Velocity { velocity: [f64; 3] },
+    Velocity {
+        /// Velocity of the wall, m/s.
+        velocity: [f64; 3],
+    },
     /// Displacement from the rest position, per axis, as expressions of t (s → m).
-    Displacement { x: String, y: String, z: String },
+    Displacement {
+        /// Displacement along x (m) as an expression of t (s).
+        x: String,
+        /// Displacement along y (m) as an expression of t (s).
+        y: String,
+        /// Displacement along z (m) as an expression of t (s).
+        z: String,
+    },
     /// Hold `force` (N), or `pressure` (Pa) × `area` (m²), along `direction`.
     Servo {
+        /// Direction in which the wall presses on the particles (normalised when built).
         direction: [f64; 3],
+        /// Target reaction of the particles on the wall, N; instead of `pressure` and `area`.
         #[serde(default)]
         force: Option<f64>,
+        /// Target pressure, Pa; the target force is `pressure` × `area`.
         #[serde(default)]
         pressure: Option<f64>,
+        /// Area the target pressure acts on, m².
         #[serde(default)]
         area: Option<f64>,
+        /// Speed per newton of force error, m/(s·N).
         gain: f64,
+        /// Largest speed the servo commands, m/s.
         max_speed: f64,
     },
     /// A punch of `mass` (kg) pushed along `direction` by a pressure on `area` (m²)
     /// rising linearly from 0 to `pressure` (Pa) over `ramp_time` (s), then held; it
     /// moves by Newton's law under the load and the particles' reaction.
     Pressure {
+        /// Direction in which the punch presses on the particles (normalised when built).
         direction: [f64; 3],
+        /// Final pressure, Pa.
         pressure: f64,
+        /// Loaded area, m².
         area: f64,
+        /// Time over which the pressure rises linearly from zero, s (0: applied at once).
         ramp_time: f64,
+        /// Mass of the punch, kg.
         mass: f64,
     },
 }
