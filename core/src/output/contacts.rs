@@ -17,8 +17,9 @@ use vtkio::model::{
 /// force on i (N), the tangential force on i (N) and the overlap δ (m).
 pub const CONTACTS_HEADER: &str = "step,i,j,wall,x,y,z,nx,ny,nz,normal_force,tx,ty,tz,overlap";
 
-/// One row per contact; `i` and `j` are particle ids (as in trajectory.csv), `j`
-/// is empty for a wall contact and `wall` (the wall's name) for a pair.
+/// One row per contact; `i` and `j` are particle ids (as in trajectory.csv). A pair
+/// has both and an empty `wall`; a wall contact has an empty `j` and the wall's name
+/// in `wall`.
 pub fn to_csv(sim: &Simulation, records: &[ContactRecord]) -> String {
     let mut out = String::from(CONTACTS_HEADER);
     out.push('\n');

@@ -41,9 +41,8 @@
 //! every contact that opens, forms or starts to slide, and Newton iteration on K
 //! alone cannot cross the rearrangement of a loose deposit (K is singular there: a
 //! frictionless deposit with Z ≈ 3.9 < 4 is a mechanism; Levenberg–Marquardt found no
-//! equilibrium at the first increment of a W = 20R deposit in 3000 iterations). FIRE
-//! alone converges but takes 3.5× longer than with the predictor (W = 20R,
-//! docs/verification-notes.md). Equilibrium is declared when the mean unbalanced
+//! equilibrium at the first increment). FIRE alone converges but several times more
+//! slowly than with the predictor (docs/verification-notes.md has both measurements). Equilibrium is declared when the mean unbalanced
 //! force on the free cylinders is below `tolerance` × the mean contact force
 //! (Yade's `unbalancedForce`); docs/verification-notes.md gives what the tolerance
 //! costs and changes.
@@ -104,12 +103,11 @@ pub struct NetworkSettings {
     /// mean contact force (Yade's `unbalancedForce`) is at most this.
     pub tolerance: f64,
     /// The mean contact force used in `tolerance` is at least this, so a network that
-    /// has unloaded completely (all forces → 0 while it rearranges) still converges.
-    /// 10⁻² σ_y R is ~4 % of the mean contact force at D = 0.85; below it the
-    /// tolerance is an absolute 10⁻⁴ σ_y R. A floor of 10⁻³ σ_y R made the first
-    /// increments of the W = 80R frictionless deposit, which carries ~10⁻³ σ_y, take
-    /// 585 000 FIRE iterations and then fail at 10⁶ (10⁻²: 60 000–200 000); the
-    /// W = 20R cases give the same values to every digit with either.
+    /// has unloaded completely (all forces → 0 while it rearranges) still converges;
+    /// below it the tolerance is absolute. The floor sits a few per cent below the mean
+    /// contact force at D = 0.85, high enough that the nearly unloaded first increments
+    /// of a tall frictionless deposit converge (docs/verification-notes.md gives the
+    /// iteration counts that chose it).
     pub force_floor: f64,
     /// FIRE iterations allowed in one increment.
     pub max_iterations: usize,
@@ -163,7 +161,7 @@ impl NetworkSettings {
     /// centre, at most about tolerance × (free cylinders / contacts) × (height / R):
     /// 0.05 at 20R, and 0.34 at 80R with the same tolerance. The unbalanced forces
     /// share a sign (FIRE stops while the interior still lags the boundary), so the
-    /// gap approaches the bound (0.141 of 0.34 measured); the tolerance shrinks as
+    /// gap approaches the bound (docs/verification-notes.md); the tolerance shrinks as
     /// R / height to cancel the height factor (0.085 at 80R, where more cylinders
     /// are free). Iterations: FIRE's slowest modes span the box, and their period in
     /// iterations grows with its height (docs/verification-notes.md).

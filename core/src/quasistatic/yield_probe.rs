@@ -211,8 +211,8 @@ pub fn probe(
 /// fraction along it where s falls below the elastic line shifted by `offset`, and
 /// that line's slope k₀. The elastic line runs through the start of the steepest
 /// increment so far with its slope, as the offset method compensates a soft start
-/// (a "toe"): a compacted network's first reloading increment can be ten times softer
-/// than the next ones, and a line with its slope would put yield far up the
+/// (a "toe"): a compacted network's first reloading increment can be much softer
+/// than the next ones (docs/verification-notes.md), and a line with its slope would put yield far up the
 /// hardening branch, or beyond `max_strain`.
 fn yield_in_last_increment(curve: &[(f64, f64)], offset: f64) -> Option<(f64, f64)> {
     let n = curve.len();

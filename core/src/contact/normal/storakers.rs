@@ -20,8 +20,9 @@
 //! branch lies above the Hertz curve (pure Storåkers at tiny overlaps) δ_res < 0 and
 //! the contact opens with a residual force, which is then lost: a property of the
 //! law as published, which `min_with_hertz` avoids.
-//! History: δ_max (m). Stiffness for the time step (Rojek §3.4): k_p while loading,
-//! k_unl otherwise. Recoverable (stored) energy: 2/5 K [(δ − δ_res)^{5/2} − (−δ_res)₊^{5/2}].
+//! History: δ_max (m). Stiffness for the time step (Rojek §3.4): the larger of the
+//! current tangent (k_p while loading) and the elastic unloading tangent at
+//! max(δ, δ_max), which a loading contact turns onto the step its overlap stops growing. Recoverable (stored) energy: 2/5 K [(δ − δ_res)^{5/2} − (−δ_res)₊^{5/2}].
 
 use super::NormalLaw;
 use super::hertz::{Hertz, hertz_force, hertz_stiffness};

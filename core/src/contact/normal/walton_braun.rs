@@ -9,7 +9,8 @@
 //! unloading climbs the k₂ line until it meets the k₁ line at δ_max, so the law is
 //! path-independent between turning points and never creates energy. A head-on
 //! collision has e = √(k₁/k₂) exactly, whatever the speed. Requires k₂ ≥ k₁.
-//! History: δ_max (m). Stiffness for the time step: k₁ loading, k₂ otherwise.
+//! History: δ_max (m). Stiffness for the time step: k₂ on every contact, since a
+//! loading contact turns onto the k₂ branch the step its overlap stops growing.
 //! Recoverable (stored) energy: ½ k₂ (δ − δ₀)² while δ > δ₀.
 
 use super::NormalLaw;

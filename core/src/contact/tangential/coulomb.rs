@@ -1,6 +1,9 @@
 //! Coulomb sliding friction (Zhong 2009 model VII, eq 22).
 //!
-//!   F_t = −μ F_n v_t/|v_t|,  and 0 when v_t = 0
+//!   F_t = −μ max(F_n, 0) v_t/|v_t|,  and 0 when v_t = 0
+//!
+//! (the cap takes only a compressive normal force: a contact pulled by cohesion has no
+//! friction).
 //!
 //! Pure kinetic friction, no spring: the force always opposes the slip velocity,
 //! so it dissipates at every instant and cannot hold a contact at rest against a

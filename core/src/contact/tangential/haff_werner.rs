@@ -1,12 +1,13 @@
 //! Haff–Werner viscous friction capped by Coulomb (Zhong 2009 model VIII, eq 23;
 //! Haff & Werner 1986, Powder Technol. 48, 239).
 //!
-//!   F_t = −min(γ_s |v_t|, μ F_n) v_t/|v_t|
+//!   F_t = −min(γ_s |v_t|, μ max(F_n, 0)) v_t/|v_t|
 //!
 //! γ_s (N·s/m) is the tangential damping coefficient. Viscous below the Coulomb
 //! limit, so slow slip is resisted in proportion to its speed and a contact cannot
-//! stick. No history. Explicit stability of the viscous part needs
-//! Δt < 2 m/γ_s (per particle, with the rotational lever when spin is on).
+//! stick. No history. Explicit stability of the viscous part needs Δt < 2 m/(n_c γ_s L)
+//! per particle: its n_c contacts' dashpots act on it together, and L is the
+//! rotational lever factor when spin is on (simulation/critical_step.rs).
 
 use super::{TangentialInput, TangentialLaw, TangentialModel};
 use crate::contact::model::Roles;

@@ -1,7 +1,7 @@
 //! The incremental tangential force shared by the stiffness-based laws of Rojek 2016
 //! (eq 11) — Mindlin no-slip and Storåkers' proportional stiffness:
 //!
-//!   F_t ← R(F_t) − k_t v_t Δt,  then |F_t| ≤ μ F_n   (eqs 11, 14)
+//!   F_t ← R(F_t) − k_t v_t Δt,  then |F_t| ≤ μ max(F_n, 0)   (eqs 11, 14)
 //!
 //! R rotates the stored force into the current contact plane with its magnitude
 //! kept (as for the Cundall–Strack spring). The force itself is the history, so a
