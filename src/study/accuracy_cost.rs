@@ -115,7 +115,7 @@ pub fn run(opts: &Options) -> Result<u8> {
 
 fn sweep_case(spec: &CaseSpec, dir: &Path, scratch: &Path, opts: &Options) -> Result<Vec<Row>> {
     let scene_file = dir.join(spec.scene.as_deref().unwrap_or_default());
-    let base = scene::load(&scene_file)?.0;
+    let base = super::case_scene(&scene_file)?;
     let particles = scene::build(&base)
         .map(|b| b.sim.particles.len() + b.sim.sources.iter().map(|s| s.remaining).sum::<usize>())
         .unwrap_or(0);

@@ -16,6 +16,15 @@ pub mod stable_alpha;
 use crate::error::{Result, TampError};
 use std::path::Path;
 
+/// The scene a case file names, as the step sweeps read it: a plain scene as it stands,
+/// a die-compaction file as the scene its stages share (its time step and detector).
+fn case_scene(path: &Path) -> Result<crate::scene::Scene> {
+    Ok(match crate::document::load(path)?.0 {
+        crate::document::Document::Scene(scene) => *scene,
+        crate::document::Document::DieCompaction(file) => file.shared_scene(),
+    })
+}
+
 /// Rows as CSV with a header, written atomically (studies are rerun case by case, so a
 /// file is either the old one or the whole new one).
 fn write_csv<T: serde::Serialize>(path: &Path, rows: &[T]) -> Result<()> {

@@ -333,7 +333,7 @@ fn case_scenes() -> Vec<(String, crate::scene::schema::Scene)> {
     specs
         .into_iter()
         .filter_map(|s| {
-            let scene = crate::scene::load(&dir.join(s.scene.as_deref()?)).ok()?.0;
+            let scene = super::case_scene(&dir.join(s.scene.as_deref()?)).ok()?;
             Some((s.name, scene))
         })
         .collect()
