@@ -92,8 +92,10 @@ pub struct Segregation {
     pub fraction_a: f64,
     /// S = σ/σ₀: 0 evenly mixed, 1 fully segregated.
     pub index: f64,
-    /// Lacey's M: 0 fully segregated, ≈ 1 randomly mixed.
-    pub lacey: f64,
+    /// Lacey's M: 0 fully segregated, ≈ 1 randomly mixed. `None` when the occupied
+    /// layers hold one particle each on average or fewer (n̄ ≤ 1): a random mixture of
+    /// one-particle samples is then as uneven as a sorted bed (σ_R² = σ₀²), and M is 0/0.
+    pub lacey: Option<f64>,
     /// Layers from bottom to top.
     pub layers: Vec<LayerComposition>,
     /// (bottom, top) used.
@@ -191,7 +193,7 @@ pub fn segregation(
     Ok(Segregation {
         fraction_a: p,
         index: (sigma_sq / sigma0_sq).sqrt(),
-        lacey: (sigma0_sq - sigma_sq) / (sigma0_sq - sigma_r_sq),
+        lacey: (mean_particles > 1.0).then(|| (sigma0_sq - sigma_sq) / (sigma0_sq - sigma_r_sq)),
         layers: acc.iter().map(Acc::composition).collect(),
         extent: (bottom, top),
     })
@@ -316,7 +318,7 @@ mod tests {
             let s = segregation(&x, &r, &a, &spec(layers, Basis::Number)).unwrap();
             assert!((s.fraction_a - 0.75).abs() < 1e-15);
             assert!((s.index - 1.0).abs() < 1e-15, "{layers}: {}", s.index);
-            assert!(s.lacey.abs() < 1e-15);
+            assert!(s.lacey.unwrap().abs() < 1e-15);
         }
         // Three layers straddle the interface: less than full segregation is seen.
         let coarse = segregation(&x, &r, &a, &spec(3, Basis::Number)).unwrap();
@@ -328,13 +330,27 @@ mod tests {
         assert_eq!(surface.top.particles, 100);
     }
 
+    /// One particle per layer: S is defined (every layer is pure, S = 1), Lacey's M is
+    /// not (σ_R² = σ₀²), and it is reported as absent rather than as 0/0.
+    #[test]
+    fn one_particle_per_layer_has_no_lacey_index() {
+        let x: Vec<Vec3> = (0..4)
+            .map(|k| Vec3::new(0.0, 0.0, k as f64 + 0.5))
+            .collect();
+        let r = vec![0.5; 4];
+        let a = vec![true, false, true, false];
+        let s = segregation(&x, &r, &a, &spec(4, Basis::Number)).unwrap();
+        assert!((s.index - 1.0).abs() < 1e-15, "{}", s.index);
+        assert_eq!(s.lacey, None);
+    }
+
     #[test]
     fn evenly_mixed_bed_scores_zero() {
         let (x, r, a) = stack(|i, j, _| (i + j) % 2 == 0);
         let s = segregation(&x, &r, &a, &spec(8, Basis::Number)).unwrap();
         assert_eq!(s.index, 0.0);
         // More even than a random mixture.
-        assert!(s.lacey > 1.0);
+        assert!(s.lacey.unwrap() > 1.0);
         let surface =
             surface_layers(&x, &r, &a, 2, 1.0, BedExtent::default(), Basis::Number).unwrap();
         assert_eq!(surface.top.fraction_a, Some(0.5));
@@ -353,7 +369,8 @@ mod tests {
         let r = vec![1e-3; n];
         let s = segregation(&x, &r, &a, &spec(8, Basis::Number)).unwrap();
         assert!(s.index < 3.0 / 2500f64.sqrt(), "{}", s.index);
-        assert!((s.lacey - 1.0).abs() < 0.01, "{}", s.lacey);
+        let lacey = s.lacey.unwrap();
+        assert!((lacey - 1.0).abs() < 0.01, "{lacey}");
     }
 
     /// By volume: big A particles on top of many small B particles. By number the

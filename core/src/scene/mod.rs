@@ -34,7 +34,8 @@ pub fn parse(text: &str) -> Result<Scene> {
 
 /// Whether a file's JSON object has a `die_compaction` block, which makes it a process
 /// document rather than a scene. Every other value is skipped unchecked, so this pass
-/// fails only on malformed JSON, and then with the error the typed parse would give.
+/// fails only on malformed JSON (named as `parse_json` names it, with its line and
+/// column).
 pub fn is_process(text: &str) -> Result<bool> {
     #[derive(serde::Deserialize)]
     struct Kind {
