@@ -57,7 +57,11 @@ pub fn walton_braun_tangential_force(
         };
     }
     let f_star = history.turning_force;
-    let ratio = if increasing {
+    // At the turning point itself the ratio is 1 whatever F* (a reversal starts at k₀);
+    // taken as such, F = F* = ±μN, where both sides of the quotient vanish, is not 0/0.
+    let ratio = if f == f_star {
+        1.0
+    } else if increasing {
         (mu_n - f) / (mu_n - f_star)
     } else {
         (mu_n + f) / (mu_n + f_star)
@@ -137,5 +141,22 @@ mod tests {
         }
         let closed = mu * n * (1.0 - (1.0 - 2.0 * k0 * s_total / (3.0 * mu * n)).powf(1.5));
         assert_relative_eq!(f.x, closed, max_relative = 1e-3);
+    }
+
+    /// Reloading from a turning point on the Coulomb cone (F = F* = μN): eq 27a's
+    /// quotient is 0/0 there. The force stays on the cone instead of turning NaN.
+    #[test]
+    fn reloading_at_the_cone_from_a_turning_point_on_it_stays_finite() {
+        let (k0, mu, n) = (1e6, 0.5, 4.0);
+        let mut h = ScalarAxisState {
+            tangential: Vec3::new(mu * n, 0.0, 0.0),
+            turning_force: mu * n,
+            branch: TangentialBranch::Reloading,
+            axis: Vec3::x(),
+            ..ScalarAxisState::default()
+        };
+        let v = Vec3::new(-1e-9, 0.0, 0.0);
+        let f = walton_braun_tangential_force(&mut h, &Vec3::z(), &v, 1.0, k0, mu, n);
+        assert_eq!(f, Vec3::new(mu * n, 0.0, 0.0));
     }
 }
