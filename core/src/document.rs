@@ -21,11 +21,10 @@ pub enum Document {
 /// Parse and validate a file's JSON text as the kind it is.
 pub fn parse(text: &str) -> Result<Document> {
     if scene::is_process(text)? {
-        Ok(Document::DieCompaction(Box::new(DieCompactionFile::parse(
-            text,
-        )?)))
+        let file = DieCompactionFile::parse_known(text)?;
+        Ok(Document::DieCompaction(Box::new(file)))
     } else {
-        Ok(Document::Scene(Box::new(scene::parse(text)?)))
+        Ok(Document::Scene(Box::new(scene::parse_known_scene(text)?)))
     }
 }
 

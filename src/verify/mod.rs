@@ -214,13 +214,18 @@ impl CaseContext<'_> {
         Ok(rows)
     }
 
-    /// The case's scene, parsed and validated like any user scene.
-    pub fn scene(&self) -> Result<Scene> {
+    /// The path of the scene or die-compaction file the case names.
+    fn scene_path(&self) -> Result<PathBuf> {
         let file =
             self.spec.scene.as_ref().ok_or_else(|| {
                 TampError::Other(format!("case {} names no scene", self.spec.name))
             })?;
-        let mut scene = scene::load(&self.dir.join(file))?.0;
+        Ok(self.dir.join(file))
+    }
+
+    /// The case's scene, parsed and validated like any user scene.
+    pub fn scene(&self) -> Result<Scene> {
+        let mut scene = scene::load(&self.scene_path()?)?.0;
         self.variant.apply(&mut scene);
         Ok(scene)
     }
@@ -228,11 +233,7 @@ impl CaseContext<'_> {
     /// The case's die-compaction file, with the variant's step and detector applied to
     /// the scenes its stages share.
     pub fn die_compaction(&self) -> Result<DieCompactionFile> {
-        let file =
-            self.spec.scene.as_ref().ok_or_else(|| {
-                TampError::Other(format!("case {} names no scene", self.spec.name))
-            })?;
-        let mut process = DieCompactionFile::load(&self.dir.join(file))?.0;
+        let mut process = DieCompactionFile::load(&self.scene_path()?)?.0;
         let mut shared = process.shared_scene();
         self.variant.apply(&mut shared);
         process.time_step = shared.time_step;

@@ -118,6 +118,12 @@ impl DieCompactionFile {
                 "is required: this file is a scene, not a die-compaction process",
             ));
         }
+        Self::parse_known(text)
+    }
+
+    /// `parse` of a text already known to be a die-compaction file (`document::parse`
+    /// has looked).
+    pub(crate) fn parse_known(text: &str) -> Result<Self> {
         let file: DieCompactionFile = crate::scene::parse_json(text)?;
         file.validate()?;
         Ok(file)

@@ -27,6 +27,11 @@ pub fn parse(text: &str) -> Result<Scene> {
             "makes this file a die-compaction process, not a scene: `tamp run` runs it, and `process::die_compaction_file::DieCompactionFile` reads it",
         ));
     }
+    parse_known_scene(text)
+}
+
+/// `parse` of a text already known to be a scene (`document::parse` has looked).
+pub(crate) fn parse_known_scene(text: &str) -> Result<Scene> {
     let scene: Scene = parse_json(text)?;
     validate::validate(&scene)?;
     Ok(scene)
