@@ -25,6 +25,7 @@ use tamp::contact::model::{
     CohesionModel, Composed, DampingModel, LawVisitor, NormalModel, StateOf, TangentialModel,
 };
 use tamp::contact::normal::Hertz;
+use tamp::contact::normal::storakers::storakers_pair_constant;
 use tamp::contact::registry;
 use tamp::contact::van_der_waals::{Cohesion, VanDerWaals};
 use tamp::contact::{
@@ -50,13 +51,15 @@ fn contact_geometry() -> ContactGeometry {
 }
 
 fn pair_properties() -> PairProperties {
+    let hollomon = Hollomon {
+        strength: 1e9,
+        exponent: 0.1,
+    };
     PairProperties {
         effective_modulus: Some(1e9),
         effective_shear_modulus: Some(4e8),
-        hollomon: Some(Hollomon {
-            strength: 1e9,
-            exponent: 0.1,
-        }),
+        hollomon: Some(hollomon),
+        storakers_constant: Some(storakers_pair_constant(hollomon)),
         friction: 0.5,
     }
 }

@@ -97,6 +97,10 @@ pub struct PairProperties {
     pub effective_shear_modulus: Option<f64>,
     /// σ0* and m (Rojek eq 18); `None` unless a material of the pair has Hollomon constants.
     pub hollomon: Option<Hollomon>,
+    /// The factor of Storåkers' plastic constant that `hollomon` alone sets
+    /// (`contact::normal::storakers::storakers_pair_constant`), computed once per pair
+    /// by the scene's build; `None` before, or without `hollomon`.
+    pub storakers_constant: Option<f64>,
     /// Coulomb friction coefficient μ of this pair.
     pub friction: f64,
 }
@@ -156,15 +160,22 @@ impl PairTable {
         let mut entries = Vec::with_capacity(n * n);
         for a in 0..n {
             for b in 0..n {
+                let hollomon = effective_hollomon(materials[a].hollomon, materials[b].hollomon);
                 entries.push(PairProperties {
                     effective_modulus: effective_modulus(&materials[a], &materials[b]),
                     effective_shear_modulus: effective_shear_modulus(&materials[a], &materials[b]),
-                    hollomon: effective_hollomon(materials[a].hollomon, materials[b].hollomon),
+                    hollomon,
+                    storakers_constant: None,
                     friction: friction(a, b),
                 });
             }
         }
         PairTable { n, entries }
+    }
+
+    /// Every pair's properties, to be completed by what a law derives from them.
+    pub fn pairs_mut(&mut self) -> impl Iterator<Item = &mut PairProperties> {
+        self.entries.iter_mut()
     }
 
     /// Properties of the pair of materials with indices `a` and `b`.

@@ -271,6 +271,7 @@ mod tests {
             effective_modulus: Some(1e9),
             effective_shear_modulus: Some(4e8),
             hollomon: None,
+            storakers_constant: None,
             friction: 0.5,
         }
     }

@@ -17,6 +17,7 @@ use crate::contact::damping::Damping;
 use crate::contact::lever_arm::LeverArm;
 use crate::contact::model::{Needs, Roles};
 use crate::contact::normal::NormalLaw;
+use crate::contact::normal::storakers::storakers_pair_constant;
 use crate::contact::tangential::TangentialLaw;
 use crate::contact::van_der_waals::Cohesion;
 use crate::error::Errors;
@@ -258,10 +259,14 @@ pub fn pair_table(
         ),
         None => (0.0, Vec::new()),
     };
-    PairTable::new(materials, |a, b| {
+    let mut table = PairTable::new(materials, |a, b| {
         overrides
             .iter()
             .find(|&&(x, y, _)| (x, y) == (a, b) || (y, x) == (a, b))
             .map_or(default_friction, |o| o.2)
-    })
+    });
+    for pair in table.pairs_mut() {
+        pair.storakers_constant = pair.hollomon.map(storakers_pair_constant);
+    }
+    table
 }

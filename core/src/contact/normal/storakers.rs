@@ -36,21 +36,35 @@ pub fn storakers_c_power(exponent: f64) -> f64 {
     1.43 * (-0.97 * exponent).exp()
 }
 
-/// The constant C of F_p = C δ^{1+m/2} (eq 16).
-pub fn storakers_prefactor(effective_radius: f64, hollomon: Hollomon) -> f64 {
+/// The factor of eq 16's C that the pair's Hollomon constants alone set,
+/// 2^{1−m/2} 3^{1−m} π c^{2+m} σ0 (C is it times R*^{1−m/2}). The pair table holds
+/// it (`PairProperties::storakers_constant`), so that a contact's step does not
+/// evaluate its two powers and exponential again.
+pub fn storakers_pair_constant(hollomon: Hollomon) -> f64 {
     let m = hollomon.exponent;
     2f64.powf(1.0 - 0.5 * m)
         * 3f64.powf(1.0 - m)
         * std::f64::consts::PI
         * storakers_c_power(m)
         * hollomon.strength
-        * effective_radius.powf(1.0 - 0.5 * m)
+}
+
+/// The constant C of F_p = C δ^{1+m/2} (eq 16).
+pub fn storakers_prefactor(effective_radius: f64, hollomon: Hollomon) -> f64 {
+    storakers_pair_constant(hollomon) * effective_radius.powf(1.0 - 0.5 * hollomon.exponent)
 }
 
 /// Plastic force and stiffness on the virgin branch (eqs 16, 22).
 pub fn storakers_plastic(overlap: f64, effective_radius: f64, hollomon: Hollomon) -> (f64, f64) {
-    let m = hollomon.exponent;
-    let c = storakers_prefactor(effective_radius, hollomon);
+    plastic(
+        overlap,
+        storakers_prefactor(effective_radius, hollomon),
+        hollomon.exponent,
+    )
+}
+
+/// F_p = C δ^{1+m/2} and its slope (1 + m/2) C δ^{m/2}.
+fn plastic(overlap: f64, c: f64, m: f64) -> (f64, f64) {
     let rise = overlap.powf(0.5 * m);
     (c * rise * overlap, (1.0 + 0.5 * m) * c * rise)
 }
@@ -70,6 +84,8 @@ pub struct StorakersContact {
     pub effective_modulus: f64,
     /// Effective Hollomon constants σ0* and m of the pair.
     pub hollomon: Hollomon,
+    /// `storakers_pair_constant(hollomon)`.
+    pub pair_constant: f64,
     /// Whether the loading force is min(F_p, F_Hertz).
     pub min_with_hertz: bool,
 }
@@ -77,7 +93,9 @@ pub struct StorakersContact {
 impl StorakersContact {
     /// Force and stiffness on the virgin (loading) branch.
     pub fn loading(&self, overlap: f64) -> (f64, f64) {
-        let plastic = storakers_plastic(overlap, self.effective_radius, self.hollomon);
+        let m = self.hollomon.exponent;
+        let c = self.pair_constant * self.effective_radius.powf(1.0 - 0.5 * m);
+        let plastic = plastic(overlap, c, m);
         if self.min_with_hertz {
             let hertz = hertz_force(overlap, self.effective_radius, self.effective_modulus);
             if hertz < plastic.0 {
@@ -285,13 +303,17 @@ pub struct Storakers {
 impl Storakers {
     /// The law at one contact: R*, E* and the pair's Hollomon constants.
     pub fn at(&self, effective_radius: f64, pair: &PairProperties) -> StorakersContact {
+        let hollomon = pair.hollomon.unwrap_or(Hollomon {
+            strength: 0.0,
+            exponent: 0.0,
+        });
         StorakersContact {
             effective_radius,
             effective_modulus: pair.effective_modulus.unwrap_or(0.0),
-            hollomon: pair.hollomon.unwrap_or(Hollomon {
-                strength: 0.0,
-                exponent: 0.0,
-            }),
+            hollomon,
+            pair_constant: pair
+                .storakers_constant
+                .unwrap_or_else(|| storakers_pair_constant(hollomon)),
             min_with_hertz: self.min_with_hertz,
         }
     }
@@ -422,17 +444,19 @@ mod tests {
     use approx::assert_relative_eq;
 
     fn nial(m: f64, min_with_hertz: bool) -> StorakersContact {
-        let e = 183e9;
+        let e: f64 = 183e9;
         // NiAl, Rojek Table 2 (clippy mistakes 0.318 for 1/π).
         #[allow(clippy::approx_constant)]
         let nu: f64 = 0.318;
+        let hollomon = Hollomon {
+            strength: 800e6 * (e / 800e6).powf(m) * 2f64.powf(-m),
+            exponent: m,
+        };
         StorakersContact {
             effective_radius: 5e-6,
             effective_modulus: e / (2.0 * (1.0 - nu * nu)),
-            hollomon: Hollomon {
-                strength: 800e6 * (e / 800e6).powf(m) * 2f64.powf(-m),
-                exponent: m,
-            },
+            hollomon,
+            pair_constant: storakers_pair_constant(hollomon),
             min_with_hertz,
         }
     }

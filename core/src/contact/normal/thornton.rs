@@ -649,6 +649,7 @@ mod tests {
             effective_modulus: Some(modulus()),
             effective_shear_modulus: None,
             hollomon: None,
+            storakers_constant: None,
             friction: 0.0,
         }
     }
