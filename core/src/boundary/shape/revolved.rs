@@ -45,6 +45,8 @@ pub struct Revolved {
     radial0: Vec3,
     /// Largest extent of the profile, the scale of tolerances.
     scale: f64,
+    /// The profile's bounding box in the meridian plane: ρ_min, ρ_max, h_min, h_max.
+    bounds: [f64; 4],
 }
 
 /// 2D closest point of the segment p → q to c: (point, parameter t in [0, 1]).
@@ -104,12 +106,22 @@ impl Revolved {
                 ));
             }
         }
+        let fold = |pick: fn(&(f64, f64)) -> f64, start: f64, f: fn(f64, f64) -> f64| {
+            profile.iter().map(pick).fold(start, f)
+        };
+        let bounds = [
+            fold(|p| p.0, f64::INFINITY, f64::min),
+            fold(|p| p.0, f64::NEG_INFINITY, f64::max),
+            fold(|p| p.1, f64::INFINITY, f64::min),
+            fold(|p| p.1, f64::NEG_INFINITY, f64::max),
+        ];
         Ok(Revolved {
             origin,
             axis,
             profile,
             radial0: perpendicular(&axis),
             scale,
+            bounds,
         })
     }
 
@@ -198,6 +210,30 @@ impl Revolved {
         }
     }
 
+    /// Whether every point of the surface is farther than `distance` from `centre`:
+    /// the distance to the profile's bounding box in the meridian plane is a lower
+    /// bound of the distance to each segment. A die tests every particle every step
+    /// and touches few, so this test comes before the meridian's projections and
+    /// uses squares; its margins (1e-9 of the larger of the profile's and the
+    /// centre's extent on distances, 1e-12 of the centre's squared extent on ρ², both
+    /// far above their rounding) keep any sphere the exact test could find in contact.
+    fn beyond(&self, centre: &Vec3, distance: f64) -> bool {
+        let [rho_min, rho_max, h_min, h_max] = self.bounds;
+        let rel = centre - self.origin;
+        let r2 = rel.norm_squared();
+        let slack = 1e-9 * self.scale.max(r2.sqrt());
+        let d = distance + slack;
+        let h = rel.dot(&self.axis);
+        if h < h_min - d || h > h_max + d {
+            return true;
+        }
+        // ρ² by difference loses up to a few ε·|x|² to cancellation: 1e-12·|x|² covers it.
+        let (rho2, cancel) = (r2 - h * h, 1e-12 * r2);
+        let inner = rho_min - d;
+        let outer = rho_max + d;
+        (inner > 0.0 && rho2 + cancel < inner * inner) || rho2 - cancel > outer * outer
+    }
+
     fn lies_on(&self, segment: u32, p: &Vec3) -> bool {
         let (rho, h, _) = self.meridian(p);
         let i = segment as usize;
@@ -208,6 +244,19 @@ impl Revolved {
     /// Append the contacts of a sphere with the surface, one per distinct touching point
     /// (facet = profile segment index).
     pub fn contacts(&self, centre: &Vec3, radius: f64, reach: f64, out: &mut Vec<ShapeContact>) {
+        if !self.beyond(centre, radius + reach) {
+            self.meridian_contacts(centre, radius, reach, out);
+        }
+    }
+
+    /// `contacts` segment by segment in the meridian plane.
+    fn meridian_contacts(
+        &self,
+        centre: &Vec3,
+        radius: f64,
+        reach: f64,
+        out: &mut Vec<ShapeContact>,
+    ) {
         let (rho, h, u) = self.meridian(centre);
         let mut candidates: Vec<Candidate> = Vec::new();
         for (i, w) in self.profile.windows(2).enumerate() {
@@ -443,6 +492,31 @@ mod tests {
 
     proptest::proptest! {
         #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+
+        /// The bounding-box test before the meridian leaves out no contact: with it
+        /// and without, a tilted funnel gives the same contacts, for spheres whose
+        /// radius plus reach falls just short of, at, or just past the distance.
+        #[test]
+        fn the_early_test_keeps_every_contact(
+            rho in 0.0..3.0f64, phi in 0.0..2.0 * PI, h in -1.5..3.5f64,
+            radius in 0.05..0.6f64, reach in 0.0..0.1f64, nudge in -1e-9..1e-9f64,
+        ) {
+            let axis = Vec3::new(0.3, 0.1, 1.0).normalize();
+            let origin = Vec3::new(0.1, 0.2, -0.3);
+            let f = Revolved::funnel(origin, axis, 0.4, 0.0, 1.0, 1.6, 2.0).unwrap();
+            let e1 = axis.cross(&Vec3::x()).normalize();
+            let e2 = axis.cross(&e1);
+            let centre = origin + axis * h + (e1 * phi.cos() + e2 * phi.sin()) * rho;
+            let mut all = Vec::new();
+            f.meridian_contacts(&centre, 100.0, 0.0, &mut all);
+            let distance = all.iter().map(|c| 100.0 - c.overlap).fold(f64::INFINITY, f64::min);
+            for r in [radius, (distance - reach + nudge).max(1e-3)] {
+                let (mut with, mut without) = (Vec::new(), Vec::new());
+                f.contacts(&centre, r, reach, &mut with);
+                f.meridian_contacts(&centre, r, reach, &mut without);
+                proptest::prop_assert_eq!(with.len(), without.len());
+            }
+        }
 
         /// The deepest contact of a tilted funnel is at the sampled distance, and
         /// every contact's touching point x − d n lies on the profile.
