@@ -31,6 +31,7 @@
 //! one.
 
 use crate::error::{Result, TampError};
+use crate::plot::{Panel, Series, write_svg};
 use crate::process::die_replay::{self, ReplayRecord, Stroke};
 use crate::verify::{CaseContext, Measured};
 use serde::Deserialize;
@@ -118,6 +119,7 @@ fn compare(ctx: &CaseContext, peer: &str) -> Result<Vec<Measured>> {
     );
     let mut tamp_sum: Vec<(String, f64)> = Vec::new();
     let mut peer_sum: Vec<f64> = Vec::new();
+    let mut first_seed: Vec<(String, Vec<ReplayRecord>)> = Vec::new();
     for &seed in &seeds {
         let mut mine: Vec<&Row> = rows.iter().filter(|r| r.seed == seed).collect();
         mine.sort_by_key(|r| r.record);
@@ -171,6 +173,9 @@ fn compare(ctx: &CaseContext, peer: &str) -> Result<Vec<Measured>> {
             }
         }
         let (t, l) = (quantities(&tamp, h0), quantities(&theirs, h0));
+        if first_seed.is_empty() {
+            first_seed = vec![("tamp".to_string(), tamp), (peer.to_string(), theirs)];
+        }
         if tamp_sum.is_empty() {
             tamp_sum = t.iter().map(|(n, _)| (n.clone(), 0.0)).collect();
             peer_sum = vec![0.0; l.len()];
@@ -185,12 +190,54 @@ fn compare(ctx: &CaseContext, peer: &str) -> Result<Vec<Measured>> {
         &ctx.report_dir.join(format!("{}_curves.csv", ctx.spec.name)),
         curves.as_bytes(),
     )?;
+    write_plot(ctx, &first_seed)?;
     let n = seeds.len() as f64;
     Ok(tamp_sum
         .iter()
         .zip(&peer_sum)
         .map(|((name, a), b)| Measured::new(name, a / n, b / n))
         .collect())
+}
+
+/// `<case>_density_pressure.svg`: the specimen and RVE densities against the punch
+/// pressure, each code's replay of the first seed.
+fn write_plot(ctx: &CaseContext, replays: &[(String, Vec<ReplayRecord>)]) -> Result<()> {
+    let curve = |records: &[ReplayRecord], column: fn(&ReplayRecord) -> f64| {
+        records
+            .iter()
+            .map(|r| (r.punch_pressure / 1e6, column(r)))
+            .collect::<Vec<_>>()
+    };
+    let specimen: Vec<Series> = replays
+        .iter()
+        .map(|(name, r)| Series::line(name, curve(r, |r| r.density_specimen)))
+        .collect();
+    let rve: Vec<Series> = replays
+        .iter()
+        .map(|(name, r)| Series::line(name, curve(r, |r| r.density_rve)))
+        .collect();
+    write_svg(
+        &ctx.report_dir
+            .join(format!("{}_density_pressure.svg", ctx.spec.name)),
+        &[
+            Panel {
+                title: "specimen",
+                x_label: "punch pressure (MPa)",
+                y_label: "relative density",
+                log_x: false,
+                log_y: false,
+                series: &specimen,
+            },
+            Panel {
+                title: "RVE",
+                x_label: "punch pressure (MPa)",
+                y_label: "relative density",
+                log_x: false,
+                log_y: false,
+                series: &rve,
+            },
+        ],
+    )
 }
 
 /// The stroke of one seed's rows (records 0, 1, 2, … in order).
