@@ -490,6 +490,19 @@ mod tests {
         assert!(Revolved::new(Vec3::zeros(), z, vec![(1.0, 0.0)]).is_err());
     }
 
+    /// A funnel with a tilted axis and the point at (ρ, φ, h) of its own frame.
+    fn tilted_funnel(rho: f64, phi: f64, h: f64) -> (Revolved, Vec3) {
+        let axis = Vec3::new(0.3, 0.1, 1.0).normalize();
+        let origin = Vec3::new(0.1, 0.2, -0.3);
+        let f = Revolved::funnel(origin, axis, 0.4, 0.0, 1.0, 1.6, 2.0).unwrap();
+        let e1 = axis.cross(&Vec3::x()).normalize();
+        let e2 = axis.cross(&e1);
+        (
+            f,
+            origin + axis * h + (e1 * phi.cos() + e2 * phi.sin()) * rho,
+        )
+    }
+
     proptest::proptest! {
         #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
 
@@ -501,12 +514,7 @@ mod tests {
             rho in 0.0..3.0f64, phi in 0.0..2.0 * PI, h in -1.5..3.5f64,
             radius in 0.05..0.6f64, reach in 0.0..0.1f64, nudge in -1e-9..1e-9f64,
         ) {
-            let axis = Vec3::new(0.3, 0.1, 1.0).normalize();
-            let origin = Vec3::new(0.1, 0.2, -0.3);
-            let f = Revolved::funnel(origin, axis, 0.4, 0.0, 1.0, 1.6, 2.0).unwrap();
-            let e1 = axis.cross(&Vec3::x()).normalize();
-            let e2 = axis.cross(&e1);
-            let centre = origin + axis * h + (e1 * phi.cos() + e2 * phi.sin()) * rho;
+            let (f, centre) = tilted_funnel(rho, phi, h);
             let mut all = Vec::new();
             f.meridian_contacts(&centre, 100.0, 0.0, &mut all);
             let distance = all.iter().map(|c| 100.0 - c.overlap).fold(f64::INFINITY, f64::min);
@@ -524,12 +532,7 @@ mod tests {
         fn funnel_distance_against_samples(
             rho in 0.0..2.0f64, phi in 0.0..2.0 * PI, h in -0.5..2.5f64,
         ) {
-            let axis = Vec3::new(0.3, 0.1, 1.0).normalize();
-            let origin = Vec3::new(0.1, 0.2, -0.3);
-            let f = Revolved::funnel(origin, axis, 0.4, 0.0, 1.0, 1.6, 2.0).unwrap();
-            let e1 = axis.cross(&Vec3::x()).normalize();
-            let e2 = axis.cross(&e1);
-            let centre = origin + axis * h + (e1 * phi.cos() + e2 * phi.sin()) * rho;
+            let (f, centre) = tilted_funnel(rho, phi, h);
             let r = 10.0;
             let out = query(&f, centre, r);
             proptest::prop_assert!(!out.is_empty());
