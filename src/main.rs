@@ -42,7 +42,7 @@ enum Command {
     /// Run verification cases and write the report (REPORT/verification.md, .html and .json).
     Verify {
         /// quick: about 6 min on 2 cores with cases side by side (CI). full: the papers' scale, many hours
-        /// (the NiAl die compaction alone about 2.8 h, each full 2D compaction about
+        /// (the NiAl die compaction alone about 73 min, each full 2D compaction about
         /// 105 min); it includes the quick cases, and an interrupted NiAl case goes on
         /// from REPORT/nial_die_compaction_runs/.
         #[arg(long, value_enum, default_value_t = Tier::Quick)]
