@@ -1,7 +1,8 @@
 //! Where a contact acts on a spinning sphere: the lever arms that turn the spins into
 //! the contact-point velocity and the tangential force into torques. A scene declares
-//! the convention (`contact.lever_arm`), the force loop takes it as a type, like the
-//! laws, so the default costs nothing.
+//! the convention (`contact.lever_arm`). The force loop picks it per contact, a branch
+//! on a value fixed for the run: as a type, like the laws, it compiled the whole loop
+//! once more for every law (docs/performance.md, "Compile time").
 //!
 //! `mid_overlap` (default; tamp's, and LIGGGHTS 3.8's, fix_wall_gran.cpp and
 //! pair_gran.cpp): the contact point lies in the middle of the overlap, at
@@ -54,50 +55,34 @@ pub struct Arms {
     pub torque: f64,
 }
 
-/// A convention as a type, for the force loop.
-pub trait LeverArms {
-    /// Sphere of radius `radius` in a pair contact of overlap `overlap`.
-    fn pair(radius: f64, overlap: f64) -> Arms;
-    /// Sphere of radius `radius` on a wall, overlap `overlap`.
-    fn wall(radius: f64, overlap: f64) -> Arms;
-}
-
-/// `mid_overlap`.
-pub struct MidOverlap;
-
-impl LeverArms for MidOverlap {
+impl LeverArm {
+    /// The arms of a sphere of radius `radius` in a pair contact of overlap `overlap`.
     #[inline(always)]
-    fn pair(radius: f64, overlap: f64) -> Arms {
-        let arm = radius - 0.5 * overlap;
-        Arms {
-            velocity: arm,
-            torque: arm,
+    pub fn pair(self, radius: f64, overlap: f64) -> Arms {
+        match self {
+            LeverArm::MidOverlap => {
+                let arm = radius - 0.5 * overlap;
+                Arms {
+                    velocity: arm,
+                    torque: arm,
+                }
+            }
+            LeverArm::Lammps => Arms {
+                velocity: radius,
+                torque: radius - 0.5 * overlap,
+            },
         }
     }
 
+    /// The arms of a sphere of radius `radius` on a wall, overlap `overlap`.
     #[inline(always)]
-    fn wall(radius: f64, overlap: f64) -> Arms {
-        Self::pair(radius, overlap)
-    }
-}
-
-/// `lammps`.
-pub struct Lammps;
-
-impl LeverArms for Lammps {
-    #[inline(always)]
-    fn pair(radius: f64, overlap: f64) -> Arms {
-        Arms {
-            velocity: radius,
-            torque: radius - 0.5 * overlap,
-        }
-    }
-
-    #[inline(always)]
-    fn wall(radius: f64, _overlap: f64) -> Arms {
-        Arms {
-            velocity: radius,
-            torque: radius,
+    pub fn wall(self, radius: f64, overlap: f64) -> Arms {
+        match self {
+            LeverArm::MidOverlap => self.pair(radius, overlap),
+            LeverArm::Lammps => Arms {
+                velocity: radius,
+                torque: radius,
+            },
         }
     }
 }
@@ -109,17 +94,17 @@ mod tests {
     #[test]
     fn mid_overlap_arms_of_a_pair_add_up_to_the_centre_distance() {
         let (ri, rj, d) = (1e-3, 2e-3, 1e-5);
-        let sum = MidOverlap::pair(ri, d).torque + MidOverlap::pair(rj, d).torque;
+        let sum = LeverArm::MidOverlap.pair(ri, d).torque + LeverArm::MidOverlap.pair(rj, d).torque;
         assert!((sum - (ri + rj - d)).abs() < 1e-18);
     }
 
     #[test]
     fn lammps_takes_full_radii_except_for_pair_torques() {
         let (r, d) = (1e-3, 1e-5);
-        assert_eq!(Lammps::pair(r, d).velocity, r);
-        assert_eq!(Lammps::pair(r, d).torque, r - 0.5 * d);
+        assert_eq!(LeverArm::Lammps.pair(r, d).velocity, r);
+        assert_eq!(LeverArm::Lammps.pair(r, d).torque, r - 0.5 * d);
         assert_eq!(
-            Lammps::wall(r, d),
+            LeverArm::Lammps.wall(r, d),
             Arms {
                 velocity: r,
                 torque: r

@@ -1,11 +1,11 @@
 //! The force loop: every contact's geometry, law and force, pairs then walls, for the
-//! scene's laws, lever-arm convention and rotation as types, so a scene pays only for
-//! the effects it enables.
+//! scene's laws as types, so a scene pays only for the laws it names; spins enter
+//! through a branch on a value fixed for the run (`Spins`).
 
 use super::Simulation;
-use super::contact_pass::ContactPass;
+use super::contact_pass::{ContactPass, Spins};
 use crate::boundary::{Boundary, shape::ShapeContact};
-use crate::contact::lever_arm::{Arms, LeverArms};
+use crate::contact::lever_arm::Arms;
 use crate::contact::model::{
     CohesionModel, Composed, DampingModel, NormalModel, StateOf, TangentialModel,
 };
@@ -124,10 +124,11 @@ pub(super) struct Bodies<'a> {
 
 /// The geometry of the pair contact i–j at separation d = x_i − x_j (nearest image,
 /// |d| = `dist` > 0, overlap δ = R_i + R_j − |d|), and the lever arms of i and j in
-/// the convention `A`. `ROT`: spins enter the contact velocity.
+/// the scene's convention; spins enter the contact velocity if they are on.
 #[inline(always)]
-pub(super) fn pair_geometry<A: LeverArms, const ROT: bool>(
+pub(super) fn pair_geometry(
     b: &Bodies,
+    spins: Spins,
     i: usize,
     j: usize,
     d: Vec3,
@@ -135,9 +136,12 @@ pub(super) fn pair_geometry<A: LeverArms, const ROT: bool>(
     overlap: f64,
 ) -> (ContactGeometry, Arms, Arms) {
     let normal = d / dist;
-    let (arm_i, arm_j) = (A::pair(b.radius[i], overlap), A::pair(b.radius[j], overlap));
+    let (arm_i, arm_j) = (
+        spins.arms.pair(b.radius[i], overlap),
+        spins.arms.pair(b.radius[j], overlap),
+    );
     let mut relative_velocity = b.velocity[i] - b.velocity[j];
-    if ROT {
+    if spins.on {
         relative_velocity -=
             b.omega[i].cross(&normal) * arm_i.velocity + b.omega[j].cross(&normal) * arm_j.velocity;
     }
@@ -152,18 +156,19 @@ pub(super) fn pair_geometry<A: LeverArms, const ROT: bool>(
 }
 
 /// The geometry of particle i's contact `c` with `wall`, and i's lever arms in the
-/// convention `A`.
+/// scene's convention.
 #[inline(always)]
-pub(super) fn wall_geometry<A: LeverArms, const ROT: bool>(
+pub(super) fn wall_geometry(
     p: &Particles,
+    spins: Spins,
     i: usize,
     c: &ShapeContact,
     wall: &Boundary,
 ) -> (ContactGeometry, Arms) {
     let (overlap, normal) = (c.overlap, c.normal);
-    let arm = A::wall(p.radius[i], overlap);
+    let arm = spins.arms.wall(p.radius[i], overlap);
     let mut relative_velocity = p.velocity[i] - wall.velocity;
-    if ROT {
+    if spins.on {
         relative_velocity -= p.omega[i].cross(&normal) * arm.velocity;
     }
     let g = ContactGeometry {
@@ -181,25 +186,25 @@ pub(super) struct ForceLoop<'a>(pub(super) &'a mut Simulation);
 
 impl ContactPass for ForceLoop<'_> {
     type Output = Result<()>;
-    fn run<N, D, T, C, A, const ROT: bool>(self, law: &Composed<N, D, T, C>) -> Result<()>
+    fn run<N, D, T, C>(self, law: &Composed<N, D, T, C>, spins: Spins) -> Result<()>
     where
         N: NormalModel,
         D: DampingModel,
         T: TangentialModel,
         C: CohesionModel,
-        A: LeverArms,
     {
-        self.0.compute_forces_with::<N, D, T, C, A, ROT>(law)
+        self.0.compute_forces_with(law, spins)
     }
 }
 
 impl Simulation {
     /// Contact, wall and body forces at the current positions, for the scene's laws
-    /// as types. `ROT`: spins enter contact velocities and torques are accumulated,
-    /// with the lever arms of the convention `A`.
-    pub(super) fn compute_forces_with<N, D, T, C, A: LeverArms, const ROT: bool>(
+    /// as types. With `spins` on, spins enter contact velocities and torques are
+    /// accumulated, with the lever arms of the scene's convention.
+    pub(super) fn compute_forces_with<N, D, T, C>(
         &mut self,
         law: &Composed<N, D, T, C>,
+        spins: Spins,
     ) -> Result<()>
     where
         N: NormalModel,
@@ -216,13 +221,13 @@ impl Simulation {
             Some(g) => set_weights(p, g),
             None => p.force.iter_mut().for_each(|f| *f = Vec3::zeros()),
         }
-        if ROT {
+        if spins.on {
             p.torque.iter_mut().for_each(|t| *t = Vec3::zeros());
         }
         let dt = self.dt;
         let max_fraction = self.limits.max_overlap_fraction;
         let mut worst = self.max_overlap_ratio;
-        let torques = ROT && T::ACTIVE;
+        let torques = spins.on && T::ACTIVE;
         let law_reach = law.cohesion.reach();
         let image = self.neighbors.space.minimum_image();
         let states = self
@@ -308,7 +313,7 @@ impl Simulation {
                     self.particles.id[i], self.particles.id[j]
                 )));
             }
-            let (g, arm_i, arm_j) = pair_geometry::<A, ROT>(&bodies, i, j, d, dist, overlap);
+            let (g, arm_i, arm_j) = pair_geometry(&bodies, spins, i, j, d, dist, overlap);
             let normal = g.normal;
             let pair = self.pair_table.get(material[i], material[j]);
             let state = if kept {
@@ -352,7 +357,7 @@ impl Simulation {
                     let (facet, normal) = (contact.facet, contact.normal);
                     let ratio = contact.overlap / p.radius[i];
                     worst = worst.max(ratio);
-                    let (g, arm) = wall_geometry::<A, ROT>(p, i, contact, wall);
+                    let (g, arm) = wall_geometry(p, spins, i, contact, wall);
                     let pair = self.pair_table.get(p.material[i], wall.material);
                     let state = if kept {
                         &mut states.walls[w][i][c].1

@@ -11,8 +11,8 @@
 //! tamp has; a clearly negative D means the integration is adding energy (unstable).
 //!
 //! This file holds the step; its parts live beside it: `force_loop` (every contact's
-//! force), `contact_pass` (the force loop specialised to the scene's laws, lever arms
-//! and rotation), `records` (a step's contacts as output), `energy` (the energy
+//! force), `contact_pass` (the force loop specialised to the scene's laws and
+//! rotation), `records` (a step's contacts as output), `energy` (the energy
 //! book and its check), `critical_step` (Rojek's critical time step), `growth_stage`
 //! and `pour` (particles growing or entering during a run), `contacts` (queries on the
 //! current contacts).

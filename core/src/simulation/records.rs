@@ -2,8 +2,8 @@
 //! force loop's geometry and laws on copies of the stored states, so nothing advances.
 
 use super::Simulation;
-use super::contact_pass::Variant;
-use super::force_loop::{Bodies, carried_state, resolve};
+use super::contact_pass::Spins;
+use super::force_loop::{Bodies, carried_state, pair_geometry, resolve, wall_geometry};
 use crate::contact::model::{
     CohesionModel, Composed, DampingModel, LawVisitor, NormalModel, StateOf, TangentialModel,
 };
@@ -41,7 +41,7 @@ impl Simulation {
         C: CohesionModel,
     {
         let kept = ContactStates::<StateOf<N, T>>::KEPT;
-        let variant = Variant::of(&self.law, self.rotation);
+        let spins = Spins::of(&self.law, self.rotation);
         let states = self.states_as::<StateOf<N, T>>();
         let p = &self.particles;
         let n = p.len();
@@ -67,7 +67,7 @@ impl Simulation {
             let dist = dist2.sqrt();
             let overlap = reach - dist;
             let ratio = overlap / p.radius[i].min(p.radius[j]);
-            let (g, arm_i, _) = variant.pair_geometry(&bodies, i, j, d, dist, overlap);
+            let (g, arm_i, _) = pair_geometry(&bodies, spins, i, j, d, dist, overlap);
             let pair = self.pair_table.get(p.material[i], p.material[j]);
             let mut state = if kept {
                 states.pairs[k]
@@ -95,7 +95,7 @@ impl Simulation {
                 wall.contacts(&p.position[i], p.radius[i], law_reach, &mut found);
                 for contact in &found {
                     let ratio = contact.overlap / p.radius[i];
-                    let (g, arm) = variant.wall_geometry(p, i, contact, wall);
+                    let (g, arm) = wall_geometry(p, spins, i, contact, wall);
                     let pair = self.pair_table.get(p.material[i], wall.material);
                     let mut state = if kept {
                         carried_state(&states.walls[w][i], contact.facet)
