@@ -202,41 +202,28 @@ fn compare(ctx: &CaseContext, peer: &str) -> Result<Vec<Measured>> {
 /// `<case>_density_pressure.svg`: the specimen and RVE densities against the punch
 /// pressure, each code's replay of the first seed.
 fn write_plot(ctx: &CaseContext, replays: &[(String, Vec<ReplayRecord>)]) -> Result<()> {
-    let curve = |records: &[ReplayRecord], column: fn(&ReplayRecord) -> f64| {
-        records
+    let series = |column: fn(&ReplayRecord) -> f64| -> Vec<Series> {
+        replays
             .iter()
-            .map(|r| (r.punch_pressure / 1e6, column(r)))
-            .collect::<Vec<_>>()
+            .map(|(name, records)| {
+                let points = records.iter().map(|r| (r.punch_pressure / 1e6, column(r)));
+                Series::line(name, points.collect())
+            })
+            .collect()
     };
-    let specimen: Vec<Series> = replays
-        .iter()
-        .map(|(name, r)| Series::line(name, curve(r, |r| r.density_specimen)))
-        .collect();
-    let rve: Vec<Series> = replays
-        .iter()
-        .map(|(name, r)| Series::line(name, curve(r, |r| r.density_rve)))
-        .collect();
+    let (specimen, rve) = (series(|r| r.density_specimen), series(|r| r.density_rve));
+    let panel = |title, series| Panel {
+        title,
+        x_label: "punch pressure (MPa)",
+        y_label: "relative density",
+        log_x: false,
+        log_y: false,
+        series,
+    };
     write_svg(
         &ctx.report_dir
             .join(format!("{}_density_pressure.svg", ctx.spec.name)),
-        &[
-            Panel {
-                title: "specimen",
-                x_label: "punch pressure (MPa)",
-                y_label: "relative density",
-                log_x: false,
-                log_y: false,
-                series: &specimen,
-            },
-            Panel {
-                title: "RVE",
-                x_label: "punch pressure (MPa)",
-                y_label: "relative density",
-                log_x: false,
-                log_y: false,
-                series: &rve,
-            },
-        ],
+        &[panel("specimen", &specimen), panel("RVE", &rve)],
     )
 }
 

@@ -80,9 +80,9 @@ const FRICTIONS: [(f64, &str, &str); 3] = [
     (0.05, "hertz_mu0.05", "storakers_m0.2_mu0.05"),
 ];
 
-/// The pressings of Figs 17–20, longest first (measured at α = 0.4: Storåkers
-/// 820–930 s, Hertz with friction 700–800 s, frictionless Hertz 520 s), so that the
-/// threads that share them finish close together; a run cut short keeps each
+/// The pressings of Figs 17–20, longest first (Storåkers, then Hertz with friction,
+/// then frictionless Hertz; their times are in reference_data/nial/README.md), so that
+/// the threads that share them finish close together; a run cut short keeps each
 /// pressing's checkpoint.
 fn full_models() -> Vec<Model> {
     let storakers = |k: usize, friction: f64, label: &'static str| Model {

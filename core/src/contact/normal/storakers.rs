@@ -51,7 +51,16 @@ pub fn storakers_pair_constant(hollomon: Hollomon) -> f64 {
 
 /// The constant C of F_p = C δ^{1+m/2} (eq 16).
 pub fn storakers_prefactor(effective_radius: f64, hollomon: Hollomon) -> f64 {
-    storakers_pair_constant(hollomon) * effective_radius.powf(1.0 - 0.5 * hollomon.exponent)
+    prefactor(
+        storakers_pair_constant(hollomon),
+        effective_radius,
+        hollomon.exponent,
+    )
+}
+
+/// C from the pair's factor: `pair_constant` R*^{1−m/2}.
+fn prefactor(pair_constant: f64, effective_radius: f64, m: f64) -> f64 {
+    pair_constant * effective_radius.powf(1.0 - 0.5 * m)
 }
 
 /// Plastic force and stiffness on the virgin branch (eqs 16, 22).
@@ -94,7 +103,7 @@ impl StorakersContact {
     /// Force and stiffness on the virgin (loading) branch.
     pub fn loading(&self, overlap: f64) -> (f64, f64) {
         let m = self.hollomon.exponent;
-        let c = self.pair_constant * self.effective_radius.powf(1.0 - 0.5 * m);
+        let c = prefactor(self.pair_constant, self.effective_radius, m);
         let plastic = plastic(overlap, c, m);
         if self.min_with_hertz {
             let hertz = hertz_force(overlap, self.effective_radius, self.effective_modulus);
