@@ -24,7 +24,9 @@
 //! - every double is written as the shortest decimal that reads back to it (serde_json
 //!   formats with ryu) and read with serde_json's `float_roundtrip` parser, which
 //!   rounds correctly; the default, faster parser can be one ulp off;
-//! - nothing is recomputed on restore, so no rounding can differ;
+//! - nothing is recomputed on restore, so no rounding can differ (the one cache a
+//!   contact state holds, Storåkers' C, K and δ_res, is not stored: it is derived
+//!   again from the stored δ_max by the same expressions);
 //! - the neighbour list keeps its reference state, so it is rebuilt at the same steps,
 //!   and its sorted pairs sum the contact forces in the same order;
 //! - a source's ChaCha generator is stored as its abstract state (seed, stream, word

@@ -1,6 +1,7 @@
 //! Normal contact laws: the elastic, viscoelastic or plastic part of the normal force.
 //! One file per law, each a type implementing `NormalModel`. Laws with memory
-//! (Walton–Braun, Storåkers) keep the largest overlap δ_max (`PeakOverlap`).
+//! (Walton–Braun, Storåkers) keep the largest overlap δ_max (`PeakOverlap`,
+//! `storakers::StorakersHistory`).
 
 pub mod hertz;
 pub mod hysteretic;
@@ -27,7 +28,7 @@ pub use thornton::Thornton;
 pub use walton_braun::WaltonBraun;
 
 /// The state of a law with memory: the largest overlap reached on the loading
-/// branch, m (Walton–Braun, Storåkers).
+/// branch, m (Walton–Braun).
 #[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct PeakOverlap {
     /// Largest overlap δ_max reached so far, m.

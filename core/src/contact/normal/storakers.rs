@@ -26,7 +26,7 @@
 
 use super::NormalLaw;
 use super::hertz::{Hertz, hertz_force, hertz_stiffness};
-use super::{NormalModel, NormalResponse, PeakOverlap};
+use super::{NormalModel, NormalResponse};
 use crate::contact::model::Needs;
 use crate::contact::registry::{self, NormalExample};
 use crate::material::{Hollomon, PairProperties};
@@ -78,6 +78,15 @@ fn plastic(overlap: f64, c: f64, m: f64) -> (f64, f64) {
     (c * rise * overlap, (1.0 + 0.5 * m) * c * rise)
 }
 
+/// The Hertz branch K w^{3/2} and its slope at elastic overlap w = δ − δ_res (zero
+/// once the contact has unloaded through δ_res).
+fn elastic_branch(elastic: f64, k: f64) -> (f64, f64) {
+    if elastic <= 0.0 {
+        return (0.0, 0.0);
+    }
+    (k * elastic.powf(1.5), 1.5 * k * elastic.sqrt())
+}
+
 /// Inverse of eq 16: the overlap at which the plastic force equals `force`.
 pub fn storakers_overlap_at_force(force: f64, effective_radius: f64, hollomon: Hollomon) -> f64 {
     let c = storakers_prefactor(effective_radius, hollomon);
@@ -100,11 +109,23 @@ pub struct StorakersContact {
 }
 
 impl StorakersContact {
+    /// C of eq 16 for this contact's R*.
+    fn prefactor(&self) -> f64 {
+        prefactor(
+            self.pair_constant,
+            self.effective_radius,
+            self.hollomon.exponent,
+        )
+    }
+
     /// Force and stiffness on the virgin (loading) branch.
     pub fn loading(&self, overlap: f64) -> (f64, f64) {
-        let m = self.hollomon.exponent;
-        let c = prefactor(self.pair_constant, self.effective_radius, m);
-        let plastic = plastic(overlap, c, m);
+        self.loading_with(self.prefactor(), overlap)
+    }
+
+    /// `loading` with C given.
+    fn loading_with(&self, c: f64, overlap: f64) -> (f64, f64) {
+        let plastic = plastic(overlap, c, self.hollomon.exponent);
         if self.min_with_hertz {
             let hertz = hertz_force(overlap, self.effective_radius, self.effective_modulus);
             if hertz < plastic.0 {
@@ -121,8 +142,13 @@ impl StorakersContact {
 
     /// Permanent set δ_res after unloading from `max_overlap`.
     pub fn residual_overlap(&self, max_overlap: f64) -> f64 {
-        let peak = self.loading(max_overlap).0;
-        max_overlap - (peak / self.hertz_constant()).powf(2.0 / 3.0)
+        self.residual_with(self.prefactor(), self.hertz_constant(), max_overlap)
+    }
+
+    /// `residual_overlap` with C and K given.
+    fn residual_with(&self, c: f64, k: f64, max_overlap: f64) -> f64 {
+        let peak = self.loading_with(c, max_overlap).0;
+        max_overlap - (peak / k).powf(2.0 / 3.0)
     }
 
     /// Tangent of the elastic branch at its top, where unloading from `max_overlap`
@@ -138,11 +164,7 @@ impl StorakersContact {
             return self.loading(overlap);
         }
         let elastic = overlap - self.residual_overlap(max_overlap);
-        if elastic <= 0.0 {
-            return (0.0, 0.0);
-        }
-        let k = self.hertz_constant();
-        (k * elastic.powf(1.5), 1.5 * k * elastic.sqrt())
+        elastic_branch(elastic, self.hertz_constant())
     }
 
     /// Energy recoverable by elastic unloading from the current state: the Hertz
@@ -299,6 +321,84 @@ impl StorakersContact {
     }
 }
 
+/// What a Storåkers contact remembers: δ_max. It also carries what the step derives
+/// from δ_max and the pair (C, K and δ_res), which change far less often than the
+/// overlap: a contact that unloads then costs one power a step instead of four.
+/// Only δ_max is saved; the rest is derived again on the first step after a restore.
+#[derive(Clone, Copy, Debug, Default, serde::Serialize, serde::Deserialize)]
+pub struct StorakersHistory {
+    /// Largest overlap δ_max reached so far, m.
+    pub max_overlap: f64,
+    #[serde(skip)]
+    derived: Derived,
+}
+
+/// Two histories are the same contact state when their δ_max agree; what is derived
+/// from it is a cache.
+impl PartialEq for StorakersHistory {
+    fn eq(&self, other: &Self) -> bool {
+        self.max_overlap == other.max_overlap
+    }
+}
+
+impl crate::contact::model::ContactState for StorakersHistory {}
+
+/// C and K of one contact, and δ_res for one δ_max, each computed by the same
+/// expressions as `StorakersContact` uses, so a step gives the same bits with or
+/// without them.
+#[derive(Clone, Copy, Debug)]
+struct Derived {
+    /// R*, E*, the pair constant and m they were derived for (NaN: not yet).
+    key: [f64; 4],
+    prefactor: f64,
+    hertz_constant: f64,
+    /// The δ_max that `residual` belongs to (NaN: not yet).
+    residual_at: f64,
+    residual: f64,
+}
+
+impl Default for Derived {
+    fn default() -> Self {
+        Derived {
+            key: [f64::NAN; 4],
+            prefactor: f64::NAN,
+            hertz_constant: f64::NAN,
+            residual_at: f64::NAN,
+            residual: f64::NAN,
+        }
+    }
+}
+
+impl Derived {
+    /// `StorakersContact::response`, deriving C, K and δ_res only when what they
+    /// depend on has changed (a NaN key never matches, so a fresh state derives).
+    #[inline(always)]
+    fn response(&mut self, law: &StorakersContact, overlap: f64, max_overlap: f64) -> (f64, f64) {
+        let key = [
+            law.effective_radius,
+            law.effective_modulus,
+            law.pair_constant,
+            law.hollomon.exponent,
+        ];
+        if key != self.key {
+            *self = Derived {
+                key,
+                prefactor: law.prefactor(),
+                hertz_constant: law.hertz_constant(),
+                ..Derived::default()
+            };
+        }
+        if overlap >= max_overlap {
+            return law.loading_with(self.prefactor, overlap);
+        }
+        if self.residual_at != max_overlap {
+            self.residual = law.residual_with(self.prefactor, self.hertz_constant, max_overlap);
+            self.residual_at = max_overlap;
+        }
+        elastic_branch(overlap - self.residual, self.hertz_constant)
+    }
+}
+
 /// The Storåkers law; `min_with_hertz` caps the plastic force by Hertz (Martin et
 /// al. 2003). The Hollomon constants σ0* and m come from the pair.
 #[derive(Clone, Copy, Debug, Default, PartialEq, serde::Deserialize, serde::Serialize)]
@@ -329,7 +429,7 @@ impl Storakers {
 }
 
 impl NormalModel for Storakers {
-    type State = PeakOverlap;
+    type State = StorakersHistory;
 
     fn name(&self) -> &'static str {
         if self.min_with_hertz {
@@ -386,14 +486,23 @@ impl NormalModel for Storakers {
         _: f64,
         r: f64,
         pair: &PairProperties,
-        state: &mut PeakOverlap,
+        state: &mut StorakersHistory,
     ) -> NormalResponse {
         state.max_overlap = state.max_overlap.max(overlap);
-        let (force, stiffness) = self.at(r, pair).response(overlap, state.max_overlap);
+        let (force, stiffness) =
+            state
+                .derived
+                .response(&self.at(r, pair), overlap, state.max_overlap);
         NormalResponse { force, stiffness }
     }
 
-    fn stiffness(&self, overlap: f64, r: f64, pair: &PairProperties, state: &PeakOverlap) -> f64 {
+    fn stiffness(
+        &self,
+        overlap: f64,
+        r: f64,
+        pair: &PairProperties,
+        state: &StorakersHistory,
+    ) -> f64 {
         self.at(r, pair)
             .response(overlap, state.max_overlap.max(overlap))
             .1
@@ -406,7 +515,7 @@ impl NormalModel for Storakers {
         overlap: f64,
         r: f64,
         pair: &PairProperties,
-        state: &PeakOverlap,
+        state: &StorakersHistory,
     ) -> f64 {
         let current = self.stiffness(overlap, r, pair, state);
         let turning = if overlap > 0.0 {
@@ -418,7 +527,7 @@ impl NormalModel for Storakers {
         current.max(turning)
     }
 
-    fn energy(&self, overlap: f64, r: f64, pair: &PairProperties, state: &PeakOverlap) -> f64 {
+    fn energy(&self, overlap: f64, r: f64, pair: &PairProperties, state: &StorakersHistory) -> f64 {
         self.at(r, pair).energy(overlap, state.max_overlap)
     }
 
@@ -468,6 +577,34 @@ mod tests {
             pair_constant: storakers_pair_constant(hollomon),
             min_with_hertz,
         }
+    }
+
+    /// The step through the history's cache gives the same bits as the law computed
+    /// afresh from δ_max, over loading, unloading past δ_res, reloading, and a change
+    /// of R* (the cache must notice it), for both variants and m = 0, 0.1, 0.2.
+    #[test]
+    fn the_history_cache_keeps_every_bit() {
+        use proptest::prelude::*;
+        let overlaps = proptest::collection::vec(0.0f64..3e-7, 1..60);
+        proptest!(|(steps in overlaps, m in 0usize..3, capped: bool, switch in 0usize..60)| {
+            let reference = nial(0.1 * m as f64, capped);
+            let pair = PairProperties {
+                effective_modulus: Some(reference.effective_modulus),
+                effective_shear_modulus: None,
+                hollomon: Some(reference.hollomon),
+                storakers_constant: Some(reference.pair_constant),
+                friction: 0.0,
+            };
+            let law = Storakers { min_with_hertz: capped };
+            let mut state = StorakersHistory::default();
+            for (k, &overlap) in steps.iter().enumerate() {
+                let r = if k < switch { 5e-6 } else { 2e-6 };
+                let cached = law.response(overlap, 0.0, r, &pair, &mut state);
+                let afresh = law.at(r, &pair).response(overlap, state.max_overlap);
+                prop_assert_eq!(cached.force.to_bits(), afresh.0.to_bits());
+                prop_assert_eq!(cached.stiffness.to_bits(), afresh.1.to_bits());
+            }
+        });
     }
 
     /// The effective mass of two 10 µm NiAl spheres, kg.
