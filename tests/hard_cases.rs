@@ -7,7 +7,8 @@
 mod common;
 
 use serde_json::{Value, json};
-use tamp::contact::normal::{NormalLaw, NormalModel, PeakOverlap, Storakers};
+use tamp::contact::normal::storakers::StorakersHistory;
+use tamp::contact::normal::{NormalLaw, NormalModel, Storakers};
 use tamp::error::TampError;
 use tamp::particles::Vec3;
 use tamp::scene;
@@ -442,16 +443,10 @@ fn storakers_perfectly_plastic_at_vanishing_overlap() {
         };
         assert_eq!(sim.law.normal, NormalLaw::Storakers(law));
         for d in [1e-300, 1e-200, 1e-100, 1e-15, 1e-12, 1e-9] {
-            let virgin = law.response(d, 0.0, r_eff, &pair, &mut PeakOverlap::default());
-            let k_n = law.time_step_stiffness(d, r_eff, &pair, &PeakOverlap::default());
-            let stored = law.energy(d, r_eff, &pair, &PeakOverlap::default());
-            let unloading = law.response(
-                0.5 * d,
-                0.0,
-                r_eff,
-                &pair,
-                &mut PeakOverlap { max_overlap: d },
-            );
+            let virgin = law.response(d, 0.0, r_eff, &pair, &mut StorakersHistory::default());
+            let k_n = law.time_step_stiffness(d, r_eff, &pair, &StorakersHistory::default());
+            let stored = law.energy(d, r_eff, &pair, &StorakersHistory::default());
+            let unloading = law.response(0.5 * d, 0.0, r_eff, &pair, &mut StorakersHistory::new(d));
             for (what, v) in [
                 ("force", virgin.force),
                 ("stiffness", virgin.stiffness),

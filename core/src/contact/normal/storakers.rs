@@ -333,6 +333,16 @@ pub struct StorakersHistory {
     derived: Derived,
 }
 
+impl StorakersHistory {
+    /// A contact that has reached `max_overlap` and derived nothing yet.
+    pub fn new(max_overlap: f64) -> Self {
+        StorakersHistory {
+            max_overlap,
+            derived: Derived::default(),
+        }
+    }
+}
+
 /// Two histories are the same contact state when their δ_max agree; what is derived
 /// from it is a cache.
 impl PartialEq for StorakersHistory {
