@@ -41,8 +41,8 @@ enum Command {
     },
     /// Run verification cases and write the report (REPORT/verification.md, .html and .json).
     Verify {
-        /// quick: about 6 min on 2 cores with cases side by side (CI). full: the papers' scale, many hours
-        /// (the NiAl die compaction alone about 73 min, each full 2D compaction about
+        /// quick: about 10 min on 2 cores with cases side by side (CI). full: the papers' scale, many hours
+        /// (the NiAl die compaction alone about 55 min, each full 2D compaction about
         /// 105 min); it includes the quick cases, and an interrupted NiAl case goes on
         /// from REPORT/nial_die_compaction_runs/.
         #[arg(long, value_enum, default_value_t = Tier::Quick)]

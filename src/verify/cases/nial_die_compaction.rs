@@ -23,7 +23,7 @@
 //! on as many threads as the machine has (each one single-threaded and
 //! deterministic, so the results do not depend on the thread count).
 //!
-//! The full case runs for over an hour, so it keeps its work in
+//! The full case runs for most of an hour, so it keeps its work in
 //! `<report>/nial_die_compaction_runs/`: the specimen, each finished pressing, and a
 //! restart checkpoint of each pressing under way. A `tamp verify` that is killed
 //! goes on from there when run again; a file is used only when it was written by a
@@ -419,7 +419,7 @@ pub fn small(ctx: &CaseContext) -> Result<Vec<Measured>> {
 pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let scene = ctx.die_compaction()?;
     let dc = &scene.die_compaction;
-    // Not quiet: this case runs for over an hour, and its log says how far it got.
+    // Not quiet: this case runs for most of an hour, and its log says how far it got.
     let store = Store {
         dir: ctx.report_dir.join(format!("{}_runs", ctx.spec.name)),
     };
