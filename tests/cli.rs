@@ -502,7 +502,7 @@ fn help_texts_name_files_exit_codes_durations_and_where_studies_write() {
         assert!(run.contains(needle), "run --help lacks '{needle}':\n{run}");
     }
     let verify = text(&["verify", "--help"]);
-    assert!(verify.contains("about 6 min on 2 cores"), "{verify}");
+    assert!(verify.contains("about 10 min on 2 cores"), "{verify}");
     assert!(!verify.contains("seconds)"), "{verify}");
     let study = text(&["study", "--help"]);
     assert!(study.contains("only an explicit `--out docs`"), "{study}");
