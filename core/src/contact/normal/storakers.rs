@@ -158,13 +158,10 @@ impl StorakersContact {
         (6.0 * self.effective_radius * self.effective_modulus.powi(2) * peak).cbrt()
     }
 
-    /// Force and tangent stiffness at `overlap` given the largest overlap so far.
+    /// Force and tangent stiffness at `overlap` given the largest overlap so far
+    /// (the step of `StorakersHistory` with nothing derived yet).
     pub fn response(&self, overlap: f64, max_overlap: f64) -> (f64, f64) {
-        if overlap >= max_overlap {
-            return self.loading(overlap);
-        }
-        let elastic = overlap - self.residual_overlap(max_overlap);
-        elastic_branch(elastic, self.hertz_constant())
+        Derived::default().response(self, overlap, max_overlap)
     }
 
     /// Energy recoverable by elastic unloading from the current state: the Hertz
@@ -353,9 +350,8 @@ impl PartialEq for StorakersHistory {
 
 impl crate::contact::model::ContactState for StorakersHistory {}
 
-/// C and K of one contact, and δ_res for one δ_max, each computed by the same
-/// expressions as `StorakersContact` uses, so a step gives the same bits with or
-/// without them.
+/// C and K of one contact, and δ_res for one δ_max: the law's step in one place,
+/// for a contact that carries them and for one computed afresh alike.
 #[derive(Clone, Copy, Debug)]
 struct Derived {
     /// R*, E*, the pair constant and m they were derived for (NaN: not yet).
@@ -380,8 +376,10 @@ impl Default for Derived {
 }
 
 impl Derived {
-    /// `StorakersContact::response`, deriving C, K and δ_res only when what they
-    /// depend on has changed (a NaN key never matches, so a fresh state derives).
+    /// Force and tangent stiffness at `overlap` given δ_max: the virgin branch at
+    /// δ ≥ δ_max, else the Hertz branch through (δ_max, F_max). C, K and δ_res are
+    /// derived only when what they depend on has changed (a NaN key never matches,
+    /// so a fresh state derives them).
     #[inline(always)]
     fn response(&mut self, law: &StorakersContact, overlap: f64, max_overlap: f64) -> (f64, f64) {
         let key = [
@@ -589,8 +587,8 @@ mod tests {
         }
     }
 
-    /// The step through the history's cache gives the same bits as the law computed
-    /// afresh from δ_max, over loading, unloading past δ_res, reloading, and a change
+    /// The step through the history's cache gives the same bits as a step with
+    /// nothing derived yet, over loading, unloading past δ_res, reloading, and a change
     /// of R* (the cache must notice it), for both variants and m = 0, 0.1, 0.2.
     #[test]
     fn the_history_cache_keeps_every_bit() {
