@@ -11,6 +11,7 @@ pub mod cases;
 pub mod crosscheck;
 pub mod parallel;
 pub mod report;
+pub mod store;
 
 use crate::error::{Result, TampError};
 use crate::process::die_compaction_file::DieCompactionFile;
@@ -230,10 +231,31 @@ impl CaseContext<'_> {
         Ok(scene)
     }
 
+    /// The case's store of finished and interrupted runs, `<report>/<case>_runs/`
+    /// (`store`): for cases that run long enough to be worth resuming.
+    pub fn store(&self) -> Result<store::Store> {
+        let dir = self.report_dir.join(format!("{}_runs", self.spec.name));
+        crate::output::create_dir(&dir)?;
+        Ok(store::Store { dir })
+    }
+
+    /// `items.iter().map(run).collect()` on one thread per core, results in the
+    /// order of the items (`parallel::map`): the independent runs of one case.
+    pub fn map<T: Sync, R: Send>(&self, items: &[T], run: impl Fn(&T) -> R + Sync) -> Vec<R> {
+        parallel::map(items, default_jobs(), run)
+    }
+
     /// The case's die-compaction file, with the variant's step and detector applied to
     /// the scenes its stages share.
     pub fn die_compaction(&self) -> Result<DieCompactionFile> {
-        let mut process = DieCompactionFile::load(&self.scene_path()?)?.0;
+        self.die_compaction_at(&self.scene_path()?)
+    }
+
+    /// A die-compaction file of the case other than its scene (a case that presses
+    /// more than one, named in its parameters), read as `die_compaction` reads the
+    /// scene.
+    pub fn die_compaction_at(&self, path: &Path) -> Result<DieCompactionFile> {
+        let mut process = DieCompactionFile::load(path)?.0;
         let mut shared = process.shared_scene();
         self.variant.apply(&mut shared);
         process.time_step = shared.time_step;

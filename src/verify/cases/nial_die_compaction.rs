@@ -23,15 +23,12 @@
 //! on as many threads as the machine has (each one single-threaded and
 //! deterministic, so the results do not depend on the thread count).
 //!
-//! The full case runs for most of an hour, so it keeps its work in
-//! `<report>/nial_die_compaction_runs/`: the specimen, each finished pressing, and a
-//! restart checkpoint of each pressing under way. A `tamp verify` that is killed
-//! goes on from there when run again; a file is used only when it was written by a
-//! build of the same code (`SOURCE_TREE`: the git objects of `core/`, `src/` and `Cargo.lock`,
-//! never a build with uncommitted changes) for the same scene (SHA-256 of the scene
-//! as pressed), so a change of code or scene starts the work afresh.
+//! The full case runs for most of an hour, so it keeps its work in the runner's
+//! store (`verify::store`, `<report>/nial_die_compaction_runs/`): the specimen,
+//! each finished pressing, and a restart checkpoint of each pressing under way. A
+//! `tamp verify` that is killed goes on from there when run again; a change of code
+//! or scene starts the work afresh.
 
-use crate::checkpoint::{self, Checkpoint};
 use crate::contact::normal::{NormalLaw, Storakers};
 use crate::contact::tangential::{TangentialLaw, storakers};
 use crate::error::{Result, TampError};
@@ -39,10 +36,10 @@ use crate::plot::{Panel, Series, write_svg};
 use crate::process::die_compaction::{self, PressRecord, PressState, Pressing, Specimen};
 use crate::process::die_compaction_file::DieCompactionFile;
 use crate::scene::schema::HollomonSpec;
-use crate::verify::{CaseContext, Measured, parallel};
-use serde::{Deserialize, Serialize, de::DeserializeOwned};
+use crate::verify::store::{Store, key_of};
+use crate::verify::{CaseContext, Measured};
+use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
-use std::path::PathBuf;
 
 /// Rojek 2016 Table 1: the mean relative bulk density of the poured powder.
 const POURED_DENSITY: f64 = 0.650;
@@ -144,11 +141,6 @@ fn with_model(scene: &DieCompactionFile, model: &Model) -> Result<DieCompactionF
 /// 2–5 million steps; a checkpoint is a few MB of JSON).
 const CHECKPOINT_EVERY: u64 = 200_000;
 
-/// The full case's finished and interrupted work on disk.
-struct Store {
-    dir: PathBuf,
-}
-
 /// A finished pressing and the wall time it took (over all sessions it ran in).
 #[derive(Serialize, Deserialize)]
 struct Done {
@@ -156,32 +148,10 @@ struct Done {
     wall_s: f64,
 }
 
-/// The key of saved work: the scene as pressed and the code that pressed it.
-fn sha_of(scene: &DieCompactionFile) -> String {
-    let scene = crate::scene::sha256_hex(&serde_json::to_vec(scene).expect("scene serialises"));
-    format!("{scene}:{}", crate::SOURCE_TREE)
-}
-
-impl Store {
-    /// What `name` holds, if it was saved under `key` by this tamp version; anything
-    /// else is left to be recomputed.
-    fn load<T: DeserializeOwned>(&self, name: &str, key: &str) -> Option<T> {
-        if crate::SOURCE_TREE.ends_with("-dirty") {
-            return None;
-        }
-        let path = self.dir.join(name);
-        let saved: Checkpoint<T> = checkpoint::read_checkpoint(&path).ok()?;
-        saved.into_state(key, &path).ok()
-    }
-
-    fn save<T: Serialize>(&self, name: &str, key: &str, state: &T) -> Result<()> {
-        checkpoint::write_checkpoint(&self.dir.join(name), &Checkpoint::new(key, state))
-    }
-}
-
 /// Press one specimen under several models, one per core at a time, reusing
 /// and checkpointing work in `store`.
 fn press_all(
+    ctx: &CaseContext,
     scene: &DieCompactionFile,
     specimen: &Specimen,
     models: &[Model],
@@ -189,7 +159,7 @@ fn press_all(
 ) -> Result<Vec<Done>> {
     let press_one = |model: &Model| -> Result<Done> {
         let s = with_model(scene, model)?;
-        let key = sha_of(&s);
+        let key = key_of(&s);
         let done_file = format!("{}.done.json", model.label);
         if let Some(done) = store.load::<Done>(&done_file, &key) {
             eprintln!("nial_die_compaction: pressing '{}' reused", model.label);
@@ -225,7 +195,7 @@ fn press_all(
         );
         Ok(done)
     };
-    parallel::map(models, crate::verify::default_jobs(), press_one)
+    ctx.map(models, press_one)
         .into_iter()
         .zip(models)
         .map(|(r, m)| r.map_err(|e| TampError::Other(format!("pressing '{}': {e}", m.label))))
@@ -420,26 +390,17 @@ pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let scene = ctx.die_compaction()?;
     let dc = &scene.die_compaction;
     // Not quiet: this case runs for most of an hour, and its log says how far it got.
-    let store = Store {
-        dir: ctx.report_dir.join(format!("{}_runs", ctx.spec.name)),
-    };
-    crate::output::create_dir(&store.dir)?;
-    let key = sha_of(&scene);
-    let specimen = match store.load::<Specimen>("specimen.json", &key) {
-        Some(specimen) => specimen,
-        None => {
-            let specimen = die_compaction::prepare(&scene, false)?;
-            store.save("specimen.json", &key, &specimen)?;
-            specimen
-        }
-    };
+    let store = ctx.store()?;
+    let specimen = store.cached("specimen.json", &key_of(&scene), || {
+        die_compaction::prepare(&scene, false)
+    })?;
     eprintln!(
         "nial_die_compaction: specimen H0 = {:e} m, density {:.4}, RVE {:.4}",
         specimen.h0, specimen.density_specimen, specimen.density_rve
     );
     let models = full_models();
     let (pressings, walls): (Vec<Pressing>, Vec<f64>) =
-        press_all(&scene, &specimen, &models, &store)?
+        press_all(ctx, &scene, &specimen, &models, &store)?
             .into_iter()
             .map(|d| (d.pressing, d.wall_s))
             .unzip();
