@@ -24,6 +24,7 @@ mod liggghts_three_sphere_trajectory;
 mod liggghts_two_sphere;
 mod liggghts_two_sphere_oblique;
 mod linear_restitution;
+mod mdr_curve;
 mod momentum_conservation;
 mod nial_die_compaction;
 pub mod probe;

@@ -442,6 +442,10 @@ pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {
         ));
         height.push(Series::line(label, mpa(&p.records, |r| r.height_reduction)));
     }
+    // LAMMPS's mdr law on the same specimen: a comparison of models (mdr_curve).
+    let mdr = super::mdr_curve::load(&crate::verify::reference_data_beside(&ctx.dir))?;
+    density.push(super::mdr_curve::density(&mdr));
+    height.push(super::mdr_curve::height_reduction(&mdr));
     density.push(poured_point());
     write_svg(
         &ctx.report_dir.join(format!("{name}_density.svg")),
