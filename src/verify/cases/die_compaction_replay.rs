@@ -1,8 +1,12 @@
-//! The die compaction of `nial_die_compaction_small` pressed in a peer code along
-//! the stroke tamp pressed (`process::die_replay`): LIGGGHTS-PUBLIC 3.8.0
-//! (`liggghts_die_compaction_small`, `liggghts::die_compaction`) and LAMMPS 22 Jul
-//! 2025 (`lammps_die_compaction_small`, `lammps::die_compaction`). One comparison,
-//! two peers: each case's scene holds the law its peer can express.
+//! The NiAl die compaction pressed in a peer code along the stroke tamp pressed
+//! (`process::die_replay`): the 300-particle specimen of `nial_die_compaction_small`
+//! in LIGGGHTS-PUBLIC 3.8.0 (`liggghts_die_compaction_small`,
+//! `liggghts::die_compaction`) and LAMMPS 22 Jul 2025 (`lammps_die_compaction_small`,
+//! `lammps::die_compaction`), and the paper's 1751-particle specimen of
+//! `nial_die_compaction` in LIGGGHTS, frictionless and with μ = 0.05 between
+//! particles (`liggghts_die_compaction`, full tier, one pressing per entry of its
+//! `parameters.pressings`). One comparison, two peers: each case's scene holds the
+//! law its peer can express.
 //!
 //! For each seed recorded in `reference_data/<peer>/<case>/results.csv`, tamp
 //! fills and flattens the specimen (the one the export carried to LIGGGHTS: its
@@ -19,7 +23,10 @@
 //!   (force over the die's cross-section).
 //!
 //! Each quantity is tamp's value against the peer's, averaged over the seeds. The
-//! report gets both codes' curves (`<case>_curves.csv`).
+//! report gets both codes' curves (`<case>_curves.csv`). tamp's replays are
+//! independent, so they run one per core and are kept in the runner's store
+//! (`verify::store`): a full-tier run that is killed does not press again what it
+//! finished.
 //!
 //! The live cross-check runs the peer on the recorded deck (`seed<S>/in.tamp`,
 //! `particles.data`, `stroke.json`) rather than exporting it again, since the
@@ -32,7 +39,9 @@
 
 use crate::error::{Result, TampError};
 use crate::plot::{Panel, Series, write_svg};
+use crate::process::die_compaction_file::DieCompactionFile;
 use crate::process::die_replay::{self, ReplayRecord, Stroke};
+use crate::verify::store::{Store, key_of};
 use crate::verify::{CaseContext, Measured};
 use serde::Deserialize;
 use std::fmt::Write as _;
@@ -42,6 +51,10 @@ use std::path::Path;
 /// deck and `import-liggghts-dump --die-stroke`'s die.csv).
 #[derive(Debug, Deserialize)]
 struct Row {
+    /// The pressing's label, in a case that presses more than one (absent: the
+    /// case's one pressing).
+    #[serde(default)]
+    pressing: String,
     seed: u64,
     record: usize,
     time: f64,
@@ -106,22 +119,171 @@ pub fn lammps(ctx: &CaseContext) -> Result<Vec<Measured>> {
     compare(ctx, "lammps")
 }
 
-/// tamp's replay of each recorded stroke against `peer`'s.
+/// A pressing of a case that presses more than one law (`parameters.pressings`):
+/// the label its rows in results.csv, its decks (`<label>/seed<S>/`) and its
+/// quantities (`<quantity>_<label>`) carry, and its die-compaction file.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct PressingSpec {
+    label: String,
+    scene: String,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Parameters {
+    pressings: Vec<PressingSpec>,
+    /// Draw LAMMPS's mdr pressing of the same specimen in the plot (`mdr_curve`).
+    #[serde(default)]
+    mdr_curve: bool,
+}
+
+/// tamp's replay of each recorded stroke against `peer`'s, for each pressing of
+/// the case (one, the case's scene, unless its parameters list several).
 fn compare(ctx: &CaseContext, peer: &str) -> Result<Vec<Measured>> {
     let rows: Vec<Row> = ctx.peer_results(peer)?;
-    let base = ctx.die_compaction()?;
-    let scene_file = ctx.spec.scene.as_deref().unwrap_or_default();
-    let sha = crate::scene::read_input(&ctx.dir.join(scene_file))?.sha256;
+    let parameters = match ctx.spec.parameters {
+        None => Parameters {
+            pressings: vec![PressingSpec {
+                label: String::new(),
+                scene: ctx.spec.scene.clone().unwrap_or_default(),
+            }],
+            mdr_curve: false,
+        },
+        Some(_) => ctx.parameters::<Parameters>()?,
+    };
+    let pressings = parameters.pressings;
+    let recorded = ctx.reference_data_dir().join(peer).join(&ctx.spec.name);
+    let mut runs = Vec::new();
+    for pressing in &pressings {
+        let decks = match pressing.label.as_str() {
+            "" => recorded.clone(),
+            label => recorded.join(label),
+        };
+        let mine: Vec<&Row> = rows
+            .iter()
+            .filter(|r| r.pressing == pressing.label)
+            .collect();
+        if mine.is_empty() {
+            return Err(TampError::Other(format!(
+                "results.csv: no rows of pressing '{}'",
+                pressing.label
+            )));
+        }
+        runs.extend(recorded_runs(ctx, pressing, &mine, &decks)?);
+    }
+    // The replays are independent: one per core, each kept in the case's store.
+    let store = ctx.store()?;
+    let replays = ctx
+        .map(&runs, |run| replay(&store, run))
+        .into_iter()
+        .collect::<Result<Vec<_>>>()?;
+
+    let mut curves = String::from(
+        "code,pressing,seed,record,time,height,punch_pressure,floor_pressure,density_specimen,density_rve\n",
+    );
+    for (run, tamp) in runs.iter().zip(&replays) {
+        for (code, records) in [("tamp", tamp), (peer, &run.theirs)] {
+            for (k, r) in records.iter().enumerate() {
+                let _ = writeln!(
+                    curves,
+                    "{code},{},{},{k},{:e},{:e},{:e},{:e},{:e},{:e}",
+                    run.label,
+                    run.seed,
+                    r.time,
+                    r.height,
+                    r.punch_pressure,
+                    r.floor_pressure,
+                    r.density_specimen,
+                    r.density_rve
+                );
+            }
+        }
+    }
+    let mut measured = Vec::new();
+    let mut panels_series = Vec::new();
+    for pressing in &pressings {
+        let label = pressing.label.as_str();
+        let of_pressing: Vec<(&RecordedRun, &Vec<ReplayRecord>)> = runs
+            .iter()
+            .zip(&replays)
+            .filter(|(run, _)| run.label == label)
+            .collect();
+        let tag = |code: &str| match label {
+            "" => code.to_string(),
+            label => format!("{code}, {label}"),
+        };
+        let (first, tamp) = of_pressing[0];
+        panels_series.push((tag("tamp"), tamp.clone()));
+        panels_series.push((tag(peer), first.theirs.clone()));
+        // Each quantity is the mean over the seeds of each code's value.
+        let n = of_pressing.len() as f64;
+        let mut sums: Vec<(String, f64, f64)> = Vec::new();
+        for (run, tamp) in &of_pressing {
+            let (t, l) = (
+                quantities(tamp, run.stroke.h0),
+                quantities(&run.theirs, run.stroke.h0),
+            );
+            if sums.is_empty() {
+                sums = t.iter().map(|(name, _)| (name.clone(), 0.0, 0.0)).collect();
+            }
+            for (k, ((_, a), (_, b))) in t.iter().zip(&l).enumerate() {
+                sums[k].1 += a;
+                sums[k].2 += b;
+            }
+        }
+        for (name, a, b) in sums {
+            let name = match label {
+                "" => name,
+                label => format!("{name}_{label}"),
+            };
+            measured.push(Measured::new(&name, a / n, b / n));
+        }
+    }
+    crate::output::create_dir(&ctx.report_dir)?;
+    crate::output::write_atomic(
+        &ctx.report_dir.join(format!("{}_curves.csv", ctx.spec.name)),
+        curves.as_bytes(),
+    )?;
+    let mdr = match parameters.mdr_curve {
+        true => {
+            let recorded = crate::verify::reference_data_beside(&ctx.dir);
+            Some(super::mdr_curve::density(&super::mdr_curve::load(
+                &recorded,
+            )?))
+        }
+        false => None,
+    };
+    write_plot(ctx, &panels_series, mdr)?;
+    Ok(measured)
+}
+
+/// One seed of one pressing as the peer recorded it: what tamp replays.
+struct RecordedRun {
+    label: String,
+    seed: u64,
+    /// The die-compaction file with the seed set.
+    scene: DieCompactionFile,
+    stroke: Stroke,
+    theirs: Vec<ReplayRecord>,
+}
+
+/// The recorded runs of one pressing, seeds in the order of results.csv, each
+/// checked to be complete and its deck current.
+fn recorded_runs(
+    ctx: &CaseContext,
+    pressing: &PressingSpec,
+    rows: &[&Row],
+    decks: &Path,
+) -> Result<Vec<RecordedRun>> {
+    let scene_path = ctx.dir.join(&pressing.scene);
+    let base = ctx.die_compaction_at(&scene_path)?;
+    let sha = crate::scene::read_input(&scene_path)?.sha256;
     let mut seeds: Vec<u64> = rows.iter().map(|r| r.seed).collect();
     seeds.dedup();
-    let mut curves = String::from(
-        "code,seed,record,time,height,punch_pressure,floor_pressure,density_specimen,density_rve\n",
-    );
-    let mut tamp_sum: Vec<(String, f64)> = Vec::new();
-    let mut peer_sum: Vec<f64> = Vec::new();
-    let mut first_seed: Vec<(String, Vec<ReplayRecord>)> = Vec::new();
-    for &seed in &seeds {
-        let mut mine: Vec<&Row> = rows.iter().filter(|r| r.seed == seed).collect();
+    let mut out = Vec::new();
+    for seed in seeds {
+        let mut mine: Vec<&Row> = rows.iter().copied().filter(|r| r.seed == seed).collect();
         mine.sort_by_key(|r| r.record);
         if mine.len() < 3 || mine.iter().enumerate().any(|(k, r)| r.record != k) {
             return Err(TampError::Other(format!(
@@ -129,24 +291,9 @@ fn compare(ctx: &CaseContext, peer: &str) -> Result<Vec<Measured>> {
             )));
         }
         let stroke = stroke_of(&mine);
-        let deck = ctx
-            .reference_data_dir()
-            .join(peer)
-            .join(&ctx.spec.name)
-            .join(format!("seed{seed}"));
-        recorded_deck_is_current(&deck, &sha, &stroke)?;
+        recorded_deck_is_current(&decks.join(format!("seed{seed}")), &sha, &stroke)?;
         let mut scene = base.clone();
         scene.seed = seed;
-        let specimen = super::die_specimen::prepare(&scene)?;
-        let h0 = stroke.h0;
-        if (specimen.h0 - h0).abs() > 1e-12 * h0 {
-            return Err(TampError::Other(format!(
-                "results.csv: seed {seed} was recorded for a specimen of H0 = {h0:e} m; tamp now fills one of {:e} m: re-record (regenerate.sh)",
-                specimen.h0
-            )));
-        }
-        let solid = die_replay::solid_sphere_scene(&scene);
-        let tamp = die_replay::replay(&solid, &specimen, &stroke)?;
         let theirs: Vec<ReplayRecord> = mine
             .iter()
             .map(|r| ReplayRecord {
@@ -158,50 +305,47 @@ fn compare(ctx: &CaseContext, peer: &str) -> Result<Vec<Measured>> {
                 density_rve: r.density_rve,
             })
             .collect();
-        for (code, records) in [("tamp", &tamp), (peer, &theirs)] {
-            for (k, r) in records.iter().enumerate() {
-                let _ = writeln!(
-                    curves,
-                    "{code},{seed},{k},{:e},{:e},{:e},{:e},{:e},{:e}",
-                    r.time,
-                    r.height,
-                    r.punch_pressure,
-                    r.floor_pressure,
-                    r.density_specimen,
-                    r.density_rve
-                );
-            }
-        }
-        let (t, l) = (quantities(&tamp, h0), quantities(&theirs, h0));
-        if first_seed.is_empty() {
-            first_seed = vec![("tamp".to_string(), tamp), (peer.to_string(), theirs)];
-        }
-        if tamp_sum.is_empty() {
-            tamp_sum = t.iter().map(|(n, _)| (n.clone(), 0.0)).collect();
-            peer_sum = vec![0.0; l.len()];
-        }
-        for (k, ((_, a), (_, b))) in t.iter().zip(&l).enumerate() {
-            tamp_sum[k].1 += a;
-            peer_sum[k] += b;
-        }
+        out.push(RecordedRun {
+            label: pressing.label.clone(),
+            seed,
+            scene,
+            stroke,
+            theirs,
+        });
     }
-    crate::output::create_dir(&ctx.report_dir)?;
-    crate::output::write_atomic(
-        &ctx.report_dir.join(format!("{}_curves.csv", ctx.spec.name)),
-        curves.as_bytes(),
-    )?;
-    write_plot(ctx, &first_seed)?;
-    let n = seeds.len() as f64;
-    Ok(tamp_sum
-        .iter()
-        .zip(&peer_sum)
-        .map(|((name, a), b)| Measured::new(name, a / n, b / n))
-        .collect())
+    Ok(out)
+}
+
+/// tamp's replay of a recorded run: fill and flatten the specimen (the one the
+/// export carried to the peer: its H₀ must equal the recorded one, else the
+/// recording is stale) and move the punch through the recorded heights.
+fn replay(store: &Store, run: &RecordedRun) -> Result<Vec<ReplayRecord>> {
+    let name = match run.label.as_str() {
+        "" => format!("seed{}.replay.json", run.seed),
+        label => format!("{label}_seed{}.replay.json", run.seed),
+    };
+    store.cached(&name, &key_of(&(&run.scene, &run.stroke)), || {
+        let specimen = super::die_specimen::prepare(&run.scene)?;
+        let recorded = run.stroke.h0;
+        if (specimen.h0 - recorded).abs() > 1e-12 * recorded {
+            return Err(TampError::Other(format!(
+                "results.csv: seed {} was recorded for a specimen of H0 = {recorded:e} m; tamp now fills one of {:e} m: re-record (regenerate.sh)",
+                run.seed, specimen.h0
+            )));
+        }
+        let solid = die_replay::solid_sphere_scene(&run.scene);
+        die_replay::replay(&solid, &specimen, &run.stroke)
+    })
 }
 
 /// `<case>_density_pressure.svg`: the specimen and RVE densities against the punch
-/// pressure, each code's replay of the first seed.
-fn write_plot(ctx: &CaseContext, replays: &[(String, Vec<ReplayRecord>)]) -> Result<()> {
+/// pressure, each code's replay of the first seed of each pressing, and `also` in
+/// the specimen panel.
+fn write_plot(
+    ctx: &CaseContext,
+    replays: &[(String, Vec<ReplayRecord>)],
+    also: Option<Series>,
+) -> Result<()> {
     let series = |column: fn(&ReplayRecord) -> f64| -> Vec<Series> {
         replays
             .iter()
@@ -211,7 +355,8 @@ fn write_plot(ctx: &CaseContext, replays: &[(String, Vec<ReplayRecord>)]) -> Res
             })
             .collect()
     };
-    let (specimen, rve) = (series(|r| r.density_specimen), series(|r| r.density_rve));
+    let (mut specimen, rve) = (series(|r| r.density_specimen), series(|r| r.density_rve));
+    specimen.extend(also);
     let panel = |title, series| Panel {
         title,
         x_label: "punch pressure (MPa)",
@@ -290,19 +435,23 @@ fn recorded_deck_is_current(dir: &Path, sha: &str, stroke: &Stroke) -> Result<()
 mod tests {
     use super::*;
 
-    /// Cheap staleness check of both recorded decks (no fill, no replay): what the
-    /// case checks before it presses, so a scene edit fails `cargo test` too.
+    fn recorded_rows(recorded: &Path) -> Vec<Row> {
+        csv::Reader::from_path(recorded.join("results.csv"))
+            .unwrap()
+            .deserialize()
+            .collect::<std::result::Result<_, _>>()
+            .unwrap()
+    }
+
+    /// Cheap staleness check of the small cases' recorded decks (no fill, no replay):
+    /// what the case checks before it presses, so a scene edit fails `cargo test` too.
     #[test]
     fn the_recorded_decks_are_the_scenes_and_strokes_of_results_csv() {
         let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
         for peer in ["liggghts", "lammps"] {
             let case = format!("{peer}_die_compaction_small");
             let recorded = root.join("reference_data").join(peer).join(&case);
-            let rows: Vec<Row> = csv::Reader::from_path(recorded.join("results.csv"))
-                .unwrap()
-                .deserialize()
-                .collect::<std::result::Result<_, _>>()
-                .unwrap();
+            let rows = recorded_rows(&recorded);
             let seed1: Vec<&Row> = rows.iter().filter(|r| r.seed == 1).collect();
             let scene = root.join("verification").join(format!("{case}.scene.json"));
             let sha = crate::scene::read_input(&scene).unwrap().sha256;
@@ -315,5 +464,75 @@ mod tests {
             assert!(recorded_deck_is_current(&recorded.join("seed1"), &sha[..1], &stroke).is_err());
             assert!(recorded_deck_is_current(&recorded.join("seed1"), "0", &stroke).is_err());
         }
+    }
+
+    /// The same for the full case's six decks (two pressings, seeds 1–3), each
+    /// against the scene its pressing names in the case's parameters: the full tier
+    /// runs rarely, so a scene edit that makes them stale shows here first.
+    #[test]
+    fn the_full_case_decks_are_current() {
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+        let case = "liggghts_die_compaction";
+        let spec: serde_json::Value = serde_json::from_str(
+            &std::fs::read_to_string(root.join("verification").join(format!("{case}.json")))
+                .unwrap(),
+        )
+        .unwrap();
+        let parameters: Parameters = serde_json::from_value(spec["parameters"].clone()).unwrap();
+        let recorded = root.join("reference_data/liggghts").join(case);
+        let rows = recorded_rows(&recorded);
+        let mut decks = 0;
+        for pressing in &parameters.pressings {
+            let scene = root.join("verification").join(&pressing.scene);
+            let sha = crate::scene::read_input(&scene).unwrap().sha256;
+            for seed in 1..=3 {
+                let mut mine: Vec<&Row> = rows
+                    .iter()
+                    .filter(|r| r.pressing == pressing.label && r.seed == seed)
+                    .collect();
+                mine.sort_by_key(|r| r.record);
+                let dir = recorded.join(&pressing.label).join(format!("seed{seed}"));
+                recorded_deck_is_current(&dir, &sha, &stroke_of(&mine)).unwrap();
+                decks += 1;
+            }
+        }
+        assert_eq!(decks, 6);
+    }
+
+    /// The plot draws the codes' curves and, when asked, the mdr pressing beside them
+    /// in the specimen panel (what the full case's parameters ask for).
+    #[test]
+    fn the_plot_draws_the_mdr_curve_when_asked() {
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+        let spec: crate::verify::CaseSpec = serde_json::from_str(
+            r#"{"name": "plot_test", "tier": "quick", "description": "", "quantities": []}"#,
+        )
+        .unwrap();
+        let report = std::env::temp_dir().join(format!("tamp-plot-test-{}", std::process::id()));
+        crate::output::create_dir(&report).unwrap();
+        let ctx = CaseContext {
+            spec: &spec,
+            dir: root.join("verification"),
+            report_dir: report.clone(),
+            reference_data: None,
+            variant: Default::default(),
+        };
+        let record = |p: f64, d: f64| ReplayRecord {
+            time: 0.0,
+            height: 1.0,
+            punch_pressure: p,
+            floor_pressure: p,
+            density_specimen: d,
+            density_rve: d,
+        };
+        let tamp = vec![record(0.0, 0.62), record(50e6, 0.66)];
+        let mdr = super::super::mdr_curve::density(
+            &super::super::mdr_curve::load(&root.join("reference_data")).unwrap(),
+        );
+        let name = mdr.name.clone();
+        write_plot(&ctx, &[("tamp".into(), tamp)], Some(mdr)).unwrap();
+        let svg = std::fs::read_to_string(report.join("plot_test_density_pressure.svg")).unwrap();
+        std::fs::remove_dir_all(&report).unwrap();
+        assert!(svg.contains("tamp") && svg.contains(&name), "{svg}");
     }
 }

@@ -87,6 +87,7 @@ pub const CASES: &[(&str, CaseFn)] = &[
         "liggghts_die_compaction_small",
         die_compaction_replay::liggghts,
     ),
+    ("liggghts_die_compaction", die_compaction_replay::liggghts),
     (
         "liggghts_three_sphere_trajectory",
         liggghts_three_sphere_trajectory::run,
