@@ -27,22 +27,11 @@ for pressing in ${PRESSINGS:-mu0 mu0.05}; do
     mu0.05) scene=$verification/liggghts_die_compaction_mu0.05.scene.json ;;
     *) echo "unknown pressing $pressing" >&2; exit 2 ;;
   esac
-  for seed in ${SEEDS:-1 2 3}; do
-    d=$out/$pressing/seed$seed
-    rec=$here/$pressing/seed$seed
-    if [ "$out" != "$here" ] && [ -f "$rec/particles.data" ]; then
-      rm -rf "$d" && mkdir -p "$d"
-      cp -r "$rec/in.tamp" "$rec/particles.data" "$rec/stroke.json" "$rec/meshes" "$d/"
-    else
-      rm -rf "$d"
-      "$tamp" export-liggghts "$scene" --out "$d" --seed "$seed"
-    fi
-    # Screen output on: LIGGGHTS 3.8 crashes reading an STL mesh without a screen.
-    (cd "$d" && liggghts -in in.tamp -log log.liggghts > screen.txt)
-    "$tamp" import-liggghts-dump "$d/dump.liggghts" --out "$d/measured" --die-stroke "$d/stroke.json" > /dev/null
-    python3 "$here/../../die_replay_rows.py" "$d" "$seed" log.liggghts | sed "s/^/$pressing,/" >> "$rows"
-    rm -f "$d/dump.liggghts" "$d/measured/trajectory.csv" "$d/screen.txt"
-  done
+  # Each pressing is recorded as liggghts_die_compaction_small records its one.
+  SCENE=$scene RECORDED=$here/$pressing SEEDS="${SEEDS:-1 2 3}" TAMP=$tamp \
+    "$here/../liggghts_die_compaction_small/regenerate.sh" "$out/$pressing" > /dev/null
+  tail -n +2 "$out/$pressing/results.csv" | sed "s/^/$pressing,/" >> "$rows"
+  rm "$out/$pressing/results.csv"
 done
 mv "$rows" "$out/results.csv"
 cat "$out/results.csv"

@@ -19,12 +19,14 @@ here=$(cd "$(dirname "$0")" && pwd)
 out=$(mkdir -p "${1:-$here}" && cd "${1:-$here}" && pwd)
 tamp=${TAMP:-tamp}
 scene=${SCENE:-$here/../../../verification/liggghts_die_compaction_small.scene.json}
+# Where the recorded decks are (liggghts_die_compaction passes one per pressing).
+recorded=${RECORDED:-$here}
 rows=$out/.results.csv.tmp
 echo "seed,record,time,height,h0,dt,steps_per_record,tamp_pressure,punch_pressure,floor_pressure,density_specimen,density_rve" > "$rows"
 for seed in ${SEEDS:-1}; do
   d=$out/seed$seed
-  rec=$here/seed$seed
-  if [ "$out" != "$here" ] && [ -f "$rec/particles.data" ]; then
+  rec=$recorded/seed$seed
+  if [ "$out" != "$recorded" ] && [ -f "$rec/particles.data" ]; then
     # Live: the recorded deck, not a fresh export (which would press in tamp again).
     rm -rf "$d" && mkdir -p "$d"
     cp -r "$rec/in.tamp" "$rec/particles.data" "$rec/stroke.json" "$rec/meshes" "$d/"
