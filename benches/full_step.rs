@@ -112,7 +112,7 @@ fn small_bed() -> Simulation {
 /// The small bed copied k × k times, numbered at random, and renumbered by cell at
 /// build (`broad_phase.sort`) when `sorted`.
 fn tiled_bed(small: &Simulation, k: usize, sorted: bool) -> Simulation {
-    let p = &small.particles;
+    let p = &small.state.particles;
     let n = p.len();
     let position = |c: usize| {
         let (copy, i) = (c / n, c % n);
@@ -136,7 +136,7 @@ fn tiled_bed(small: &Simulation, k: usize, sorted: bool) -> Simulation {
         .collect();
     let mut v = scene(k, Value::Array(particles));
     // The small bed's step, not a new estimate: every N runs the same dt.
-    v["time_step"] = json!({"fixed": small.dt});
+    v["time_step"] = json!({"fixed": small.dt()});
     // Sorted: the scene asks tamp to renumber the shuffled particles by cell.
     v["broad_phase"]["sort"] = json!(sorted);
     let mut sim = build(&v);
@@ -148,25 +148,32 @@ fn tiled_bed(small: &Simulation, k: usize, sorted: bool) -> Simulation {
 /// contact for one.
 fn coordination(sim: &Simulation) -> (f64, f64) {
     let pairs = sim
+        .state
         .neighbors
         .pairs
         .iter()
         .filter(|&&(i, j)| sim.overlap(i as usize, j as usize) > 0.0)
         .count();
     let walls = sim.contact_count() - pairs;
-    let n = sim.particles.len() as f64;
+    let n = sim.state.particles.len() as f64;
     (2.0 * pairs as f64 / n, walls as f64 / n)
 }
 
 /// Prints the checks of the module doc; panics if 100 trial steps fail.
 fn report(name: &str, sim: &Simulation, prepared_in: Duration) {
-    let n = sim.particles.len();
+    let n = sim.state.particles.len();
     let (pair_z, wall_z) = coordination(sim);
-    let speed: Vec<f64> = sim.particles.velocity.iter().map(|v| v.norm()).collect();
+    let speed: Vec<f64> = sim
+        .state
+        .particles
+        .velocity
+        .iter()
+        .map(|v| v.norm())
+        .collect();
     let max_speed = speed.iter().cloned().fold(0.0, f64::max);
     let mean_speed = speed.iter().sum::<f64>() / n as f64;
     let mut trial = sim.clone();
-    let builds = trial.neighbors.builds;
+    let builds = trial.state.neighbors.builds;
     trial
         .run_with(100, |_| {})
         .expect("100 trial steps are stable");
@@ -175,10 +182,10 @@ fn report(name: &str, sim: &Simulation, prepared_in: Duration) {
         "{name}/{n}: prepared in {prepared_in:.1?}; {} pairs in the list, contacts per sphere {pair_z:.3} \
          between spheres + {wall_z:.3} with the floor; speed max {:.2} mm/s, mean {:.3} mm/s \
          (√(g·2R) = 99 mm/s); over 100 trial steps: {} list rebuilds, contacts per sphere {after_z:.3}",
-        sim.neighbors.pairs.len(),
+        sim.state.neighbors.pairs.len(),
         1e3 * max_speed,
         1e3 * mean_speed,
-        trial.neighbors.builds - builds,
+        trial.state.neighbors.builds - builds,
     );
 }
 
@@ -187,7 +194,7 @@ fn full_step(c: &mut Criterion<ThreadCpuTime>) {
     let small = small_bed();
     println!(
         "small bed: {BASE} spheres settled for {SETTLE_STEPS} steps of {:.3e} s in {:.1?}",
-        small.dt,
+        small.dt(),
         start.elapsed()
     );
     let mut group = c.benchmark_group("full_step");
@@ -203,7 +210,7 @@ fn full_step(c: &mut Criterion<ThreadCpuTime>) {
             let start = Instant::now();
             let sim = tiled_bed(&small, k, sorted);
             report(name, &sim, start.elapsed());
-            let n = sim.particles.len();
+            let n = sim.state.particles.len();
             group.throughput(Throughput::Elements(n as u64));
             group.bench_function(BenchmarkId::new(name, n), |b| {
                 b.iter_custom(|steps| {

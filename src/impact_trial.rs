@@ -119,7 +119,7 @@ impl Trial {
     /// velocity of its contact (the scene's law must be `thornton`).
     pub fn at_yield_ratio(mut self, v_over_vy: f64) -> Result<Trial> {
         let sim = self.built()?;
-        let NormalLaw::Thornton(law) = sim.law.normal else {
+        let NormalLaw::Thornton(law) = sim.model.law.normal else {
             return Err(TampError::Other(format!(
                 "{}: not a thornton law",
                 self.name
@@ -135,7 +135,7 @@ impl Trial {
     /// Storåkers loading leaves Hertz's curve (the scene's law must be `storakers`).
     pub fn at_hertz_crossing_ratio(mut self, ratio: f64) -> Result<Trial> {
         let sim = self.built()?;
-        let NormalLaw::Storakers(law) = sim.law.normal else {
+        let NormalLaw::Storakers(law) = sim.model.law.normal else {
             return Err(TampError::Other(format!(
                 "{}: not a storakers law",
                 self.name
@@ -151,24 +151,26 @@ impl Trial {
 
     /// Effective mass and radius of the impact, and its pair's properties.
     fn effective(&self, sim: &crate::simulation::Simulation) -> (f64, f64, PairProperties) {
-        let p = &sim.particles;
+        let p = &sim.state.particles;
         match self.partner {
             Partner::Sphere(_) => (
                 effective_mass(p.mass[0], p.mass[1]),
                 effective_radius(p.radius[0], p.radius[1]),
-                *sim.pair_table.get(p.material[0], p.material[1]),
+                *sim.model.pair_table.get(p.material[0], p.material[1]),
             ),
             Partner::Wall => (
                 p.mass[0],
                 p.radius[0],
-                *sim.pair_table.get(p.material[0], sim.walls[0].material),
+                *sim.model
+                    .pair_table
+                    .get(p.material[0], sim.model.walls[0].material),
             ),
         }
     }
 
     fn closed_form(&self, sim: &crate::simulation::Simulation) -> Result<Impact> {
         let (m, r, pair) = self.effective(sim);
-        closed_form(&sim.law, m, r, &pair, self.speed).ok_or_else(|| {
+        closed_form(&sim.model.law, m, r, &pair, self.speed).ok_or_else(|| {
             TampError::Other(format!("{}: the law has no impact closed form", self.name))
         })
     }
@@ -183,7 +185,7 @@ impl Trial {
                 .scene(time_step.clone(), self.radius * 1e-3)
                 .to_string(),
         )?;
-        let dt = scene::build(&nominal)?.sim.dt;
+        let dt = scene::build(&nominal)?.sim.dt();
         let s = scene::parse(
             &self
                 .scene(time_step, gap_steps * self.speed * dt)
@@ -191,7 +193,7 @@ impl Trial {
         )?;
         let mut sim = scene::build(&s)?.sim;
         let exact = self.closed_form(&sim)?;
-        let max_steps = (100.0 * exact.duration / sim.dt) as u64 + gap_steps as u64 + 1000;
+        let max_steps = (100.0 * exact.duration / sim.dt()) as u64 + gap_steps as u64 + 1000;
         let c = match self.partner {
             Partner::Sphere(_) => binary_collision(&mut sim, 0, 1, max_steps)?,
             Partner::Wall => plane_collision(&mut sim, 0, Vec3::zeros(), Vec3::z(), max_steps)?,
@@ -205,7 +207,7 @@ impl Trial {
                 restitution: c.restitution,
             },
             exact,
-            dt: sim.dt,
+            dt: sim.dt(),
         })
     }
 }

@@ -9,9 +9,9 @@ use serde_json::{Value, json};
 use std::path::{Path, PathBuf};
 use std::process::Stdio;
 use std::time::{Duration, Instant};
-use tamp::checkpoint::SimState;
 use tamp::particles::Vec3;
 use tamp::simulation::Simulation;
+use tamp::simulation::State;
 
 /// A die with a lid coming down: 300 spinning frictional spheres (Mindlin–Deresiewicz,
 /// so contacts keep tangential history, with each other and with the walls) fly about
@@ -70,6 +70,10 @@ fn bits(v: &[Vec3]) -> Vec<u64> {
 
 /// Two spheres on a floor with friction and a pouring source: every kind of state.
 fn poured_scene(extra_particle: bool) -> Simulation {
+    build(&poured_scene_value(extra_particle))
+}
+
+fn poured_scene_value(extra_particle: bool) -> Value {
     let mut particles = vec![
         json!({"position": [0, 0, 0.001], "radius": 0.001, "material": "glass"}),
         json!({"position": [0.0015, 0, 0.0028], "radius": 0.001, "material": "glass"}),
@@ -78,7 +82,7 @@ fn poured_scene(extra_particle: bool) -> Simulation {
         particles
             .push(json!({"position": [0.005, 0, 0.002], "radius": 0.001, "material": "glass"}));
     }
-    build(&json!({
+    json!({
         "name": "checkpoint round trip",
         "materials": [{"name": "glass", "density": 2500, "youngs_modulus": 6e7, "poisson_ratio": 0.25}],
         "contact": {
@@ -98,22 +102,29 @@ fn poured_scene(extra_particle: bool) -> Simulation {
         "rotation": {},
         "time_step": {"alpha": 0.2, "characteristic_velocity": 1.0},
         "run": {"steps": 1}
-    }))
+    })
 }
 
 /// The bits of every public double of a simulation's state, in a fixed order.
 fn public_bits(sim: &Simulation) -> Vec<u64> {
-    let p = &sim.particles;
+    let p = &sim.state.particles;
     let mut out = bits(&p.position);
-    for v in [&p.velocity, &p.omega, &p.force, &p.torque, &sim.wall_force] {
+    for v in [
+        &p.velocity,
+        &p.omega,
+        &p.force,
+        &p.torque,
+        &sim.state.wall_force,
+    ] {
         out.extend(bits(v));
     }
     let scalars = p.radius.iter().chain(&p.mass).chain(&p.inertia);
-    let scalars = scalars.chain(&sim.target_radius).chain([
-        &sim.dt,
-        &sim.time,
-        &sim.external_work,
-        &sim.max_overlap_ratio,
+    let dt = sim.dt();
+    let scalars = scalars.chain(&sim.state.target_radius).chain([
+        &dt,
+        &sim.state.time,
+        &sim.state.energy.external_work,
+        &sim.state.max_overlap_ratio,
     ]);
     out.extend(scalars.map(|x| x.to_bits()));
     out
@@ -123,37 +134,68 @@ fn public_bits(sim: &Simulation) -> Vec<u64> {
 fn captured_state_round_trips_bit_for_bit() {
     let mut sim = poured_scene(false);
     steps(&mut sim, 500);
-    assert!(sim.particles.len() > 2, "the source has poured");
+    assert!(sim.state.particles.len() > 2, "the source has poured");
     // Doubles that a careless text format loses.
-    sim.particles.position[0].y = -0.0;
-    sim.particles.velocity[0].x = 0.1 + 0.2;
-    sim.particles.omega[1] = Vec3::new(f64::from_bits(1), f64::MIN_POSITIVE / 3.0, -1e-310);
-    sim.external_work = -0.0;
-    let state = SimState::capture(&sim);
+    sim.state.particles.position[0].y = -0.0;
+    sim.state.particles.velocity[0].x = 0.1 + 0.2;
+    sim.state.particles.omega[1] = Vec3::new(f64::from_bits(1), f64::MIN_POSITIVE / 3.0, -1e-310);
+    sim.state.energy.external_work = -0.0;
+    let state = sim.state.clone();
     let json = serde_json::to_string(&state).unwrap();
-    let back: SimState = serde_json::from_str(&json).unwrap();
+    let back: State = serde_json::from_str(&json).unwrap();
     assert_eq!(serde_json::to_string(&back).unwrap(), json);
 
     // Restored into a fresh build, every double is the captured one: the public ones
     // compared bit by bit, the rest (contact histories, sources, energy book) by the
     // text of a second capture.
     let mut fresh = poured_scene(false);
-    back.restore(&mut fresh).unwrap();
+    fresh.resume(back).unwrap();
     assert_eq!(public_bits(&fresh), public_bits(&sim));
-    assert_eq!(
-        serde_json::to_string(&SimState::capture(&fresh)).unwrap(),
-        json
-    );
+    assert_eq!(serde_json::to_string(&fresh.state).unwrap(), json);
 }
 
 #[test]
 fn restore_refuses_a_state_of_another_particle_count() {
-    let state = SimState::capture(&poured_scene(false));
-    let err = state.restore(&mut poured_scene(true)).unwrap_err();
+    let state = poured_scene(false).state;
+    let err = poured_scene(true).resume(state).unwrap_err();
     assert_eq!(err.exit_code(), 2);
     assert!(
         err.to_string()
             .starts_with("checkpoint.particles: holds 2 particles, but the scene builds 3"),
+        "{err}"
+    );
+}
+
+/// `poured_scene` without friction: its contacts keep nothing.
+fn frictionless_poured_scene() -> Simulation {
+    let mut scene = poured_scene_value(false);
+    scene["contact"]
+        .as_object_mut()
+        .unwrap()
+        .remove("tangential");
+    build(&scene)
+}
+
+#[test]
+fn resume_refuses_the_contact_states_of_other_laws() {
+    let mut sim = poured_scene(false);
+    steps(&mut sim, 200);
+    // Typed in memory: the states of Mindlin-Deresiewicz contacts into a frictionless run.
+    let err = frictionless_poured_scene()
+        .resume(sim.state.clone())
+        .unwrap_err();
+    assert_eq!(err.exit_code(), 2);
+    assert!(
+        err.to_string()
+            .starts_with("checkpoint.contacts: holds the states of other contact laws"),
+        "{err}"
+    );
+    // Read from JSON: they do not parse as the frictionless laws' (empty) states.
+    let read: State = serde_json::from_str(&serde_json::to_string(&sim.state).unwrap()).unwrap();
+    let err = frictionless_poured_scene().resume(read).unwrap_err();
+    assert_eq!(err.exit_code(), 2);
+    assert!(
+        err.to_string().starts_with("checkpoint.contacts: "),
         "{err}"
     );
 }
@@ -168,25 +210,24 @@ fn restored_simulation_steps_on_bit_for_bit() {
 
     let mut first = build(&scene);
     steps(&mut first, n);
-    assert!(first.sources[0].remaining > 0 && first.particles.len() > 300);
-    let json = serde_json::to_string(&SimState::capture(&first)).unwrap();
+    assert!(first.state.sources[0].remaining > 0 && first.state.particles.len() > 300);
+    let json = serde_json::to_string(&first.state).unwrap();
     drop(first);
     let mut resumed = build(&scene);
-    serde_json::from_str::<SimState>(&json)
-        .unwrap()
-        .restore(&mut resumed)
+    resumed
+        .resume(serde_json::from_str::<State>(&json).unwrap())
         .unwrap();
     steps(&mut resumed, m);
 
-    let (a, b) = (&whole.particles, &resumed.particles);
+    let (a, b) = (&whole.state.particles, &resumed.state.particles);
     assert_eq!(a.len(), 330, "the source has poured all");
     assert_eq!(bits(&a.position), bits(&b.position));
     assert_eq!(bits(&a.velocity), bits(&b.velocity));
     assert_eq!(bits(&a.omega), bits(&b.omega));
-    assert_eq!(whole.neighbors.pairs, resumed.neighbors.pairs);
+    assert_eq!(whole.state.neighbors.pairs, resumed.state.neighbors.pairs);
     let history = |s: &Simulation| format!("{:?}", s.contact_states());
     assert!(
-        (0..whole.neighbors.pairs.len()).any(|k| whole
+        (0..whole.state.neighbors.pairs.len()).any(|k| whole
             .contact_states()
             .pair_tangential(k)
             .is_some_and(|t| t.norm() > 0.0)),
@@ -196,8 +237,8 @@ fn restored_simulation_steps_on_bit_for_bit() {
     // Everything else, wall histories and the energy book included: doubles print as
     // the shortest decimal that reads back to them, so equal text means equal bits.
     assert_eq!(
-        serde_json::to_string(&SimState::capture(&whole)).unwrap(),
-        serde_json::to_string(&SimState::capture(&resumed)).unwrap()
+        serde_json::to_string(&whole.state).unwrap(),
+        serde_json::to_string(&resumed.state).unwrap()
     );
 }
 

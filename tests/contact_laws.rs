@@ -294,7 +294,7 @@ fn newtons_third_law_holds_in_a_simulation() {
         let mut sim = scene::build(&s).unwrap().sim;
         for _ in 0..50 {
             sim.step().unwrap();
-            let p = &sim.particles;
+            let p = &sim.state.particles;
             assert!(p.force[0].norm() > 0.0, "{}: no contact", law.normal.name());
             assert!((p.force[0] + p.force[1]).norm() <= 1e-12 * p.force[0].norm());
         }

@@ -42,9 +42,9 @@ fn mean_curvature_gives_the_effective_radius_of_the_signed_mean_curvature_sphere
         [0.0, 0.0, 0.001001],
     );
     let sim = scene::build(&mean).unwrap().sim;
-    let wall = &sim.walls[0];
-    let inside = wall.effective_radius(&Vec3::new(0.0, 0.3, 0.0011), r);
-    let outside = wall.effective_radius(&Vec3::new(0.0, 0.0, -0.0009), r);
+    let (wall, pose) = (&sim.model.walls[0], &sim.state.walls[0]);
+    let inside = wall.effective_radius(pose, &Vec3::new(0.0, 0.3, 0.0011), r);
+    let outside = wall.effective_radius(pose, &Vec3::new(0.0, 0.0, -0.0009), r);
     assert!(
         (inside - 2.0 * r * r_c / (2.0 * r_c - r)).abs() < 1e-18,
         "{inside}"
@@ -56,7 +56,8 @@ fn mean_curvature_gives_the_effective_radius_of_the_signed_mean_curvature_sphere
     let flat = scene_with(&cylinder([0.0, 1.0, 0.0], ""), "", [0.0, 0.0, 0.001001]);
     let sim = scene::build(&flat).unwrap().sim;
     let at = Vec3::new(0.0, 0.0, 0.0011);
-    assert_eq!(sim.walls[0].effective_radius(&at, r), r);
+    let pose = &sim.state.walls[0];
+    assert_eq!(sim.model.walls[0].effective_radius(pose, &at, r), r);
 }
 
 #[test]

@@ -24,7 +24,7 @@ fn initial_contact_starts_with_an_unloaded_spring() {
         "time_step": {"alpha": 0.1, "characteristic_velocity": 0.1},
         "run": {"steps": 1}
     }));
-    let f = b.sim.particles.force[0];
+    let f = b.sim.state.particles.force[0];
     assert_eq!(
         f.x, 0.0,
         "tangential force at t = 0 must be zero, got {f:?}"
@@ -51,11 +51,11 @@ fn prescribed_partner_damps_like_a_wall() {
         }));
         for _ in 0..200_000 {
             b.sim.step().unwrap();
-            if b.sim.particles.velocity[0].z > 0.0 && b.sim.contact_count() == 0 {
+            if b.sim.state.particles.velocity[0].z > 0.0 && b.sim.contact_count() == 0 {
                 break;
             }
         }
-        b.sim.particles.velocity[0].z / 0.1
+        b.sim.state.particles.velocity[0].z / 0.1
     };
     let against_wall = restitution(
         serde_json::Value::Null,

@@ -461,7 +461,7 @@ fn liggghts_restitution_builds_the_critical_fraction_of_its_law() {
         s["contact"]["damping"] = json!({"kind": "liggghts_restitution", "restitution": e});
         let scene = tamp::scene::parse(&s.to_string()).unwrap();
         let built = tamp::scene::build(&scene).unwrap();
-        let law = built.sim.law;
+        let law = built.sim.model.law;
         let Some(Damping::LiggghtsRestitution(restitution)) = law.damping else {
             panic!("expected liggghts_restitution, got {:?}", law.damping);
         };
@@ -654,7 +654,7 @@ fn liggghts_history_takes_its_model_and_damping_from_the_scene() {
             }
         }
         let scene = tamp::scene::parse(&s.to_string()).unwrap();
-        let law = tamp::scene::build(&scene).unwrap().sim.law;
+        let law = tamp::scene::build(&scene).unwrap().sim.model.law;
         // γ_t uses the normal damping's ξ; no damping means e = 1, ξ = 0.
         let xi = match law.damping {
             Some(Damping::LiggghtsRestitution(r)) => r.with(&law.normal).unwrap().xi,

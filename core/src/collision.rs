@@ -31,14 +31,14 @@ pub fn binary_collision(
     j: usize,
     max_steps: u64,
 ) -> Result<Collision> {
-    let n = (sim.particles.position[i] - sim.particles.position[j]).normalize();
+    let n = (sim.state.particles.position[i] - sim.state.particles.position[j]).normalize();
     collision(
         sim,
         max_steps,
         &format!("particles {i} and {j}"),
         |s| s.overlap(i, j),
-        |s| -(s.particles.velocity[i] - s.particles.velocity[j]).dot(&n),
-        |s| s.particles.force[i].norm(),
+        |s| -(s.state.particles.velocity[i] - s.state.particles.velocity[j]).dot(&n),
+        |s| s.state.particles.force[i].norm(),
     )
 }
 
@@ -55,9 +55,9 @@ pub fn plane_collision(
         sim,
         max_steps,
         &format!("particle {i} and the plane"),
-        |s| s.particles.radius[i] - (s.particles.position[i] - point).dot(&normal),
-        |s| -s.particles.velocity[i].dot(&normal),
-        |s| s.particles.force[i].norm(),
+        |s| s.state.particles.radius[i] - (s.state.particles.position[i] - point).dot(&normal),
+        |s| -s.state.particles.velocity[i].dot(&normal),
+        |s| s.state.particles.force[i].norm(),
     )
 }
 
@@ -71,7 +71,7 @@ fn collision(
     force: impl Fn(&Simulation) -> f64,
 ) -> Result<Collision> {
     let v_before = approach(sim);
-    let dt = sim.dt;
+    let dt = sim.state.dt;
     let mut prev = overlap(sim);
     let (mut start, mut end) = (None, None);
     let mut samples: Vec<f64> = Vec::new();
@@ -80,14 +80,14 @@ fn collision(
         sim.step()?;
         let now = overlap(sim);
         if start.is_none() && prev <= 0.0 && now > 0.0 {
-            start = Some(sim.time - dt + dt * (-prev) / (now - prev));
+            start = Some(sim.state.time - dt + dt * (-prev) / (now - prev));
         }
         if start.is_some() {
             samples.push(now);
             forces.push(force(sim));
         }
         if start.is_some() && prev > 0.0 && now <= 0.0 {
-            end = Some(sim.time - dt + dt * prev / (prev - now));
+            end = Some(sim.state.time - dt + dt * prev / (prev - now));
             break;
         }
         prev = now;
@@ -157,14 +157,14 @@ pub fn compress_to_force(
 ) -> Result<(f64, Vec<CompressionSample>)> {
     let sample = |s: &Simulation| CompressionSample {
         overlap: s.overlap(i, j),
-        force: s.particles.force[i].norm(),
+        force: s.state.particles.force[i].norm(),
         critical_time_step: s.critical_time_step(None),
     };
     let mut curve = Vec::new();
-    let mut prev = (sim.overlap(i, j), sim.particles.force[i].norm());
+    let mut prev = (sim.overlap(i, j), sim.state.particles.force[i].norm());
     for step in 0..max_steps {
         sim.step()?;
-        let now = (sim.overlap(i, j), sim.particles.force[i].norm());
+        let now = (sim.overlap(i, j), sim.state.particles.force[i].norm());
         if step % every == 0 && now.0 > 0.0 {
             curve.push(sample(sim));
         }

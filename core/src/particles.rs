@@ -63,6 +63,11 @@ impl Particles {
         self.position.is_empty()
     }
 
+    /// The largest radius, m (0 with no particles).
+    pub fn largest_radius(&self) -> f64 {
+        self.radius.iter().copied().fold(0.0, f64::max)
+    }
+
     /// Append a solid sphere of `radius` (m) and `density` (kg/m³); its mass and moment
     /// of inertia (2/5 m R², times `inertia_scale`) follow from them. A prescribed
     /// `motion` replaces `velocity`. The new particle takes the next free id.

@@ -3,7 +3,7 @@
 //! way; `--resume` goes on from it, and the outputs are then the ones the
 //! uninterrupted run writes, byte for byte (see `checkpoint`).
 
-use crate::checkpoint::{self, Checkpoint, SimState};
+use crate::checkpoint::{self, Checkpoint};
 use crate::contact::record::ContactRecord;
 use crate::error::{Result, TampError};
 use crate::output::{
@@ -14,6 +14,7 @@ use crate::output::{
 use crate::progress::Progress;
 use crate::scene;
 use crate::simulation::Simulation;
+use crate::simulation::State;
 use crate::until::Until;
 use serde::{Deserialize, Serialize};
 use std::borrow::Cow;
@@ -25,7 +26,7 @@ use std::path::Path;
 /// written, so a checkpoint does not copy the trajectory text.
 #[derive(Serialize, Deserialize)]
 struct RunState<'a> {
-    sim: SimState,
+    sim: State,
     series_rows: Cow<'a, [Vec<f64>]>,
     trajectory: Cow<'a, str>,
     vtk_frames: usize,
@@ -38,11 +39,11 @@ struct RunState<'a> {
 /// Append one trajectory.csv row per particle at the current step; `forces` adds the
 /// force and torque columns.
 fn record_trajectory(sim: &Simulation, out: &mut String, forces: bool) {
-    let p = &sim.particles;
+    let p = &sim.state.particles;
     for i in 0..p.len() {
         crate::output::run_files::trajectory_row(
             out,
-            sim.step,
+            sim.state.step,
             p.id[i],
             p.radius[i],
             &p.position[i],
@@ -74,7 +75,7 @@ fn write_contacts(
     sim: &Simulation,
     records: &[ContactRecord],
 ) -> Result<()> {
-    let name = format!("contacts_{:06}", sim.step / every);
+    let name = format!("contacts_{:06}", sim.state.step / every);
     let csv = output::contacts::to_csv(sim, records);
     output::write_atomic(&dir.join(format!("{name}.csv")), csv.as_bytes())?;
     let vtk = output::contacts::to_vtk(sim, records)?;
@@ -112,8 +113,8 @@ pub fn interrupted(
     };
     TampError::Interrupted {
         signal,
-        step: sim.step,
-        time: sim.time,
+        step: sim.state.step,
+        time: sim.state.time,
         next,
     }
 }
@@ -171,7 +172,7 @@ pub fn run_scene(
             );
         }
         let state = saved.into_state(sha, &checkpoint_path)?;
-        state.sim.restore(&mut sim)?;
+        sim.resume(state.sim)?;
         series.rows = state.series_rows.into_owned();
         trajectory = state.trajectory.into_owned();
         frames = state.vtk_frames;
@@ -180,7 +181,7 @@ pub fn run_scene(
         }
         eprintln!(
             "resuming from step {} of {} ({})",
-            sim.step,
+            sim.state.step,
             built.steps,
             checkpoint_path.display()
         );
@@ -214,10 +215,10 @@ pub fn run_scene(
     }
 
     let mut progress = Progress::new("steps", built.steps, quiet);
-    progress.set(sim.step);
+    progress.set(sim.state.step);
     let mut settled = false;
-    while sim.step < built.steps && !settled {
-        if contacts_every > 0 && (sim.step + 1) % contacts_every == 0 {
+    while sim.state.step < built.steps && !settled {
+        if contacts_every > 0 && (sim.state.step + 1) % contacts_every == 0 {
             let records = sim.step_recording_contacts()?;
             write_contacts(&contacts_dir, contacts_every, &sim, &records)?;
         } else {
@@ -226,21 +227,21 @@ pub fn run_scene(
         if let Some(u) = &mut until {
             settled = u.settled(&sim);
         }
-        let last = settled || sim.step == built.steps;
-        if sim.step % every == 0 {
+        let last = settled || sim.state.step == built.steps;
+        if sim.state.step % every == 0 {
             series.record(&sim)?;
         }
-        if trajectory_every > 0 && (sim.step % trajectory_every == 0 || last) {
+        if trajectory_every > 0 && (sim.state.step % trajectory_every == 0 || last) {
             record_trajectory(&sim, &mut trajectory, forces);
         }
-        if vtk_every > 0 && sim.step % vtk_every == 0 {
+        if vtk_every > 0 && sim.state.step % vtk_every == 0 {
             write_frame(&vtk_dir, frames, &sim, forces)?;
             frames += 1;
         }
         let signal = crate::interrupt::received();
-        if checkpoint_every > 0 && (sim.step % checkpoint_every == 0 || signal.is_some()) {
+        if checkpoint_every > 0 && (sim.state.step % checkpoint_every == 0 || signal.is_some()) {
             let state = RunState {
-                sim: SimState::capture(&sim),
+                sim: sim.state.clone(),
                 series_rows: Cow::Borrowed(&series.rows),
                 trajectory: Cow::Borrowed(&trajectory),
                 vtk_frames: frames,
@@ -258,19 +259,19 @@ pub fn run_scene(
                 checkpoint_every,
             ));
         }
-        if sim.step % 256 == 0 {
-            progress.set(sim.step);
+        if sim.state.step % 256 == 0 {
+            progress.set(sim.state.step);
         }
     }
     progress.finish();
     sim.check_energy_at_end()?;
-    if sim.step % every != 0 {
+    if sim.state.step % every != 0 {
         series.record(&sim)?;
     }
     let provenance = Provenance::new(
         sha.to_string(),
         scene.seed,
-        sim.dt,
+        sim.state.dt,
         built.dt_estimate,
         built.steps,
     );
@@ -284,8 +285,8 @@ pub fn run_scene(
         let r = crate::until::reading(&sim);
         eprintln!(
             "{criterion} ended the run at t = {:e} s (step {}): kinetic energy per particle {:e} J (run.until: below {:e} J{} for {:e} s), largest speed {:e} m/s",
-            sim.time,
-            sim.step,
+            sim.state.time,
+            sim.state.step,
             r.kinetic_energy_per_particle,
             u.spec.kinetic_energy_per_particle,
             u.spec
@@ -296,8 +297,8 @@ pub fn run_scene(
         );
         summary.ended_by = Some(RunEnd {
             criterion,
-            time: sim.time,
-            step: sim.step,
+            time: sim.state.time,
+            step: sim.state.step,
             kinetic_energy_per_particle: r.kinetic_energy_per_particle,
             max_speed: r.max_speed,
         });
@@ -308,8 +309,8 @@ pub fn run_scene(
         .find(|(_, v)| !v.is_finite())
     {
         return Err(TampError::Unstable {
-            step: sim.step,
-            time: sim.time,
+            step: sim.state.step,
+            time: sim.state.time,
             what: format!(
                 "the summary's {name} is {value} (a quantity beyond the range of a double)"
             ),

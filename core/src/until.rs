@@ -61,19 +61,19 @@ impl Until {
         self.last = reading(sim);
         let below = self.last.kinetic_energy_per_particle < self.spec.kinetic_energy_per_particle
             && self.spec.max_speed.is_none_or(|v| self.last.max_speed < v);
-        let filling = sim.is_growing() || sim.sources.iter().any(|s| s.remaining > 0);
+        let filling = sim.is_growing() || sim.state.still_to_pour() > 0;
         if !below || filling {
             self.held_since = None;
             return false;
         }
-        let since = *self.held_since.get_or_insert(sim.time);
-        sim.time - since >= self.spec.held_for
+        let since = *self.held_since.get_or_insert(sim.state.time);
+        sim.state.time - since >= self.spec.held_for
     }
 }
 
 /// Kinetic energy per particle and largest speed; zero without particles.
 pub fn reading(sim: &Simulation) -> Reading {
-    let p = &sim.particles;
+    let p = &sim.state.particles;
     let n = p.len();
     Reading {
         kinetic_energy_per_particle: if n == 0 {

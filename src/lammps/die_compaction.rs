@@ -166,14 +166,14 @@ pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> R
     crate::output::create_dir(out_dir)?;
 
     let radius = 0.5 * dc.die_diameter;
-    let max_r = sim.particles.radius.iter().copied().fold(0.0, f64::max);
+    let max_r = sim.state.particles.largest_radius();
     let side = radius + 2.0 * max_r;
     let bounds = [
         [-side, side],
         [-side, side],
         [-2.0 * max_r, specimen.h0 + 2.0 * max_r],
     ];
-    let p = &sim.particles;
+    let p = &sim.state.particles;
     let data = crate::output::data_file::particles_data(
         &sim,
         "LAMMPS",
@@ -248,7 +248,7 @@ pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> R
         g(neighbor_skin(&replay, &p.radius)),
         g(stroke.dt)
     );
-    if let Some(gv) = sim.gravity.filter(|gv| gv.norm() > 0.0) {
+    if let Some(gv) = sim.model.gravity.filter(|gv| gv.norm() > 0.0) {
         let d = gv / gv.norm();
         let _ = writeln!(
             deck,

@@ -575,7 +575,7 @@ fn starts_outside(w: &WallSpec, sim: &crate::simulation::Simulation, shift: Vec3
         return None;
     };
     let (o, a) = (Vec3::from(*origin), Vec3::from(*axis).normalize());
-    let p = &sim.particles;
+    let p = &sim.state.particles;
     (0..p.len())
         .find(|&i| {
             let x = p.position[i] - shift - o;
@@ -620,10 +620,10 @@ pub fn export(
     let model = pair_model(scene).map_err(refuse_all)?;
     let built = scene::build(scene)?;
     let sim = built.sim;
-    let p = &sim.particles;
+    let p = &sim.state.particles;
     // A particle spanning a box touches both faces of an axis in tamp, only the nearer
     // in LAMMPS (wall_fixes).
-    let diameter = 2.0 * p.radius.iter().copied().fold(0.0, f64::max);
+    let diameter = 2.0 * p.largest_radius();
     let narrow: Vec<(String, String)> = scene
         .walls
         .iter()
@@ -645,7 +645,7 @@ pub fn export(
         .iter()
         .enumerate()
         .filter_map(|(k, w)| {
-            starts_outside(w, &sim, sim.walls[k].displacement).map(|id| {
+            starts_outside(w, &sim, sim.state.walls[k].displacement).map(|id| {
                 (
                     format!("walls[{k}].shape"),
                     format!("particle {id} does not start inside the cylinder: LAMMPS's region cylinder (side in) has no contact from outside or beyond its ends, tamp's wall is a two-sided shell with rims"),
@@ -660,7 +660,9 @@ pub fn export(
             return None;
         };
         (0..p.len())
-            .find(|&i| sim.walls[k].deepest_overlap(&p.position[i], p.radius[i]) > 0.0)
+            .find(|&i| {
+                sim.model.walls[k].deepest_overlap(&sim.state.walls[k], &p.position[i], p.radius[i]) > 0.0
+            })
             .map(|i| {
                 (
                     format!("walls[{k}].motion"),
@@ -670,7 +672,7 @@ pub fn export(
     });
     // A cylinder moving along its axis at constant velocity keeps its ends closed
     // only if the closing faces stay between them over the run.
-    let duration = built.steps as f64 * sim.dt;
+    let duration = built.steps as f64 * sim.dt();
     let periodic = scene.periodic.clone().unwrap_or_default().axes();
     let periodic_axes = periodic.map(|a| a.is_some());
     let travelling = scene.walls.iter().enumerate().flat_map(|(k, w)| {
@@ -713,7 +715,7 @@ pub fn export(
         (lo, hi) = ([-1.0; 3], [1.0; 3]);
     }
     let span = (0..3).map(|a| hi[a] - lo[a]).fold(0.0, f64::max);
-    let max_r = p.radius.iter().copied().fold(0.0, f64::max);
+    let max_r = p.largest_radius();
     let margin = 0.05 * span + 2.0 * max_r;
     let mut boundary = Vec::new();
     let mut bounds = [[0.0; 2]; 3];
@@ -750,7 +752,7 @@ pub fn export(
         "# scene '{}', sha256 {sha}, seed {}, dt {}\n# run: lmp -in in.tamp   (or mpiexec -n N lmp -in in.tamp)",
         scene.name.replace(['\n', '\r'], " "),
         scene.seed,
-        g(sim.dt)
+        g(sim.dt())
     );
     deck.push_str("units        si\natom_style   sphere\natom_modify  map array\n");
     let _ = writeln!(deck, "boundary     {}", boundary.join(" "));
@@ -766,18 +768,18 @@ pub fn export(
         .is_some_and(|t| !t.friction_pairs.is_empty());
     // The pair model with material `m`'s E and ν and the friction `mu`.
     let line = |m: usize, mu: f64| {
-        let m = &sim.materials[m];
+        let m = &sim.model.materials[m];
         model
             .replace("{E}", &g(m.youngs_modulus.unwrap_or(0.0)))
             .replace("{nu}", &g(m.poisson_ratio.unwrap_or(0.0)))
             .replace("{mu}", &g(mu))
     };
-    let mu = |a: usize, b: usize| sim.pair_table.get(a, b).friction;
+    let mu = |a: usize, b: usize| sim.model.pair_table.get(a, b).friction;
     // Particle types: the materials particles are made of (the data file's types).
     let mut kinds: Vec<usize> = p.material.clone();
     kinds.sort_unstable();
     kinds.dedup();
-    for k in 0..sim.materials.len() {
+    for k in 0..sim.model.materials.len() {
         let _ = writeln!(
             deck,
             "pair_coeff   {} {} {}",
@@ -801,8 +803,8 @@ pub fn export(
             }
         }
     }
-    let _ = writeln!(deck, "timestep     {}", g(sim.dt));
-    if let Some(gv) = sim.gravity {
+    let _ = writeln!(deck, "timestep     {}", g(sim.dt()));
+    if let Some(gv) = sim.model.gravity {
         let norm = gv.norm();
         if norm > 0.0 {
             let d = gv / norm;
@@ -821,7 +823,7 @@ pub fn export(
     // pairs), the wall is one fix per particle type, each on the group of that type.
     let mut grouped = Vec::new();
     for (k, w) in scene.walls.iter().enumerate() {
-        let wm = sim.walls[k].material;
+        let wm = sim.model.walls[k].material;
         let groups: Vec<(String, String, f64)> =
             if kinds.iter().all(|&a| mu(a, wm) == mu(kinds[0], wm)) {
                 let mu0 = kinds.first().map_or(mu(wm, wm), |&a| mu(a, wm));
@@ -891,7 +893,7 @@ pub fn export(
     Ok(Exported {
         particles: p.len(),
         steps: built.steps,
-        dt: sim.dt,
+        dt: sim.dt(),
         files: vec!["in.tamp".into(), "particles.data".into()],
         notes: Vec::new(),
     })

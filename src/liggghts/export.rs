@@ -344,7 +344,7 @@ fn deck_scene<'a>(
     let types = scene.materials.len();
     let friction = match sim {
         Some(sim) if scene.contact.tangential.is_some() => (0..types * types)
-            .map(|k| sim.pair_table.get(k / types, k % types).friction)
+            .map(|k| sim.model.pair_table.get(k / types, k % types).friction)
             .collect(),
         _ => vec![0.0; types * types],
     };
@@ -368,7 +368,8 @@ pub(super) fn contact_model(
 ) -> Result<ContactModel> {
     let mut properties = Vec::new();
     let per_type = |f: &dyn Fn(&crate::material::Material) -> f64| -> String {
-        sim.materials
+        sim.model
+            .materials
             .iter()
             .map(|m| g(f(m)))
             .collect::<Vec<_>>()
@@ -382,7 +383,7 @@ pub(super) fn contact_model(
         "fix m2 all property/global poissonsRatio peratomtype {}",
         per_type(&|m| m.poisson_ratio.expect("checked"))
     ));
-    let n = sim.materials.len();
+    let n = sim.model.materials.len();
     let deck = match scene
         .contact
         .normal
@@ -424,7 +425,7 @@ fn join(values: &[f64]) -> String {
 /// The contact kinds of a scene: every pair of particle classes (mass, radius,
 /// material) and every class against every wall.
 fn contact_kinds(sim: &crate::simulation::Simulation) -> Vec<LiggghtsContact> {
-    let p = &sim.particles;
+    let p = &sim.state.particles;
     let mut classes: Vec<(f64, f64, usize)> = Vec::new();
     for i in 0..p.len() {
         let c = (p.mass[i], p.radius[i], p.material[i]);
@@ -436,7 +437,7 @@ fn contact_kinds(sim: &crate::simulation::Simulation) -> Vec<LiggghtsContact> {
         }
     }
     let e_star = |a: usize, b: usize| {
-        effective_modulus(&sim.materials[a], &sim.materials[b]).expect("checked")
+        effective_modulus(&sim.model.materials[a], &sim.model.materials[b]).expect("checked")
     };
     let mut kinds = Vec::new();
     for (k, a) in classes.iter().enumerate() {
@@ -449,7 +450,7 @@ fn contact_kinds(sim: &crate::simulation::Simulation) -> Vec<LiggghtsContact> {
                 second: Some((b.2, b.1)),
             });
         }
-        for w in &sim.walls {
+        for w in &sim.model.walls {
             kinds.push(LiggghtsContact {
                 effective_mass: a.0,
                 effective_radius: a.1,
@@ -521,7 +522,7 @@ pub(super) fn plane_triangles(point: &Vec3, normal: &Vec3, half: f64) -> Vec<[Ve
 
 /// The scene's extent: the particles' bounding box, widened by the periodic box.
 fn extent(sim: &crate::simulation::Simulation, scene: &Scene) -> (Vec3, Vec3) {
-    let p = &sim.particles;
+    let p = &sim.state.particles;
     let mut lo = Vec3::repeat(f64::INFINITY);
     let mut hi = Vec3::repeat(f64::NEG_INFINITY);
     for (x, r) in p.position.iter().zip(&p.radius) {
@@ -569,11 +570,12 @@ pub(super) fn deck_head(
     model: &ContactModel,
 ) -> String {
     let moduli: Vec<f64> = sim
+        .model
         .materials
         .iter()
         .filter_map(|m| m.youngs_modulus)
         .collect();
-    let skin = neighbor_skin(scene, &sim.particles.radius);
+    let skin = neighbor_skin(scene, &sim.state.particles.radius);
     let mut deck = String::new();
     let _ = writeln!(
         deck,
@@ -619,8 +621,8 @@ pub(super) fn deck_head(
         "pair_style   gran {}\npair_coeff   * *",
         model.pair_style
     );
-    let _ = writeln!(deck, "timestep     {}", g(sim.dt));
-    if let Some(gv) = sim.gravity {
+    let _ = writeln!(deck, "timestep     {}", g(sim.dt()));
+    if let Some(gv) = sim.model.gravity {
         let norm = gv.norm();
         if norm > 0.0 {
             let d = gv / norm;
@@ -655,11 +657,11 @@ pub fn export(
     crate::output::create_dir(out_dir)?;
     let mut files = Vec::new();
     let mut notes = Vec::new();
-    let p = &sim.particles;
+    let p = &sim.state.particles;
 
     // Box: periodic axes exactly; the others shrink-wrap (`m`) around a start box.
     let (lo, hi) = extent(&sim, scene);
-    let max_r = p.radius.iter().copied().fold(0.0, f64::max);
+    let max_r = p.largest_radius();
     let margin = (hi - lo).max() * 0.05 + 2.0 * max_r;
     let periodic = scene.periodic.clone().unwrap_or_default().axes();
     let mut boundary = Vec::new();
@@ -684,7 +686,7 @@ pub fn export(
     let half = (hi - lo).norm() * 2.0 + 10.0 * max_r;
     let wall_model = &model.pair_style;
     let mut meshes: Vec<String> = Vec::new();
-    for (k, (wall, spec)) in sim.walls.iter().zip(&scene.walls).enumerate() {
+    for (k, (wall, spec)) in sim.model.walls.iter().zip(&scene.walls).enumerate() {
         let wtype = wall.material + 1;
         let velocity = match &spec.motion {
             MotionSpec::Velocity { velocity } => Some(*velocity),
@@ -815,7 +817,7 @@ pub fn export(
     Ok(Exported {
         particles: p.len(),
         steps: built.steps,
-        dt: sim.dt,
+        dt: sim.dt(),
         files,
         notes,
     })

@@ -117,7 +117,7 @@ fn sweep_case(spec: &CaseSpec, dir: &Path, scratch: &Path, opts: &Options) -> Re
     let scene_file = dir.join(spec.scene.as_deref().unwrap_or_default());
     let base = super::case_scene(&scene_file)?;
     let particles = scene::build(&base)
-        .map(|b| b.sim.particles.len() + b.sim.sources.iter().map(|s| s.remaining).sum::<usize>())
+        .map(|b| b.sim.state.particles.len() + b.sim.state.still_to_pour())
         .unwrap_or(0);
     let mut variants: Vec<Variant> = if reference_fixes_the_step(dir, &spec.name) {
         vec![Variant::default()]
@@ -151,10 +151,10 @@ fn sweep_case(spec: &CaseSpec, dir: &Path, scratch: &Path, opts: &Options) -> Re
         let mut scene = base.clone();
         variant.apply(&mut scene);
         let built = scene::build(&scene).ok();
-        let dt = built.as_ref().map(|b| b.sim.dt);
+        let dt = built.as_ref().map(|b| b.sim.dt());
         let alpha = built.as_ref().and_then(|b| {
             b.dt_estimate
-                .map(|est| b.sim.dt / (est / scene.time_step.alpha()))
+                .map(|est| b.sim.dt() / (est / scene.time_step.alpha()))
         });
         drop(built);
         let (result, wall_s, repeats) = timed(spec, dir, scratch, variant, opts.min_wall_s);

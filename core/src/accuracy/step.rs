@@ -60,7 +60,7 @@ pub fn choose(
     speed: f64,
     critical: Option<f64>,
 ) -> Result<Choice, String> {
-    let law = &sim.law;
+    let law = &sim.model.law;
     if let NormalLaw::Storakers(Storakers {
         min_with_hertz: false,
     }) = law.normal
@@ -94,7 +94,7 @@ pub fn choose(
             k2 / k1
         ));
     }
-    let p = &sim.particles;
+    let p = &sim.state.particles;
     let mut bodies: Vec<(f64, f64, usize)> = Vec::new();
     for i in 0..p.len() {
         let b = (p.mass[i], p.radius[i], p.material[i]);
@@ -102,9 +102,9 @@ pub fn choose(
             bodies.push(b);
         }
     }
-    for s in sim.sources.iter().filter(|s| s.remaining > 0) {
+    for s in sim.pouring_sources() {
         let r = s.radius.min_radius();
-        let m = sim.materials[s.material].particle_density() * 4.0 / 3.0
+        let m = sim.model.materials[s.material].particle_density() * 4.0 / 3.0
             * std::f64::consts::PI
             * r.powi(3);
         bodies.push((m, r, s.material));
@@ -155,7 +155,7 @@ pub fn choose(
         })
     };
     // A lone particle meets only walls.
-    let pairs = p.len() + sim.sources.iter().map(|s| s.remaining).sum::<usize>() > 1;
+    let pairs = p.len() + sim.state.still_to_pour() > 1;
     let (mut shortest, mut shortest_contact) = (f64::INFINITY, f64::INFINITY);
     for &(m, r, material) in &bodies {
         let mut candidates = Vec::new();
@@ -163,11 +163,15 @@ pub fn choose(
             candidates.push(duration(
                 0.5 * m,
                 0.5 * r,
-                sim.pair_table.get(material, material),
+                sim.model.pair_table.get(material, material),
             ));
         }
-        for w in &sim.walls {
-            candidates.push(duration(m, r, sim.pair_table.get(material, w.material)));
+        for w in &sim.model.walls {
+            candidates.push(duration(
+                m,
+                r,
+                sim.model.pair_table.get(material, w.material),
+            ));
         }
         for t in candidates {
             match t.transpose()? {

@@ -48,7 +48,7 @@ pub struct Implied {
 /// The characteristic velocity implied by the scene at t = 0: the largest of the
 /// module comment's candidates.
 pub fn implied(sim: &Simulation) -> Implied {
-    let p = &sim.particles;
+    let p = &sim.state.particles;
     let mut best = Implied {
         speed: 0.0,
         source: "nothing in the scene moves".into(),
@@ -85,7 +85,7 @@ pub fn implied(sim: &Simulation) -> Implied {
             ),
         );
     }
-    for w in &sim.walls {
+    for w in &sim.model.walls {
         let wall = match w.motion {
             BoundaryMotion::Fixed => Vec3::zeros(),
             BoundaryMotion::Velocity(v) => v,
@@ -102,7 +102,7 @@ pub fn implied(sim: &Simulation) -> Implied {
             );
         }
     }
-    for w in &sim.walls {
+    for (w, pose) in sim.model.walls.iter().zip(&sim.state.walls) {
         let BoundaryMotion::Pressed(load) = &w.motion else {
             continue;
         };
@@ -114,7 +114,7 @@ pub fn implied(sim: &Simulation) -> Implied {
             .map(|i| ahead[i] + p.radius[i])
             .fold(f64::NEG_INFINITY, f64::max);
         if let Shape::Plane(plane) = &w.shape {
-            let face = (plane.point + w.displacement).dot(&load.direction);
+            let face = (plane.point + pose.displacement).dot(&load.direction);
             let gap = front - face;
             if gap > 0.0 {
                 offer_to(
@@ -139,8 +139,8 @@ pub fn implied(sim: &Simulation) -> Implied {
             );
         }
     }
-    for (k, s) in sim.sources.iter().enumerate() {
-        if s.remaining > 0 {
+    for (k, (s, at)) in sim.model.sources.iter().zip(&sim.state.sources).enumerate() {
+        if at.remaining > 0 {
             offer_to(
                 &mut best,
                 2.0 * s.speed,
@@ -148,10 +148,10 @@ pub fn implied(sim: &Simulation) -> Implied {
             );
         }
     }
-    if let Some(g) = sim.gravity.filter(|g| g.norm() > 0.0) {
+    if let Some(g) = sim.model.gravity.filter(|g| g.norm() > 0.0) {
         let down = g.normalize();
         let mut heights: Vec<f64> = p.position.iter().map(|x| x.dot(&down)).collect();
-        for s in &sim.sources {
+        for s in &sim.model.sources {
             for c in 0..8 {
                 let pick = |k: usize, a: f64, b: f64| if c >> k & 1 == 0 { a } else { b };
                 let (lo, hi) = (s.region.lower, s.region.upper);
@@ -163,9 +163,9 @@ pub fn implied(sim: &Simulation) -> Implied {
                 heights.push(corner.dot(&down));
             }
         }
-        for w in &sim.walls {
+        for (w, pose) in sim.model.walls.iter().zip(&sim.state.walls) {
             if let Shape::Plane(plane) = &w.shape {
-                heights.push((plane.point + w.displacement).dot(&down));
+                heights.push((plane.point + pose.displacement).dot(&down));
             }
         }
         let (lo, hi) = heights

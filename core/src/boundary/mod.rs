@@ -11,9 +11,11 @@
 //! `Boundary::effective_radius`).
 
 pub mod motion;
+pub mod pose;
 pub mod shape;
 
 pub use motion::{BoundaryMotion, PressureLoad, Servo};
+pub use pose::WallPose;
 use shape::{Shape, ShapeContact};
 
 use crate::particles::Vec3;
@@ -51,31 +53,30 @@ pub struct Boundary {
     pub motion: BoundaryMotion,
     /// Whether the contact's R* sees the wall as flat or as a curved cylinder.
     pub curvature: WallCurvature,
-    /// Translation from the rest frame, m.
-    pub displacement: Vec3,
-    /// Velocity during the current step, m/s.
-    pub velocity: Vec3,
 }
 
 impl Boundary {
-    /// A wall at its position and velocity at t = 0, flat in the contact law.
+    /// A wall flat in the contact law.
     pub fn new(name: String, shape: Shape, material: usize, motion: BoundaryMotion) -> Self {
-        let mut b = Boundary {
+        Boundary {
             name,
             shape,
             material,
             motion,
             curvature: WallCurvature::Flat,
-            displacement: Vec3::zeros(),
-            velocity: Vec3::zeros(),
-        };
-        if let Some(u0) = b.motion.displacement_at(0.0) {
-            b.displacement = u0;
         }
-        if let BoundaryMotion::Velocity(v) = b.motion {
-            b.velocity = v;
+    }
+
+    /// The wall's pose at t = 0: where its motion puts it, moving at its prescribed
+    /// velocity if it has one.
+    pub fn initial_pose(&self) -> WallPose {
+        WallPose {
+            displacement: self.motion.displacement_at(0.0).unwrap_or_else(Vec3::zeros),
+            velocity: match self.motion {
+                BoundaryMotion::Velocity(v) => v,
+                _ => Vec3::zeros(),
+            },
         }
-        b
     }
 
     /// The effective radius R* of a contact of a sphere of radius R centred at `centre`
@@ -94,7 +95,7 @@ impl Boundary {
     /// distance from the axis is below R_c (every contact with the wall, rim ones
     /// included, takes the wall's r_w).
     #[inline(always)]
-    pub fn effective_radius(&self, centre: &Vec3, radius: f64) -> f64 {
+    pub fn effective_radius(&self, pose: &WallPose, centre: &Vec3, radius: f64) -> f64 {
         match &self.curvature {
             WallCurvature::Flat => radius,
             WallCurvature::Mean {
@@ -102,7 +103,7 @@ impl Boundary {
                 axis,
                 radius: r_c,
             } => {
-                let x = centre - self.displacement - origin;
+                let x = centre - pose.displacement - origin;
                 let rho = (x - axis * x.dot(axis)).norm();
                 let r_w = if rho < *r_c { -2.0 * r_c } else { 2.0 * r_c };
                 radius * r_w / (radius + r_w)
@@ -110,38 +111,58 @@ impl Boundary {
         }
     }
 
-    /// Contacts of a sphere with this boundary, appended to `out`.
+    /// Contacts of a sphere with this boundary at `pose`, appended to `out`.
     #[inline(always)]
-    pub fn contacts(&self, centre: &Vec3, radius: f64, reach: f64, out: &mut Vec<ShapeContact>) {
+    pub fn contacts(
+        &self,
+        pose: &WallPose,
+        centre: &Vec3,
+        radius: f64,
+        reach: f64,
+        out: &mut Vec<ShapeContact>,
+    ) {
         self.shape
-            .contacts(&(centre - self.displacement), radius, reach, out);
+            .contacts(&(centre - pose.displacement), radius, reach, out);
     }
 
     /// Largest overlap of a sphere with any part of the boundary, −∞ when it touches
     /// none. For set-up checks (insertion, initial overlaps), not the force loop.
-    pub fn deepest_overlap(&self, centre: &Vec3, radius: f64) -> f64 {
+    pub fn deepest_overlap(&self, pose: &WallPose, centre: &Vec3, radius: f64) -> f64 {
         let mut found = Vec::new();
-        self.contacts(centre, radius, 0.0, &mut found);
+        self.contacts(pose, centre, radius, 0.0, &mut found);
         found
             .iter()
             .map(|c| c.overlap)
             .fold(f64::NEG_INFINITY, f64::max)
     }
 
-    /// Whether a sphere touches none of `walls`: where insertion may put it.
-    pub fn clear_of_all(walls: &[Boundary], centre: &Vec3, radius: f64) -> bool {
+    /// Whether a sphere touches none of `walls` at their `poses`: where insertion may
+    /// put it.
+    pub fn clear_of_all(
+        walls: &[Boundary],
+        poses: &[WallPose],
+        centre: &Vec3,
+        radius: f64,
+    ) -> bool {
         walls
             .iter()
-            .all(|w| w.deepest_overlap(centre, radius) <= 0.0)
+            .zip(poses)
+            .all(|(w, pose)| w.deepest_overlap(pose, centre, radius) <= 0.0)
     }
 
-    /// Move over the step [t, t + dt]; `force_on_boundary` is the force the particles
+    /// Move `pose` over the step [t, t + dt]; `force_on_boundary` is the force the particles
     /// exerted at t (what a servo or a pressed punch reacts to). Fails when a displacement expression
     /// stops being finite (the other motions cannot).
-    pub fn advance(&mut self, t: f64, dt: f64, force_on_boundary: &Vec3) -> Result<(), String> {
+    pub fn advance(
+        &self,
+        pose: &mut WallPose,
+        t: f64,
+        dt: f64,
+        force_on_boundary: &Vec3,
+    ) -> Result<(), String> {
         match &self.motion {
-            BoundaryMotion::Fixed => self.velocity = Vec3::zeros(),
-            BoundaryMotion::Velocity(v) => self.velocity = *v,
+            BoundaryMotion::Fixed => pose.velocity = Vec3::zeros(),
+            BoundaryMotion::Velocity(v) => pose.velocity = *v,
             BoundaryMotion::Displacement(_) => {
                 let next = self
                     .motion
@@ -154,20 +175,20 @@ impl Boundary {
                         t + dt
                     ));
                 }
-                self.velocity = if dt > 0.0 {
-                    (next - self.displacement) / dt
+                pose.velocity = if dt > 0.0 {
+                    (next - pose.displacement) / dt
                 } else {
                     Vec3::zeros()
                 };
-                self.displacement = next;
+                pose.displacement = next;
                 return Ok(());
             }
-            BoundaryMotion::Servo(s) => self.velocity = s.velocity(force_on_boundary),
+            BoundaryMotion::Servo(s) => pose.velocity = s.velocity(force_on_boundary),
             BoundaryMotion::Pressed(p) => {
-                self.velocity = p.velocity(t, dt, &self.velocity, force_on_boundary)
+                pose.velocity = p.velocity(t, dt, &pose.velocity, force_on_boundary)
             }
         }
-        self.displacement += self.velocity * dt;
+        pose.displacement += pose.velocity * dt;
         Ok(())
     }
 }

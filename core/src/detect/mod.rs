@@ -13,6 +13,7 @@ pub mod multigrid;
 use crate::contact::states::StateStore;
 use crate::particles::Vec3;
 use crate::space::Space;
+use serde::{Deserialize, Serialize};
 
 /// Broad-phase algorithm that finds the neighbour list's candidate pairs; all give the
 /// same sorted list.
@@ -44,11 +45,10 @@ impl Detector {
     }
 }
 
-/// Candidate pairs, found within touching + `reach` (the range of cohesion) + `skin`.
-/// A rebuild hands the old and new lists to the contacts' state store, which
-/// carries each pair's state over by merging the two sorted lists.
+/// How a run finds its candidate pairs: the detector, the Verlet skin, the law's
+/// reach beyond touching, and the domain. Fixed for the run (part of its model).
 #[derive(Clone, Debug)]
-pub struct NeighborList {
+pub struct Detection {
     /// Algorithm that builds the list.
     pub detector: Detector,
     /// Verlet skin, m: the extra range that lets the list be reused until some particle
@@ -56,41 +56,43 @@ pub struct NeighborList {
     pub skin: f64,
     /// Range beyond touching at which the contact law still acts, m.
     pub reach: f64,
-    /// Candidate pairs of particle indices (i < j), sorted lexicographically.
-    pub pairs: Vec<(u32, u32)>,
     /// Domain with its periodic axes, for nearest-image distances.
     pub space: Space,
-    pub(crate) reference_position: Vec<Vec3>,
-    pub(crate) reference_radius: Vec<f64>,
+}
+
+/// Candidate pairs, found within touching + `reach` (the range of cohesion) + `skin`,
+/// and the positions and radii they were found at (part of a run's state). A rebuild
+/// hands the old and new lists to the contacts' state store, which carries each
+/// pair's state over by merging the two sorted lists.
+#[derive(Clone, Debug, Default, Serialize, Deserialize)]
+pub struct NeighborList {
+    /// Candidate pairs of particle indices (i < j), sorted lexicographically.
+    pub pairs: Vec<(u32, u32)>,
+    /// Positions at the last build, m.
+    pub reference_position: Vec<Vec3>,
+    /// Radii at the last build, m.
+    pub reference_radius: Vec<f64>,
     /// Number of builds so far.
     pub builds: u64,
 }
 
 impl NeighborList {
-    /// An empty list, built at the first `update`.
-    pub fn new(detector: Detector, skin: f64, reach: f64, space: Space) -> Self {
-        NeighborList {
-            space,
-            detector,
-            skin,
-            reach,
-            pairs: Vec::new(),
-            reference_position: Vec::new(),
-            reference_radius: Vec::new(),
-            builds: 0,
-        }
-    }
-
     /// Rebuild when there is no reference yet or some particle's displacement plus
     /// radius growth since the last build exceeds skin/2: then no pair outside the
     /// list can have come within reach (|Δx_i| + Δr_i ≤ skin/2 for both partners).
-    pub fn update(&mut self, position: &[Vec3], radius: &[f64], states: &mut dyn StateStore) {
-        let half_skin = 0.5 * self.skin;
+    pub fn update(
+        &mut self,
+        detection: &Detection,
+        position: &[Vec3],
+        radius: &[f64],
+        states: &mut dyn StateStore,
+    ) {
+        let half_skin = 0.5 * detection.skin;
         let n = position.len();
         let stale = self.reference_position.len() != n || {
             // Slices of one length n (one bounds check per index) and the
             // nearest-image rule unpacked once (`MinimumImage`).
-            let image = self.space.minimum_image();
+            let image = detection.space.minimum_image();
             let (reference_position, reference_radius, radius) = (
                 &self.reference_position[..n],
                 &self.reference_radius[..n],
@@ -108,16 +110,26 @@ impl NeighborList {
             })
         };
         if stale {
-            self.rebuild(position, radius, states);
+            self.rebuild(detection, position, radius, states);
         }
     }
 
     /// Build the list now from the current positions and radii, and hand the old and
     /// new pair lists to `states` so each surviving pair keeps its contact history.
-    pub fn rebuild(&mut self, position: &[Vec3], radius: &[f64], states: &mut dyn StateStore) {
-        let pairs =
-            self.detector
-                .candidate_pairs(position, radius, self.skin + self.reach, &self.space);
+    pub fn rebuild(
+        &mut self,
+        detection: &Detection,
+        position: &[Vec3],
+        radius: &[f64],
+        states: &mut dyn StateStore,
+    ) {
+        let Detection {
+            detector,
+            skin,
+            reach,
+            space,
+        } = detection;
+        let pairs = detector.candidate_pairs(position, radius, skin + reach, space);
         states.carry_pairs(&self.pairs, &pairs);
         self.pairs = pairs;
         self.reference_position = position.to_vec();

@@ -10,11 +10,12 @@
 
 use super::distribution::SizeDistribution;
 use super::rsi::InsertionBox;
+use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
+use serde::{Deserialize, Serialize};
 
 /// A pouring source: a box region into which batches of spheres are inserted at
-/// regular intervals during the run, with their random generator and what is left to
-/// pour.
+/// regular intervals during the run. What it has poured so far is its `SourceState`.
 #[derive(Clone, Debug)]
 pub struct Source {
     /// Box that must contain each inserted sphere whole.
@@ -27,12 +28,24 @@ pub struct Source {
     pub speed: f64,
     /// Angular speed at entry, rad/s.
     pub spin: f64,
+    /// Time of the first event, s.
+    pub start: f64,
     /// Interval between insertion events, s.
     pub every: f64,
     /// Most spheres inserted per event.
     pub per_event: usize,
     /// Centre draws allowed per sphere and event before it waits for the next event.
     pub max_attempts: usize,
+    /// Particles to pour in all.
+    pub count: usize,
+    /// Seed of the source's random generator.
+    pub seed: u64,
+}
+
+/// How far a source has got: its next event, what is left to pour, and its random
+/// generator, stored as its abstract state so a checkpoint continues the same draws.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct SourceState {
     /// Time of the next event, s.
     pub next: f64,
     /// Particles still to pour.
@@ -44,6 +57,18 @@ pub struct Source {
 }
 
 impl Source {
+    /// The source before its first event.
+    pub fn initial_state(&self) -> SourceState {
+        SourceState {
+            next: self.start,
+            remaining: self.count,
+            pending_radius: None,
+            rng: ChaCha8Rng::seed_from_u64(self.seed),
+        }
+    }
+}
+
+impl SourceState {
     /// Whether an insertion event falls due at time t, s (and particles remain to pour).
     pub fn is_due(&self, t: f64) -> bool {
         self.remaining > 0 && t >= self.next

@@ -25,15 +25,15 @@ pub fn to_csv(sim: &Simulation, records: &[ContactRecord]) -> String {
     out.push('\n');
     for r in records {
         let (j, wall) = match r.partner {
-            Partner::Particle(j) => (sim.particles.id[j].to_string(), ""),
-            Partner::Wall(w) => (String::new(), sim.walls[w].name.as_str()),
+            Partner::Particle(j) => (sim.state.particles.id[j].to_string(), ""),
+            Partner::Wall(w) => (String::new(), sim.model.walls[w].name.as_str()),
         };
         let (x, n, t) = (r.point, r.normal, r.tangential_force);
         let _ = writeln!(
             out,
             "{},{},{j},{wall},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e}",
-            sim.step,
-            sim.particles.id[r.i],
+            sim.state.step,
+            sim.state.particles.id[r.i],
             x.x,
             x.y,
             x.z,
@@ -93,7 +93,10 @@ pub fn to_vtk(sim: &Simulation, records: &[ContactRecord]) -> Result<String> {
     };
     let vtk = Vtk {
         version: Version::new((2, 0)),
-        title: format!("tamp contacts step {} time {:e}", sim.step, sim.time),
+        title: format!(
+            "tamp contacts step {} time {:e}",
+            sim.state.step, sim.state.time
+        ),
         byte_order: ByteOrder::BigEndian,
         file_path: None,
         data: DataSet::PolyData {

@@ -21,13 +21,13 @@ pub fn particles_data(
     bounds: &[[f64; 2]; 3],
     atoms: &str,
 ) -> String {
-    let p = &sim.particles;
+    let p = &sim.state.particles;
     let mut data = format!(
         "{peer} data file exported by tamp {} ({}) from scene sha256 {sha}{about}\n\n{} atoms\n{} atom types\n\n",
         crate::VERSION,
         crate::GIT_COMMIT,
         p.len(),
-        sim.materials.len()
+        sim.model.materials.len()
     );
     for (axis, [lo, hi]) in ["x", "y", "z"].iter().zip(bounds) {
         let _ = writeln!(data, "{} {} {axis}lo {axis}hi", g(*lo), g(*hi));
@@ -35,7 +35,7 @@ pub fn particles_data(
     let _ = write!(data, "\n{atoms}\n\n");
     for i in 0..p.len() {
         let x = p.position[i];
-        let density = sim.materials[p.material[i]].particle_density();
+        let density = sim.model.materials[p.material[i]].particle_density();
         let _ = writeln!(
             data,
             "{} {} {} {} {} {} {}",

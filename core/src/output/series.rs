@@ -26,7 +26,7 @@ impl Series {
         let mut header = vec!["step".to_string(), "time".to_string()];
         for c in &columns {
             if c == "wall_forces" {
-                for w in &sim.walls {
+                for w in &sim.model.walls {
                     for a in ["x", "y", "z"] {
                         header.push(format!("wall_force_{}_{a}", w.name));
                     }
@@ -46,18 +46,19 @@ impl Series {
     /// that overflowed while every position stayed finite) ends the run: exit 3,
     /// naming the column and the step, so no series holds NaN or inf.
     pub fn record(&mut self, sim: &Simulation) -> Result<()> {
-        let mut row = vec![sim.step as f64, sim.time];
+        let mut row = vec![sim.state.step as f64, sim.state.time];
         for c in &self.columns {
             match c.as_str() {
-                "kinetic_energy" => row.push(sim.particles.translational_kinetic_energy()),
-                "rotational_energy" => row.push(sim.particles.rotational_kinetic_energy()),
+                "kinetic_energy" => row.push(sim.state.particles.translational_kinetic_energy()),
+                "rotational_energy" => row.push(sim.state.particles.rotational_kinetic_energy()),
                 "stored_energy" => row.push(sim.stored_energy()),
                 "gravitational_energy" => row.push(sim.gravitational_energy()),
-                "external_work" => row.push(sim.external_work),
+                "external_work" => row.push(sim.state.energy.external_work),
                 "dissipated_energy" => row.push(sim.dissipated_energy()),
                 "contact_count" => row.push(sim.contact_count() as f64),
-                "max_overlap_ratio" => row.push(sim.max_overlap_ratio),
+                "max_overlap_ratio" => row.push(sim.state.max_overlap_ratio),
                 "wall_forces" => sim
+                    .state
                     .wall_force
                     .iter()
                     .for_each(|f| row.extend([f.x, f.y, f.z])),
@@ -66,8 +67,8 @@ impl Series {
         }
         if let Some(k) = row.iter().position(|v| !v.is_finite()) {
             return Err(TampError::Unstable {
-                step: sim.step,
-                time: sim.time,
+                step: sim.state.step,
+                time: sim.state.time,
                 what: format!(
                     "{} is {} (a quantity beyond the range of a double)",
                     self.header[k], row[k]

@@ -81,21 +81,22 @@ impl Summary {
         Summary {
             provenance,
             scene_name: scene_name.to_string(),
-            particles: sim.particles.len(),
-            time: sim.time,
-            steps: sim.step,
-            kinetic_energy: sim.particles.translational_kinetic_energy(),
-            rotational_energy: sim.particles.rotational_kinetic_energy(),
+            particles: sim.state.particles.len(),
+            time: sim.state.time,
+            steps: sim.state.step,
+            kinetic_energy: sim.state.particles.translational_kinetic_energy(),
+            rotational_energy: sim.state.particles.rotational_kinetic_energy(),
             stored_energy: sim.stored_energy(),
-            external_work: sim.external_work,
+            external_work: sim.state.energy.external_work,
             dissipated_energy: sim.dissipated_energy(),
             contact_count: sim.contact_count(),
-            max_overlap_ratio: sim.max_overlap_ratio,
-            neighbor_list_builds: sim.neighbors.builds,
+            max_overlap_ratio: sim.state.max_overlap_ratio,
+            neighbor_list_builds: sim.state.neighbors.builds,
             wall_forces: sim
+                .model
                 .walls
                 .iter()
-                .zip(&sim.wall_force)
+                .zip(&sim.state.wall_force)
                 .map(|(w, f)| WallForce {
                     wall: w.name.clone(),
                     force: [f.x, f.y, f.z],

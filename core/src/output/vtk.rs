@@ -9,7 +9,7 @@ use vtkio::model::{
 
 /// `forces`: add each particle's force and torque as point data (`output.forces`).
 pub fn frame(sim: &Simulation, forces: bool) -> Vtk {
-    let p = &sim.particles;
+    let p = &sim.state.particles;
     let n = p.len();
     let flat = |v: &Vec<crate::particles::Vec3>| {
         v.iter().flat_map(|x| [x.x, x.y, x.z]).collect::<Vec<f64>>()
@@ -33,7 +33,10 @@ pub fn frame(sim: &Simulation, forces: bool) -> Vtk {
     };
     Vtk {
         version: Version::new((2, 0)),
-        title: format!("tamp frame step {} time {:e}", sim.step, sim.time),
+        title: format!(
+            "tamp frame step {} time {:e}",
+            sim.state.step, sim.state.time
+        ),
         byte_order: ByteOrder::BigEndian,
         file_path: None,
         data: DataSet::PolyData {

@@ -33,7 +33,6 @@
 
 use super::die_compaction_file::{DieCompactionFile, DieCompactionSpec, FillMethod};
 use super::funnel::Funnel;
-use crate::checkpoint::SimState;
 use crate::contact::record::ContactRecord;
 use crate::error::{Result, TampError};
 use crate::generate::rsi::{InsertionBox, Placed};
@@ -44,6 +43,7 @@ use crate::scene::schema::{ContactSpec, ParticleSpec, RunSpec, Scene};
 use crate::scene::walls::{MotionSpec, ShapeSpec, WallSpec};
 use crate::scene::{self, validate};
 use crate::simulation::Simulation;
+use crate::simulation::State;
 use crate::space::Space;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
@@ -134,7 +134,7 @@ pub struct PressState {
     /// The pressing so far.
     pub pressing: Pressing,
     /// The simulation's state at the checkpoint's step.
-    pub sim: SimState,
+    pub sim: State,
 }
 
 impl Pressing {
@@ -231,7 +231,7 @@ fn punch_wall(dc: &DieCompactionSpec, height: f64, motion: MotionSpec) -> WallSp
 
 /// The particles of a simulation as explicit particles of the next stage.
 fn carried(sim: &Simulation, material: &str) -> Vec<ParticleSpec> {
-    let p = &sim.particles;
+    let p = &sim.state.particles;
     (0..p.len())
         .map(|i| ParticleSpec {
             position: p.position[i].into(),
@@ -245,7 +245,7 @@ fn carried(sim: &Simulation, material: &str) -> Vec<ParticleSpec> {
 }
 
 fn top_of_bed(sim: &Simulation) -> f64 {
-    let p = &sim.particles;
+    let p = &sim.state.particles;
     (0..p.len())
         .map(|i| p.position[i].z + p.radius[i])
         .fold(f64::NEG_INFINITY, f64::max)
@@ -428,7 +428,7 @@ fn funnel_wall(dc: &DieCompactionSpec, f: &Funnel) -> WallSpec {
 fn moving_energy(sim: &Simulation, method: FillMethod) -> f64 {
     match method {
         FillMethod::SettledColumn => sim.kinetic_energy(),
-        FillMethod::Funnel => sim.particles.translational_kinetic_energy(),
+        FillMethod::Funnel => sim.state.particles.translational_kinetic_energy(),
     }
 }
 
@@ -437,7 +437,7 @@ fn moving_energy(sim: &Simulation, method: FillMethod) -> f64 {
 /// make a specimen the flatten stage cannot mean.
 fn check_poured(sim: &Simulation, dc: &DieCompactionSpec) -> Result<()> {
     let f = Funnel::of(dc);
-    let p = &sim.particles;
+    let p = &sim.state.particles;
     let above = (0..p.len())
         .filter(|&i| p.position[i].z + p.radius[i] > f.outlet_height)
         .count();
@@ -493,17 +493,17 @@ pub fn prepare(file: &DieCompactionFile, quiet: bool) -> Result<Specimen> {
     fill.time_step.alpha = Some(dc.fill.alpha.unwrap_or(scene.time_step.alpha()));
     let built = scene::build(&fill)?;
     let mut sim = built.sim;
-    let p = &sim.particles;
+    let p = &sim.state.particles;
     let total_mass: f64 = p.mass.iter().sum();
     let mean_diameter = 2.0 * p.radius.iter().sum::<f64>() / p.len() as f64;
     let at_rest = dc.fill.rest_fraction * total_mass * g.norm() * mean_diameter;
     let mut progress = Progress::new("fill", built.steps, quiet);
     let mut fill_at_rest = false;
-    while sim.step < built.steps {
+    while sim.state.step < built.steps {
         sim.step()?;
         stop_if_signalled(&sim, "filling")?;
-        if sim.step % REST_CHECK_EVERY == 0 {
-            progress.set(sim.step);
+        if sim.state.step % REST_CHECK_EVERY == 0 {
+            progress.set(sim.state.step);
             if moving_energy(&sim, dc.fill.method) < at_rest {
                 fill_at_rest = true;
                 break;
@@ -516,9 +516,9 @@ pub fn prepare(file: &DieCompactionFile, quiet: bool) -> Result<Specimen> {
         // The spin the cone gave (see `moving_energy`) is not carried on: the flatten
         // punch's friction would turn it back into speed (tens of m/s under g′, where
         // the bed's own settling speeds are mm/s) and throw the top layer about.
-        sim.particles.omega.fill(Vec3::zeros());
+        sim.state.particles.omega.fill(Vec3::zeros());
     }
-    let (fill_time, fill_steps, fill_dt) = (sim.time, sim.step, sim.dt);
+    let (fill_time, fill_steps, fill_dt) = (sim.state.time, sim.state.step, sim.state.dt);
     if !quiet {
         eprintln!(
             "fill: {} after {fill_time:e} s ({fill_steps} steps of {fill_dt:e} s)",
@@ -558,17 +558,21 @@ pub fn prepare(file: &DieCompactionFile, quiet: bool) -> Result<Specimen> {
     let built = scene::build(&flatten)?;
     let mut sim = built.sim;
     let mut progress = Progress::new("flatten", built.steps, quiet);
-    while sim.step < built.steps {
+    while sim.state.step < built.steps {
         sim.step()?;
         stop_if_signalled(&sim, "flattening")?;
-        if sim.step % REST_CHECK_EVERY == 0 {
-            progress.set(sim.step);
+        if sim.state.step % REST_CHECK_EVERY == 0 {
+            progress.set(sim.state.step);
         }
     }
     progress.finish();
     let h0 = top_of_bed(&sim);
-    let (density_specimen, density_rve) =
-        densities(&sim.particles.position, &sim.particles.radius, dc, h0)?;
+    let (density_specimen, density_rve) = densities(
+        &sim.state.particles.position,
+        &sim.state.particles.radius,
+        dc,
+        h0,
+    )?;
     Ok(Specimen {
         h0,
         density_specimen,
@@ -576,8 +580,8 @@ pub fn prepare(file: &DieCompactionFile, quiet: bool) -> Result<Specimen> {
         particles: carried(&sim, &dc.particles.material),
         fill_time,
         fill_at_rest,
-        steps: [fill_steps, sim.step],
-        dt: [fill_dt, sim.dt],
+        steps: [fill_steps, sim.state.step],
+        dt: [fill_dt, sim.state.dt],
     })
 }
 
@@ -617,8 +621,8 @@ fn stop_if_signalled(sim: &Simulation, stage: &str) -> Result<()> {
         None => Ok(()),
         Some(signal) => Err(TampError::Interrupted {
             signal,
-            step: sim.step,
-            time: sim.time,
+            step: sim.state.step,
+            time: sim.state.time,
             next: format!("the {stage} is not checkpointed; a new run starts from the filling"),
         }),
     }
@@ -647,37 +651,41 @@ pub fn press(
     let ramp = dc.press.ramp_time;
     let records = dc.press.records;
     let record = |sim: &Simulation, out: &mut Pressing| -> Result<()> {
-        let height = specimen.h0 + sim.walls[punch].displacement.z;
-        let (density_specimen, density_rve) =
-            densities(&sim.particles.position, &sim.particles.radius, dc, height)?;
-        let crate::boundary::BoundaryMotion::Pressed(load) = &sim.walls[punch].motion else {
+        let height = specimen.h0 + sim.state.walls[punch].displacement.z;
+        let (density_specimen, density_rve) = densities(
+            &sim.state.particles.position,
+            &sim.state.particles.radius,
+            dc,
+            height,
+        )?;
+        let crate::boundary::BoundaryMotion::Pressed(load) = &sim.model.walls[punch].motion else {
             unreachable!("the punch is pressure-loaded")
         };
         out.records.push(PressRecord {
-            time: sim.time,
-            pressure: load.pressure_at(sim.time),
-            punch_reaction: sim.wall_force[punch].z / area,
-            floor_reaction: -sim.wall_force[floor].z / area,
-            die_friction: -sim.wall_force[die].z / area,
+            time: sim.state.time,
+            pressure: load.pressure_at(sim.state.time),
+            punch_reaction: sim.state.wall_force[punch].z / area,
+            floor_reaction: -sim.state.wall_force[floor].z / area,
+            die_friction: -sim.state.wall_force[die].z / area,
             height,
             height_reduction: (specimen.h0 - height) / specimen.h0,
             density_specimen,
             density_rve,
             wall_lens_volume: wall_lens_volume(
-                &sim.particles.position,
-                &sim.particles.radius,
+                &sim.state.particles.position,
+                &sim.state.particles.radius,
                 die_radius,
                 height,
             ),
             contact_count: sim.contact_count(),
-            dt: sim.dt,
-            step: sim.step,
+            dt: sim.state.dt,
+            step: sim.state.step,
         });
         Ok(())
     };
     let mut out = match resume {
         Some(state) => {
-            state.sim.restore(&mut sim)?;
+            sim.resume(state.sim)?;
             state.pressing
         }
         None => {
@@ -699,7 +707,7 @@ pub fn press(
         }
         // Land exactly on the record times so every run samples the same pressures.
         let due = ramp * next as f64 / records as f64;
-        if sim.time >= due * (1.0 - 1e-12) {
+        if sim.state.time >= due * (1.0 - 1e-12) {
             record(&sim, &mut out)?;
             progress.set(next as u64);
             continue;
@@ -707,16 +715,16 @@ pub fn press(
         if let Some(signal) = crate::interrupt::received() {
             progress.finish();
             if every > 0 {
-                out.steps = sim.step;
+                out.steps = sim.state.step;
                 checkpoint(&PressState {
                     pressing: out.clone(),
-                    sim: SimState::capture(&sim),
+                    sim: sim.state.clone(),
                 })?;
             }
             return Err(TampError::Interrupted {
                 signal,
-                step: sim.step,
-                time: sim.time,
+                step: sim.state.step,
+                time: sim.state.time,
                 next: if every > 0 {
                     "the pressing was checkpointed".into()
                 } else {
@@ -724,31 +732,31 @@ pub fn press(
                 },
             });
         }
-        if every > 0 && sim.step > 0 && sim.step % every == 0 {
-            out.steps = sim.step;
+        if every > 0 && sim.state.step > 0 && sim.state.step % every == 0 {
+            out.steps = sim.state.step;
             checkpoint(&PressState {
                 pressing: out.clone(),
-                sim: SimState::capture(&sim),
+                sim: sim.state.clone(),
             })?;
         }
         if fixed.is_none()
-            && sim.step % dc.press.dt_every == 0
+            && sim.state.step % dc.press.dt_every == 0
             && let Some(dt_cr) = sim.critical_time_step(None)
         {
-            sim.dt = alpha * dt_cr;
+            sim.set_time_step(alpha * dt_cr)?;
         }
-        let dt = sim.dt;
-        sim.dt = dt.min(due - sim.time);
+        let dt = sim.state.dt;
+        sim.set_time_step(dt.min(due - sim.state.time))?;
         // The step that lands on the last record time: keep its contacts (a read-only
         // pass, so the pressing is the same with or without it).
-        if next == records && sim.dt == due - sim.time {
+        if next == records && sim.state.dt == due - sim.state.time {
             out.last_contacts = sim.step_recording_contacts()?;
         } else {
             sim.step()?;
         }
-        sim.dt = dt;
-        let height = specimen.h0 + sim.walls[punch].displacement.z;
-        let p = &sim.particles;
+        sim.set_time_step(dt)?;
+        let height = specimen.h0 + sim.state.walls[punch].displacement.z;
+        let p = &sim.state.particles;
         for (i, x) in p.position.iter().enumerate() {
             if (x.x.hypot(x.y) > die_radius || x.z < 0.0 || x.z > height)
                 && !out.escaped.contains(&i)
@@ -758,6 +766,6 @@ pub fn press(
         }
     }
     progress.finish();
-    out.steps = sim.step;
+    out.steps = sim.state.step;
     Ok(out)
 }

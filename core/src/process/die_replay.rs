@@ -176,14 +176,18 @@ pub fn replay(
     let mut sim = crate::scene::build(&stage)?.sim;
     let mut out = Vec::with_capacity(stroke.heights.len() + 1);
     let mut record = |sim: &crate::simulation::Simulation| -> Result<()> {
-        let height = specimen.h0 + sim.walls[PUNCH].displacement.z;
-        let (density_specimen, density_rve) =
-            die_compaction::densities(&sim.particles.position, &sim.particles.radius, dc, height)?;
-        out.push(ReplayRecord {
-            time: sim.time,
+        let height = specimen.h0 + sim.state.walls[PUNCH].displacement.z;
+        let (density_specimen, density_rve) = die_compaction::densities(
+            &sim.state.particles.position,
+            &sim.state.particles.radius,
+            dc,
             height,
-            punch_pressure: sim.wall_force[PUNCH].z / area,
-            floor_pressure: -sim.wall_force[FLOOR].z / area,
+        )?;
+        out.push(ReplayRecord {
+            time: sim.state.time,
+            height,
+            punch_pressure: sim.state.wall_force[PUNCH].z / area,
+            floor_pressure: -sim.state.wall_force[FLOOR].z / area,
             density_specimen,
             density_rve,
         });

@@ -4,12 +4,12 @@
 
 use super::schema::*;
 use crate::accuracy::step::{COST_PER_PARTICLE_STEP, DEFAULT_ACCURACY, STABILITY_ALPHA};
-use crate::detect::{NeighborList, locality};
+use crate::detect::{Detection, locality};
 use crate::error::{Result, TampError};
 use crate::growth::Growth;
 use crate::material::Material;
 use crate::particles::Vec3;
-use crate::simulation::Simulation;
+use crate::simulation::{Model, Simulation};
 
 /// A built scene: the simulation ready to step, and what its build found.
 pub struct BuiltScene {
@@ -37,9 +37,9 @@ pub(super) fn v3(a: &[f64; 3]) -> Vec3 {
 /// reach (its initial speeds and the characteristic velocity, plus |g| times its
 /// duration) stay inside the range of a double, with a margin of 10⁶ for sums over
 /// many particles and steps. Otherwise some output would be inf or NaN.
-fn check_range(scene: &Scene, sim: &Simulation, steps: u64) -> Result<()> {
+fn check_range(scene: &Scene, sim: &Simulation, dt: f64, steps: u64) -> Result<()> {
     const MARGIN: f64 = 1e-6 * f64::MAX;
-    let p = &sim.particles;
+    let p = &sim.state.particles;
     for i in 0..p.len() {
         let (m, inertia) = (p.mass[i], p.inertia[i]);
         if !(m > 0.0 && m.is_finite() && inertia > 0.0 && inertia.is_finite()) {
@@ -53,13 +53,13 @@ fn check_range(scene: &Scene, sim: &Simulation, steps: u64) -> Result<()> {
             ));
         }
     }
-    if !(sim.dt > 0.0 && sim.dt.is_finite()) {
+    if !(dt > 0.0 && dt.is_finite()) {
         return Err(TampError::input(
             "time_step",
-            format!("gives a step of {:e} s: it must be > 0 and finite", sim.dt),
+            format!("gives a step of {:e} s: it must be > 0 and finite", dt),
         ));
     }
-    let duration = steps as f64 * sim.dt;
+    let duration = steps as f64 * dt;
     let fall = scene
         .gravity
         .map_or(0.0, |g| Vec3::new(g[0], g[1], g[2]).norm() * duration);
@@ -92,7 +92,7 @@ fn check_range(scene: &Scene, sim: &Simulation, steps: u64) -> Result<()> {
 /// a warning when a particle starts faster than the characteristic velocity the step
 /// was sized for.
 fn check_speeds(scene: &Scene, sim: &Simulation) -> Result<Vec<String>> {
-    let p = &sim.particles;
+    let p = &sim.state.particles;
     let Some((i, speed)) = (0..p.len())
         .map(|i| (i, p.velocity[i].norm()))
         .max_by(|a, b| a.1.total_cmp(&b.1))
@@ -107,14 +107,14 @@ fn check_speeds(scene: &Scene, sim: &Simulation) -> Result<Vec<String>> {
         (false, _) => "insert".to_string(),
     };
     let smallest = sim.smallest_radius();
-    let fraction = sim.limits.max_step_fraction;
-    if speed * sim.dt > fraction * smallest {
+    let fraction = sim.model.limits.max_step_fraction;
+    if speed * sim.state.dt > fraction * smallest {
         return Err(TampError::input(
             path,
             format!(
                 "{speed:e} m/s moves particle {id} {:.3e} m in one step of {:.3e} s, more than {fraction} of the smallest radius {smallest:e} m (stability.max_step_fraction), so contacts would be stepped over: raise time_step.characteristic_velocity to this speed or give a smaller time_step.fixed",
-                speed * sim.dt,
-                sim.dt
+                speed * sim.state.dt,
+                sim.state.dt
             ),
         ));
     }
@@ -171,17 +171,16 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
     )?;
     let detector = scene.broad_phase.kind.detector();
     if scene.broad_phase.sort {
-        let r_max = particles.radius.iter().cloned().fold(0.0, f64::max);
+        let r_max = particles.largest_radius();
         let edge = 2.0 * r_max + scene.broad_phase.skin_fraction * r_min;
         particles.permute(&locality::cell_order(&particles.position, edge));
     }
-    let neighbors = NeighborList::new(
+    let detection = Detection {
         detector,
-        scene.broad_phase.skin_fraction * r_min,
-        law.reach(),
+        skin: scene.broad_phase.skin_fraction * r_min,
+        reach: law.reach(),
         space,
-    );
-    let limits = scene.stability.limits();
+    };
     // A growth stage starts from the initial fraction of every radius; the
     // simulation is built at that size so no force is ever computed at full size.
     let target_radius = particles.radius.clone();
@@ -191,21 +190,20 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
             .iter_mut()
             .for_each(|r| *r *= g.initial_fraction);
     }
-    let mut sim = Simulation::new(
-        particles,
-        walls,
+    let model = Model {
         materials,
         pair_table,
         law,
-        scene.gravity.map(|g| v3(&g)),
-        scene.rotation.is_some(),
-        1.0, // replaced below once the estimate is known
-        neighbors,
-        limits,
-    )?;
-
-    sim.sources = sources;
-    sim.inertia_scale = super::physics::inertia_scale(scene.rotation.as_ref());
+        gravity: scene.gravity.map(|g| v3(&g)),
+        rotation: scene.rotation.is_some(),
+        inertia_scale: super::physics::inertia_scale(scene.rotation.as_ref()),
+        walls,
+        sources,
+        growth: None,
+        detection,
+        limits: scene.stability.limits(),
+    };
+    let mut sim = Simulation::new(model, particles)?;
     if let Some(g) = &scene.growth {
         let growth = Growth {
             duration: g.duration,
@@ -216,7 +214,7 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
     let ts = &scene.time_step;
     let mut warnings = Vec::new();
     let mut notes = Vec::new();
-    let model = crate::accuracy::model::for_law(&sim.law);
+    let model = crate::accuracy::model::for_law(&sim.model.law);
     let accuracy = match (ts.accuracy, ts.stated(), model) {
         (Some(a), _, _) => Some(a),
         (None, false, Some(_)) => Some(DEFAULT_ACCURACY),
@@ -300,7 +298,6 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
         };
         (dt_estimate, dt, None)
     };
-    sim.dt = dt;
     let steps = match (scene.run.steps, scene.run.duration) {
         (Some(s), _) => s,
         (None, Some(d)) => (d / dt).ceil() as u64,
@@ -308,7 +305,7 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
     };
     if let Some((a, choice, said)) = &chosen {
         let (a, choice) = (*a, *choice);
-        let bodies = sim.particles.len() + sim.sources.iter().map(|s| s.remaining).sum::<usize>();
+        let bodies = sim.state.particles.len() + sim.state.still_to_pour();
         notes.push(format!(
             "time step: accuracy {a:e}{} ({} error model): dt = {:.4e} s, {:.1} steps per contact (shortest contact {:.4e} s; {said}){}; predicted cost {steps} steps, about {:.2e} s of wall time ({bodies} particles at {:.1e} s per particle-step)",
             if ts.accuracy.is_none() { " (the default: the scene states no step)" } else { "" },
@@ -325,7 +322,8 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
             COST_PER_PARTICLE_STEP,
         ));
     }
-    check_range(scene, &sim, steps)?;
+    check_range(scene, &sim, dt, steps)?;
+    sim.set_time_step(dt)?;
     super::memory::check(scene, Some(steps))?;
     warnings.extend(check_speeds(scene, &sim)?);
     Ok(BuiltScene {

@@ -372,13 +372,12 @@ pub fn place(
                 material: material_id(&ins.material),
                 speed: ins.speed,
                 spin: ins.spin,
+                start: sch.start,
                 every: sch.every,
                 per_event: sch.per_event,
                 max_attempts: ins.max_attempts,
-                next: sch.start,
-                remaining: ins.count,
-                pending_radius: None,
-                rng: ChaCha8Rng::seed_from_u64(scene.seed.wrapping_add(1 + k as u64)),
+                count: ins.count,
+                seed: scene.seed.wrapping_add(1 + k as u64),
             });
             continue;
         }
@@ -464,7 +463,7 @@ fn check_initial_overlaps(
     }
     for (k, wall) in walls.iter().enumerate() {
         for i in 0..p.len() {
-            let overlap = wall.deepest_overlap(&p.position[i], p.radius[i]);
+            let overlap = wall.deepest_overlap(&wall.initial_pose(), &p.position[i], p.radius[i]);
             if overlap / p.radius[i] > tolerance {
                 errors.push(TampError::input(
                     path(i),
@@ -499,7 +498,8 @@ fn insert_random(
 ) -> Result<()> {
     let region = insertion_box(&ins.region);
     let law = ins.radius.distribution();
-    let clear = |x: &Vec3, r: f64| Boundary::clear_of_all(walls, x, r);
+    let poses: Vec<_> = walls.iter().map(Boundary::initial_pose).collect();
+    let clear = |x: &Vec3, r: f64| Boundary::clear_of_all(walls, &poses, x, r);
     let mut placed = Placed::with(
         space,
         &particles.position,

@@ -35,7 +35,8 @@ impl Simulation {
         &self,
         beyond: f64,
     ) -> impl Iterator<Item = (usize, usize, usize, f64)> + '_ {
-        self.neighbors
+        self.state
+            .neighbors
             .pairs
             .iter()
             .enumerate()
@@ -49,13 +50,14 @@ impl Simulation {
     /// Particle–boundary contacts closer than `beyond` to touching:
     /// (boundary, particle, facet, overlap).
     pub(super) fn touching_walls(&self, beyond: f64) -> Vec<(usize, usize, u32, f64)> {
-        let p = &self.particles;
+        let p = &self.state.particles;
         let mut out = Vec::new();
         let mut found = Vec::new();
-        for (w, wall) in self.walls.iter().enumerate() {
+        let walls = self.model.walls.iter().zip(&self.state.walls);
+        for (w, (wall, pose)) in walls.enumerate() {
             for i in 0..p.len() {
                 found.clear();
-                wall.contacts(&p.position[i], p.radius[i], beyond, &mut found);
+                wall.contacts(pose, &p.position[i], p.radius[i], beyond, &mut found);
                 out.extend(found.iter().map(|c| (w, i, c.facet, c.overlap)));
             }
         }
@@ -64,9 +66,9 @@ impl Simulation {
 
     /// The material pair and effective radius R* of particles `i` and `j`.
     pub(super) fn pair_of(&self, i: usize, j: usize) -> (&PairProperties, f64) {
-        let p = &self.particles;
+        let p = &self.state.particles;
         (
-            self.pair_table.get(p.material[i], p.material[j]),
+            self.model.pair_table.get(p.material[i], p.material[j]),
             effective_radius(p.radius[i], p.radius[j]),
         )
     }
@@ -74,16 +76,22 @@ impl Simulation {
     /// The material pair and effective radius R* of particle `i` against boundary `w`
     /// (R* by the boundary's curvature at the particle).
     pub(super) fn wall_pair_of(&self, w: usize, i: usize) -> (&PairProperties, f64) {
-        let (p, wall) = (&self.particles, &self.walls[w]);
+        let (p, wall, pose) = (
+            &self.state.particles,
+            &self.model.walls[w],
+            &self.state.walls[w],
+        );
         (
-            self.pair_table.get(p.material[i], wall.material),
-            wall.effective_radius(&p.position[i], p.radius[i]),
+            self.model.pair_table.get(p.material[i], wall.material),
+            wall.effective_radius(pose, &p.position[i], p.radius[i]),
         )
     }
 
     /// The state of the scene's laws, as the type `S` the force loop knows.
     pub(super) fn states_as<S: crate::contact::model::ContactState>(&self) -> &ContactStates<S> {
-        self.states
+        self.state
+            .contacts
+            .store()
             .as_any()
             .downcast_ref::<ContactStates<S>>()
             .expect("the contact states were made for the scene's laws")
@@ -92,7 +100,7 @@ impl Simulation {
     /// What the contacts keep between steps (read-only: for checkpoints, tests and
     /// diagnostics).
     pub fn contact_states(&self) -> &dyn StateStore {
-        &*self.states
+        self.state.contacts.store()
     }
 
     /// The tangential spring or force of the contact between particles `i` and `j`
@@ -101,8 +109,8 @@ impl Simulation {
     /// follow one contact.
     pub fn contact_tangential(&self, i: usize, j: usize) -> Option<Vec3> {
         let key = (i.min(j) as u32, i.max(j) as u32);
-        let k = self.neighbors.pairs.binary_search(&key).ok()?;
-        self.states.pair_tangential(k)
+        let k = self.state.neighbors.pairs.binary_search(&key).ok()?;
+        self.state.contacts.store().pair_tangential(k)
     }
 
     /// Number of particle–particle and particle–wall contacts at the current positions.
@@ -112,9 +120,10 @@ impl Simulation {
 
     /// Overlap of two particles (negative when apart), m.
     pub fn overlap(&self, i: usize, j: usize) -> f64 {
-        let p = &self.particles;
+        let p = &self.state.particles;
         let d = self
-            .neighbors
+            .model
+            .detection
             .space
             .displacement(&p.position[i], &p.position[j]);
         p.radius[i] + p.radius[j] - d.norm()

@@ -42,7 +42,9 @@ impl Simulation {
     /// Returns `None` when a nonlinear law has neither a characteristic velocity nor
     /// any current contact to take a stiffness from.
     pub fn critical_time_step(&self, characteristic_velocity: Option<f64>) -> Option<f64> {
-        self.law.visit(CriticalStep(self, characteristic_velocity))
+        self.model
+            .law
+            .visit(CriticalStep(self, characteristic_velocity))
     }
 
     pub(super) fn critical_time_step_with<N, D, T, C>(
@@ -56,7 +58,7 @@ impl Simulation {
         T: TangentialModel,
         C: CohesionModel,
     {
-        let p = &self.particles;
+        let p = &self.state.particles;
         let states = self.states_as::<StateOf<N, T>>();
         // LAMMPS's tangential dashpot x_γ,t c_n, c_n the contact's normal dashpot.
         let x_gamma_t = if D::ACTIVE && T::ACTIVE {
@@ -99,16 +101,16 @@ impl Simulation {
                 (p.mass[i], r, p.inertia[i], p.material[i], met[i])
             })
             .collect();
-        for src in self.sources.iter().filter(|s| s.remaining > 0) {
+        for src in self.pouring_sources() {
             let r = src.radius.min_radius();
             if r > 0.0 {
-                let m = self.materials[src.material].particle_density() * 4.0 / 3.0
+                let m = self.model.materials[src.material].particle_density() * 4.0 / 3.0
                     * std::f64::consts::PI
                     * r.powi(3);
                 bodies.push((
                     m,
                     r,
-                    self.inertia_scale * 0.4 * m * r * r,
+                    self.model.inertia_scale * 0.4 * m * r * r,
                     src.material,
                     ContactsMet::default(),
                 ));
@@ -118,9 +120,9 @@ impl Simulation {
         for (mass, radius, inertia, material, met) in bodies {
             let impact =
                 if !law.normal.stiffness_depends_on_speed() || characteristic_velocity.is_some() {
-                    (0..self.materials.len())
+                    (0..self.model.materials.len())
                         .map(|b| {
-                            let pair = self.pair_table.get(material, b);
+                            let pair = self.model.pair_table.get(material, b);
                             let v = characteristic_velocity.unwrap_or(0.0);
                             law.normal.impact_stiffness(mass, v, radius, pair)
                         })
@@ -128,7 +130,7 @@ impl Simulation {
                 } else {
                     0.0
                 };
-            let lever = if self.rotation {
+            let lever = if self.model.rotation {
                 1.0 + mass * radius.powi(2) / inertia
             } else {
                 1.0

@@ -6,6 +6,21 @@ use crate::contact::model::{
     CohesionModel, Composed, DampingModel, LawVisitor, NormalModel, StateOf, TangentialModel,
 };
 use crate::error::Result;
+use serde::{Deserialize, Serialize};
+
+/// The energy book's running sums (see the module documentation of `simulation`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct EnergyBook {
+    /// Work done on the particles by gravity and prescribed bodies since the start, J.
+    pub external_work: f64,
+    /// Σ |work| of the steps, J: the scale an energy gain is judged against.
+    pub external_work_scale: f64,
+    /// Power of the prescribed bodies at the end of the last step, W, which the
+    /// trapezoidal work rule averages with the next step's.
+    pub external_power: f64,
+    /// Mechanical energy when the book was opened, J.
+    pub initial_mechanical_energy: f64,
+}
 
 /// `Simulation::stored_energy` for the scene's laws as types.
 pub(super) struct StoredEnergy<'a>(&'a Simulation);
@@ -23,15 +38,17 @@ impl LawVisitor for StoredEnergy<'_> {
 impl Simulation {
     /// Make the present state the reference of the energy book (W = 0, D = 0).
     pub(super) fn restart_energy_book(&mut self) {
-        self.external_work = 0.0;
-        self.external_work_scale = 0.0;
-        self.external_power = self.prescribed_power();
-        self.initial_mechanical_energy = self.mechanical_energy();
+        self.state.energy = EnergyBook {
+            external_work: 0.0,
+            external_work_scale: 0.0,
+            external_power: self.prescribed_power(),
+            initial_mechanical_energy: self.mechanical_energy(),
+        };
     }
 
     /// Power the prescribed bodies put into the particles at the current state, W.
     pub(super) fn prescribed_power(&self) -> f64 {
-        let p = &self.particles;
+        let p = &self.state.particles;
         let driven: f64 = (0..p.len())
             .filter(|&i| p.prescribed[i])
             .map(|i| -p.force[i].dot(&p.velocity[i]))
@@ -41,16 +58,17 @@ impl Simulation {
 
     /// The walls' part of `prescribed_power`, W.
     pub(super) fn walls_power(&self) -> f64 {
-        self.walls
+        self.state
+            .walls
             .iter()
-            .zip(&self.wall_force)
+            .zip(&self.state.wall_force)
             .map(|(w, f)| -f.dot(&w.velocity))
             .sum()
     }
 
     /// Energy stored in all contacts (pairs and walls) and in cohesion, J.
     pub fn stored_energy(&self) -> f64 {
-        self.law.visit(StoredEnergy(self))
+        self.model.law.visit(StoredEnergy(self))
     }
 
     pub(super) fn stored_energy_with<N, D, T, C>(&self, law: &Composed<N, D, T, C>) -> f64
@@ -83,8 +101,8 @@ impl Simulation {
     /// Potential energy of the free particles in the scene's gravity, −Σ m g·x (zero at
     /// the origin), J. Reported whether or not gravity acts yet (growth stage).
     pub fn gravitational_energy(&self) -> f64 {
-        let p = &self.particles;
-        self.gravity.map_or(0.0, |g| {
+        let p = &self.state.particles;
+        self.model.gravity.map_or(0.0, |g| {
             (0..p.len())
                 .filter(|&i| !p.prescribed[i])
                 .map(|i| -p.mass[i] * g.dot(&p.position[i]))
@@ -94,7 +112,8 @@ impl Simulation {
 
     /// Kinetic energy of translation and spin of all particles, Σ ½ m v² + ½ I ω², J.
     pub fn kinetic_energy(&self) -> f64 {
-        self.particles.translational_kinetic_energy() + self.particles.rotational_kinetic_energy()
+        self.state.particles.translational_kinetic_energy()
+            + self.state.particles.rotational_kinetic_energy()
     }
 
     /// Mechanical energy E_mech: kinetic energy plus the energy stored in the contacts'
@@ -105,19 +124,21 @@ impl Simulation {
 
     /// Energy dissipated so far: E_mech(0) + W − E_mech. Negative means energy was created.
     pub fn dissipated_energy(&self) -> f64 {
-        self.initial_mechanical_energy + self.external_work - self.mechanical_energy()
+        self.state.energy.initial_mechanical_energy + self.state.energy.external_work
+            - self.mechanical_energy()
     }
 
     pub(super) fn check_energy(&self) -> Result<()> {
         let gained = -self.dissipated_energy();
-        let scale = self.initial_mechanical_energy.abs() + self.external_work_scale;
+        let book = &self.state.energy;
+        let scale = book.initial_mechanical_energy.abs() + book.external_work_scale;
         if !(gained.is_finite() && scale.is_finite()) {
             return Err(self.unstable(format!(
                 "the energy book is not finite (energy gained {gained:e} J, scale {scale:e} J): a quantity beyond the range of a double"
             )));
         }
-        if scale > 0.0 && gained > self.limits.max_energy_growth * scale {
-            let p = &self.particles;
+        if scale > 0.0 && gained > self.model.limits.max_energy_growth * scale {
+            let p = &self.state.particles;
             let fastest = (0..p.len())
                 .max_by(|&a, &b| {
                     p.velocity[a]

@@ -4,7 +4,7 @@
 
 use super::Simulation;
 use super::contact_pass::{ContactPass, Spins};
-use crate::boundary::{Boundary, shape::ShapeContact};
+use crate::boundary::{Boundary, WallPose, shape::ShapeContact};
 use crate::contact::lever_arm::Arms;
 use crate::contact::model::{
     CohesionModel, Composed, DampingModel, NormalModel, StateOf, TangentialModel,
@@ -155,8 +155,8 @@ pub(super) fn pair_geometry(
     (g, arm_i, arm_j)
 }
 
-/// The geometry of particle i's contact `c` with `wall`, and i's lever arms in the
-/// scene's convention.
+/// The geometry of particle i's contact `c` with `wall` at `pose`, and i's lever arms
+/// in the scene's convention.
 #[inline(always)]
 pub(super) fn wall_geometry(
     p: &Particles,
@@ -164,17 +164,18 @@ pub(super) fn wall_geometry(
     i: usize,
     c: &ShapeContact,
     wall: &Boundary,
+    pose: &WallPose,
 ) -> (ContactGeometry, Arms) {
     let (overlap, normal) = (c.overlap, c.normal);
     let arm = spins.arms.wall(p.radius[i], overlap);
-    let mut relative_velocity = p.velocity[i] - wall.velocity;
+    let mut relative_velocity = p.velocity[i] - pose.velocity;
     if spins.on {
         relative_velocity -= p.omega[i].cross(&normal) * arm.velocity;
     }
     let g = ContactGeometry {
         normal,
         overlap,
-        effective_radius: wall.effective_radius(&p.position[i], p.radius[i]),
+        effective_radius: wall.effective_radius(pose, &p.position[i], p.radius[i]),
         effective_mass: p.mass[i],
         relative_velocity,
     };
@@ -214,7 +215,7 @@ impl Simulation {
     {
         let kept = ContactStates::<StateOf<N, T>>::KEPT;
         let gravity = self.active_gravity();
-        let p = &mut self.particles;
+        let p = &mut self.state.particles;
         let n = p.len();
         // Forces start from the weights (or zero), torques from zero, in one pass.
         match gravity {
@@ -224,14 +225,16 @@ impl Simulation {
         if spins.on {
             p.torque.iter_mut().for_each(|t| *t = Vec3::zeros());
         }
-        let dt = self.dt;
-        let max_fraction = self.limits.max_overlap_fraction;
-        let mut worst = self.max_overlap_ratio;
+        let dt = self.state.dt;
+        let max_fraction = self.model.limits.max_overlap_fraction;
+        let mut worst = self.state.max_overlap_ratio;
         let torques = spins.on && T::ACTIVE;
         let law_reach = law.cohesion.reach();
-        let image = self.neighbors.space.minimum_image();
+        let image = self.model.detection.space.minimum_image();
         let states = self
-            .states
+            .state
+            .contacts
+            .store_mut()
             .as_any_mut()
             .downcast_mut::<ContactStates<StateOf<N, T>>>()
             .expect("the contact states were made for the scene's laws");
@@ -268,7 +271,7 @@ impl Simulation {
             mass,
             prescribed,
         };
-        let pairs = &self.neighbors.pairs[..];
+        let pairs = &self.state.neighbors.pairs[..];
         let pair_states: &mut [StateOf<N, T>] = if kept {
             &mut states.pairs[..pairs.len()]
         } else {
@@ -278,7 +281,7 @@ impl Simulation {
         // Pass 1, over every pair of the list: the pairs within reach of their law,
         // with their separation; the state of every other pair is reset (it is apart).
         // Most pairs of a Verlet list are apart, and this loop is all they cost.
-        let mut near = std::mem::take(&mut self.near);
+        let mut near = std::mem::take(&mut self.work.near);
         near.clear();
         for (k, &(i, j)) in pairs.iter().enumerate() {
             let (i, j) = (i as usize, j as usize);
@@ -307,15 +310,15 @@ impl Simulation {
             if dist == 0.0 {
                 // The build refuses coincident centres, and a pair driven together
                 // meets the overlap limit first unless it is at least (R_i + R_j)/R_min ≥ 2.
-                self.near = near;
+                self.work.near = near;
                 return Err(self.unstable(format!(
                     "contact {}-{}: the centres coincide (overlap {overlap:.4e} m), so the contact normal is undefined",
-                    self.particles.id[i], self.particles.id[j]
+                    self.state.particles.id[i], self.state.particles.id[j]
                 )));
             }
             let (g, arm_i, arm_j) = pair_geometry(&bodies, spins, i, j, d, dist, overlap);
             let normal = g.normal;
-            let pair = self.pair_table.get(material[i], material[j]);
+            let pair = self.model.pair_table.get(material[i], material[j]);
             let state = if kept {
                 &mut pair_states[k]
             } else {
@@ -324,10 +327,10 @@ impl Simulation {
             let (total, f) = match resolve(law, &g, ratio, max_fraction, pair, state, dt) {
                 Ok(forces) => forces,
                 Err(what) => {
-                    self.near = near;
+                    self.work.near = near;
                     return Err(self.unstable(format!(
                         "contact {}-{}: {what}",
-                        self.particles.id[i], self.particles.id[j]
+                        self.state.particles.id[i], self.state.particles.id[j]
                     )));
                 }
             };
@@ -339,15 +342,16 @@ impl Simulation {
                 torque[j] += t * arm_j.torque;
             }
         }
-        self.near = near;
-        let p = &mut self.particles;
+        self.work.near = near;
+        let p = &mut self.state.particles;
 
-        let mut found = std::mem::take(&mut self.scratch);
-        for (w, wall) in self.walls.iter().enumerate() {
+        let mut found = std::mem::take(&mut self.work.found);
+        let walls = self.model.walls.iter().zip(&self.state.walls);
+        for (w, (wall, pose)) in walls.enumerate() {
             let mut on_wall = Vec3::zeros();
             for i in 0..n {
                 found.clear();
-                wall.contacts(&p.position[i], p.radius[i], law_reach, &mut found);
+                wall.contacts(pose, &p.position[i], p.radius[i], law_reach, &mut found);
                 if kept {
                     // The states of the facets touched last step, carried to this
                     // step's contacts by facet.
@@ -357,8 +361,8 @@ impl Simulation {
                     let (facet, normal) = (contact.facet, contact.normal);
                     let ratio = contact.overlap / p.radius[i];
                     worst = worst.max(ratio);
-                    let (g, arm) = wall_geometry(p, spins, i, contact, wall);
-                    let pair = self.pair_table.get(p.material[i], wall.material);
+                    let (g, arm) = wall_geometry(p, spins, i, contact, wall, pose);
+                    let pair = self.model.pair_table.get(p.material[i], wall.material);
                     let state = if kept {
                         &mut states.walls[w][i][c].1
                     } else {
@@ -381,10 +385,10 @@ impl Simulation {
                     }
                 }
             }
-            self.wall_force[w] = on_wall;
+            self.state.wall_force[w] = on_wall;
         }
-        self.scratch = found;
-        self.max_overlap_ratio = worst;
+        self.work.found = found;
+        self.state.max_overlap_ratio = worst;
         Ok(())
     }
 }

@@ -30,7 +30,7 @@ impl Simulation {
     /// state, so nothing is advanced. Contacts the force loop will refuse (overlap
     /// limit, non-finite force) are left out: that loop reports them.
     pub(super) fn contact_records(&self) -> Vec<ContactRecord> {
-        self.law.visit(Records(self))
+        self.model.law.visit(Records(self))
     }
 
     fn contact_records_with<N, D, T, C>(&self, law: &Composed<N, D, T, C>) -> Vec<ContactRecord>
@@ -41,9 +41,9 @@ impl Simulation {
         C: CohesionModel,
     {
         let kept = ContactStates::<StateOf<N, T>>::KEPT;
-        let spins = Spins::of(&self.law, self.rotation);
+        let spins = Spins::of(&self.model.law, self.model.rotation);
         let states = self.states_as::<StateOf<N, T>>();
-        let p = &self.particles;
+        let p = &self.state.particles;
         let n = p.len();
         let bodies = Bodies {
             velocity: &p.velocity[..n],
@@ -52,11 +52,11 @@ impl Simulation {
             mass: &p.mass[..n],
             prescribed: &p.prescribed[..n],
         };
-        let (dt, max_fraction) = (self.dt, self.limits.max_overlap_fraction);
+        let (dt, max_fraction) = (self.state.dt, self.model.limits.max_overlap_fraction);
         let law_reach = law.cohesion.reach();
-        let image = self.neighbors.space.minimum_image();
+        let image = self.model.detection.space.minimum_image();
         let mut out = Vec::new();
-        for (k, &(i, j)) in self.neighbors.pairs.iter().enumerate() {
+        for (k, &(i, j)) in self.state.neighbors.pairs.iter().enumerate() {
             let (i, j) = (i as usize, j as usize);
             let d = image.displacement(&p.position[i], &p.position[j]);
             let reach = p.radius[i] + p.radius[j];
@@ -68,7 +68,7 @@ impl Simulation {
             let overlap = reach - dist;
             let ratio = overlap / p.radius[i].min(p.radius[j]);
             let (g, arm_i, _) = pair_geometry(&bodies, spins, i, j, d, dist, overlap);
-            let pair = self.pair_table.get(p.material[i], p.material[j]);
+            let pair = self.model.pair_table.get(p.material[i], p.material[j]);
             let mut state = if kept {
                 states.pairs[k]
             } else {
@@ -89,14 +89,15 @@ impl Simulation {
             }
         }
         let mut found = Vec::new();
-        for (w, wall) in self.walls.iter().enumerate() {
+        let walls = self.model.walls.iter().zip(&self.state.walls);
+        for (w, (wall, pose)) in walls.enumerate() {
             for i in 0..n {
                 found.clear();
-                wall.contacts(&p.position[i], p.radius[i], law_reach, &mut found);
+                wall.contacts(pose, &p.position[i], p.radius[i], law_reach, &mut found);
                 for contact in &found {
                     let ratio = contact.overlap / p.radius[i];
-                    let (g, arm) = wall_geometry(p, spins, i, contact, wall);
-                    let pair = self.pair_table.get(p.material[i], wall.material);
+                    let (g, arm) = wall_geometry(p, spins, i, contact, wall, pose);
+                    let pair = self.model.pair_table.get(p.material[i], wall.material);
                     let mut state = if kept {
                         carried_state(&states.walls[w][i], contact.facet)
                     } else {

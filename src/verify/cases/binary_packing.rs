@@ -115,8 +115,8 @@ fn run_point(ctx: &CaseContext, base: &Scene, ratio: usize) -> Result<Point> {
     let built = scene::build(&scene)?;
     let mut sim = built.sim;
     sim.run_with(built.steps, |_| {})?;
-    let p = &sim.particles;
-    let bed = bulk_packing_fraction(&p.position, &p.radius, &sim.neighbors.space, 2, 0.0)?;
+    let p = &sim.state.particles;
+    let bed = bulk_packing_fraction(&p.position, &p.radius, &sim.model.detection.space, 2, 0.0)?;
     write_state(ctx, ratio, &p.position, &p.radius)?;
     Ok(Point {
         ratio,

@@ -12,7 +12,7 @@ use crate::verify::{CaseContext, Measured};
 /// Largest |E(t) − E(0)| / E(0) over `duration`, sampled every step, and the contacts seen.
 fn worst_excursion(scene: &Scene, dt: f64, duration: f64) -> Result<(f64, usize)> {
     let mut built = scene::build(scene)?;
-    built.sim.dt = dt;
+    built.sim.set_time_step(dt)?;
     let sim = &mut built.sim;
     let e0 = sim.mechanical_energy();
     let (mut worst, mut contacts) = (0.0f64, 0usize);
@@ -42,7 +42,7 @@ pub(crate) fn drift_and_order(scene: &Scene) -> Result<(f64, f64)> {
         .run
         .steps
         .ok_or_else(|| TampError::Other("scene must give run.steps".into()))?;
-    let dt = scene::build(scene)?.sim.dt;
+    let dt = scene::build(scene)?.sim.dt();
     let duration = dt * steps as f64;
     let mut points = Vec::new();
     let mut drift = 0.0;

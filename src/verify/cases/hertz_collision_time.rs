@@ -11,10 +11,11 @@ use crate::verify::{CaseContext, Measured};
 
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let mut sim = scene::build(&ctx.scene()?)?.sim;
-    let p = &sim.particles;
+    let p = &sim.state.particles;
     let m_eff = effective_mass(p.mass[0], p.mass[1]);
     let r_eff = effective_radius(p.radius[0], p.radius[1]);
     let e_eff = sim
+        .model
         .pair_table
         .get(p.material[0], p.material[1])
         .effective_modulus

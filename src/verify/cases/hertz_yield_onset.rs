@@ -29,13 +29,18 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
 
     // Displacement-driven compression: both centres prescribed, read F(h) at h_Y.
     let mut sim = scene::build(&scene)?.sim;
-    let e_eff = sim.pair_table.get(0, 0).effective_modulus.unwrap_or(0.0);
+    let e_eff = sim
+        .model
+        .pair_table
+        .get(0, 0)
+        .effective_modulus
+        .unwrap_or(0.0);
     let h_y = hertz_overlap_at_force(f_y, 0.5 * radius, e_eff);
-    let mut prev = (sim.overlap(0, 1), sim.particles.force[0].norm());
+    let mut prev = (sim.overlap(0, 1), sim.state.particles.force[0].norm());
     let mut f_at_h_y = None;
     for _ in 0..1_000_000 {
         sim.step()?;
-        let now = (sim.overlap(0, 1), sim.particles.force[0].norm());
+        let now = (sim.overlap(0, 1), sim.state.particles.force[0].norm());
         if prev.0 < h_y && now.0 >= h_y {
             let w = (h_y - prev.0) / (now.0 - prev.0);
             f_at_h_y = Some(prev.1 + w * (now.1 - prev.1));

@@ -31,7 +31,9 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
             }
         }
         let sim = scene::build(&s)?.sim;
-        let strength = sim.materials[0].hollomon.map_or(f64::NAN, |h| h.strength);
+        let strength = sim.model.materials[0]
+            .hollomon
+            .map_or(f64::NAN, |h| h.strength);
         out.push(Measured::new(name, strength, reference));
     }
     Ok(out)

@@ -27,9 +27,9 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         s.particles[0].velocity = Some([0.5 * v, 0.0, 0.0]);
         s.particles[1].velocity = Some([-0.5 * v, 0.0, 0.0]);
         let mut sim = scene::build(&s)?.sim;
-        let p = &sim.particles;
+        let p = &sim.state.particles;
         let m_eff = effective_mass(p.mass[0], p.mass[1]);
-        let pair = sim.pair_table.get(0, 0);
+        let pair = sim.model.pair_table.get(0, 0);
         let e_star = pair.effective_modulus.unwrap_or(0.0);
         let k_tilde = 4.0 / 3.0 * e_star * (0.5 * p.radius[0]).sqrt();
         let c = binary_collision(&mut sim, 0, 1, 10_000_000)?;

@@ -133,7 +133,7 @@ pub(super) fn rebound_and_contact_steps(
             "{run}: the sphere still touches the wall after {steps} steps"
         )));
     }
-    let p = &sim.particles;
+    let p = &sim.state.particles;
     Ok((
         p.velocity[0].x,
         p.velocity[0].z,

@@ -50,7 +50,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     mine.record(&sim);
     for _ in 0..built.steps {
         sim.step()?;
-        if sim.step % every == 0 || sim.step == built.steps {
+        if sim.state.step % every == 0 || sim.state.step == built.steps {
             mine.record(&sim);
         }
     }

@@ -129,7 +129,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         for _ in 0..row.steps {
             sim.step()?;
         }
-        let p = &sim.particles;
+        let p = &sim.state.particles;
         out.push(Measured::new(&format!("{tag}_vx"), p.velocity[0].x, row.vx));
         out.push(Measured::new(&format!("{tag}_vy"), p.velocity[0].y, row.vy));
         out.push(Measured::new(

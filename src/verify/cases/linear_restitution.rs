@@ -32,7 +32,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         let mut s = base.clone();
         s.contact.damping = (gamma_n > 0.0).then_some(Damping::Constant(Constant { gamma_n }));
         let mut sim = scene::build(&s)?.sim;
-        let p = &sim.particles;
+        let p = &sim.state.particles;
         let m_eff = effective_mass(p.mass[0], p.mass[1]);
         let approach =
             -(p.velocity[0] - p.velocity[1]).dot(&(p.position[0] - p.position[1]).normalize());

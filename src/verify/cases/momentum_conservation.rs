@@ -11,7 +11,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let scene = ctx.scene()?;
     let built = scene::build(&scene)?;
     let mut sim = built.sim;
-    let p = &sim.particles;
+    let p = &sim.state.particles;
     let p0 = p.linear_momentum();
     let l0 = p.angular_momentum();
     // Scales: the sums of magnitudes, so the errors are relative to the momentum in play.
@@ -27,7 +27,8 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     sim.run_with(built.steps, |s| {
         contacts += s.contact_count();
         sliding_torque = sliding_torque.max(
-            s.particles
+            s.state
+                .particles
                 .torque
                 .iter()
                 .map(|t| t.norm())
@@ -39,7 +40,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
             "no frictional contact occurred: the case would test nothing".into(),
         ));
     }
-    let p = &sim.particles;
+    let p = &sim.state.particles;
     Ok(vec![
         Measured::new(
             "linear_momentum_error",

@@ -32,8 +32,8 @@ fn interior_packing_fraction(scene: &Scene) -> Result<f64> {
     let built = scene::build(scene)?;
     let mut sim = built.sim;
     sim.run_with(built.steps, |_| {})?;
-    let p = &sim.particles;
-    let d = 2.0 * p.radius.iter().cloned().fold(0.0, f64::max);
+    let p = &sim.state.particles;
+    let d = 2.0 * p.largest_radius();
     let top = (0..p.len())
         .map(|i| p.position[i].z + p.radius[i])
         .fold(f64::NEG_INFINITY, f64::max);
@@ -42,7 +42,7 @@ fn interior_packing_fraction(scene: &Scene) -> Result<f64> {
         lo: 4.0 * d,
         hi: top - 4.0 * d,
     };
-    packing_fraction(&p.position, &p.radius, &region, &sim.neighbors.space)
+    packing_fraction(&p.position, &p.radius, &region, &sim.model.detection.space)
 }
 
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {

@@ -44,8 +44,8 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
             friction_pairs: Vec::new(),
         });
         let mut sim = scene::build(&s)?.sim;
-        let v0 = sim.particles.velocity[0];
-        let radius = sim.particles.radius[0];
+        let v0 = sim.state.particles.velocity[0];
+        let radius = sim.state.particles.radius[0];
         let (mut touched, mut released) = (false, false);
         for _ in 0..10_000_000u64 {
             sim.step()?;
@@ -62,7 +62,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
                 law.name()
             )));
         }
-        let v1 = sim.particles.velocity[0];
+        let v1 = sim.state.particles.velocity[0];
         let restitution = v1.z / -v0.z;
         let impulse_dv = friction * (1.0 + restitution) * -v0.z;
         out.push(Measured::new(
@@ -72,7 +72,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         ));
         out.push(Measured::new(
             &format!("spin_error_{}", law.name()),
-            sim.particles.omega[0].y * radius,
+            sim.state.particles.omega[0].y * radius,
             2.5 * impulse_dv,
         ));
     }

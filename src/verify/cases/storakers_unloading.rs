@@ -18,7 +18,7 @@ const MAX_OVERLAP: f64 = 3e-7;
 fn drive(sim: &mut Simulation, speed: f64) {
     for (i, sign) in [(0, 1.0), (1, -1.0)] {
         let v = Vec3::new(sign * speed, 0.0, 0.0);
-        sim.particles.prescribe(i, v);
+        sim.state.particles.prescribe(i, v);
     }
 }
 
@@ -58,7 +58,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     loop {
         sim.step()?;
         let overlap = sim.overlap(0, 1);
-        if sim.particles.force[0].norm() == 0.0 {
+        if sim.state.particles.force[0].norm() == 0.0 {
             break;
         }
         last_loaded = overlap;
@@ -70,10 +70,10 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let residual = 0.5 * (last_loaded + sim.overlap(0, 1));
 
     drive(&mut sim, speed);
-    let mut prev = (sim.overlap(0, 1), sim.particles.force[0].norm());
+    let mut prev = (sim.overlap(0, 1), sim.state.particles.force[0].norm());
     let reload_force = loop {
         sim.step()?;
-        let now = (sim.overlap(0, 1), sim.particles.force[0].norm());
+        let now = (sim.overlap(0, 1), sim.state.particles.force[0].norm());
         if now.0 >= delta_max {
             let w = (delta_max - prev.0) / (now.0 - prev.0);
             break prev.1 + w * (now.1 - prev.1);

@@ -28,10 +28,11 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         return Err(TampError::Other("the scene must use thornton".into()));
     };
     let sim = scene::build(&base)?.sim;
-    let p = &sim.particles;
+    let p = &sim.state.particles;
     let v_y = yield_velocity(
         law.yield_pressure,
-        sim.pair_table
+        sim.model
+            .pair_table
             .get(p.material[0], p.material[1])
             .effective_modulus
             .expect("thornton needs E and nu"),

@@ -38,7 +38,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         let sim = scene::build(&s)?.sim;
         out.push(Measured::new(
             &format!("force_at_separation_{name}"),
-            sim.particles.force[0].x,
+            sim.state.particles.force[0].x,
             hamaker * r_eff / (6.0 * gap * gap),
         ));
     }
@@ -52,7 +52,12 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
             apart += 1;
         }
     }
-    let e_star = sim.pair_table.get(0, 0).effective_modulus.unwrap_or(0.0);
+    let e_star = sim
+        .model
+        .pair_table
+        .get(0, 0)
+        .effective_modulus
+        .unwrap_or(0.0);
     let pull = hamaker * r_eff / (6.0 * min_separation * min_separation);
     out.push(Measured::new("steps_apart", apart as f64, 0.0));
     out.push(Measured::new(
