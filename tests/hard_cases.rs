@@ -672,6 +672,28 @@ fn an_overflowing_energy_ends_the_run_instead_of_reaching_an_output() {
     }
 }
 
+/// A step a process computes during a run (the pressing re-estimates it) that is not
+/// positive and finite stops the run with exit 3 naming the step; it never becomes
+/// the run's Δt.
+#[test]
+fn a_time_step_that_is_not_positive_and_finite_stops_the_run() {
+    let mut sim = built(&common::base()).sim;
+    let dt = sim.dt();
+    sim.step().unwrap();
+    for bad in [f64::NAN, 0.0, -dt, f64::INFINITY] {
+        let err = sim.set_time_step(bad).unwrap_err();
+        assert_eq!(err.exit_code(), 3, "{err}");
+        match err {
+            TampError::Unstable { step, what, .. } => {
+                assert_eq!(step, 1);
+                assert!(what.contains("the time step became"), "{what}");
+            }
+            other => panic!("expected exit 3, got {other:?}"),
+        }
+        assert_eq!(sim.dt(), dt);
+    }
+}
+
 /// Issue 27, class 1: spheres meeting head-on far faster than the characteristic
 /// velocity their step was sized for could pass through each other with exit 0. Here
 /// the step is 0.70 µs, so at 400 m/s each sphere moves 0.28 mm a step, beyond a

@@ -13,20 +13,19 @@ use crate::output::{
 };
 use crate::progress::Progress;
 use crate::scene;
-use crate::simulation::Simulation;
-use crate::simulation::State;
+use crate::simulation::{Simulation, State};
 use crate::until::Until;
 use serde::{Deserialize, Serialize};
 use std::borrow::Cow;
 use std::fmt::Write;
 use std::path::Path;
 
-/// What a resumed run needs besides the simulation to write the same files as an
-/// uninterrupted one: everything the outputs have accumulated so far. Borrowed when
-/// written, so a checkpoint does not copy the trajectory text.
+/// What a resumed run needs: the simulation's state, and, to write the same files as
+/// an uninterrupted run, everything the outputs have accumulated so far. Borrowed
+/// when written, so a checkpoint copies neither the state nor the trajectory text.
 #[derive(Serialize, Deserialize)]
 struct RunState<'a> {
-    sim: State,
+    sim: Cow<'a, State>,
     series_rows: Cow<'a, [Vec<f64>]>,
     trajectory: Cow<'a, str>,
     vtk_frames: usize,
@@ -172,7 +171,7 @@ pub fn run_scene(
             );
         }
         let state = saved.into_state(sha, &checkpoint_path)?;
-        sim.resume(state.sim)?;
+        sim.resume(state.sim.into_owned())?;
         series.rows = state.series_rows.into_owned();
         trajectory = state.trajectory.into_owned();
         frames = state.vtk_frames;
@@ -241,7 +240,7 @@ pub fn run_scene(
         let signal = crate::interrupt::received();
         if checkpoint_every > 0 && (sim.state.step % checkpoint_every == 0 || signal.is_some()) {
             let state = RunState {
-                sim: sim.state.clone(),
+                sim: Cow::Borrowed(&sim.state),
                 series_rows: Cow::Borrowed(&series.rows),
                 trajectory: Cow::Borrowed(&trajectory),
                 vtk_frames: frames,

@@ -37,13 +37,12 @@ use crate::contact::record::ContactRecord;
 use crate::error::{Result, TampError};
 use crate::generate::rsi::{InsertionBox, Placed};
 use crate::measure::{Region, packing::packing_fraction};
-use crate::particles::Vec3;
+use crate::particles::{Particles, Vec3};
 use crate::progress::Progress;
 use crate::scene::schema::{ContactSpec, ParticleSpec, RunSpec, Scene};
 use crate::scene::walls::{MotionSpec, ShapeSpec, WallSpec};
 use crate::scene::{self, validate};
-use crate::simulation::Simulation;
-use crate::simulation::State;
+use crate::simulation::{Simulation, State};
 use crate::space::Space;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
@@ -253,12 +252,8 @@ fn top_of_bed(sim: &Simulation) -> f64 {
 
 /// Solid fraction of the die cylinder up to `height` and of the RVE centred at
 /// half that height (Rojek §5, Fig 15).
-pub fn densities(
-    positions: &[Vec3],
-    radii: &[f64],
-    dc: &DieCompactionSpec,
-    height: f64,
-) -> Result<(f64, f64)> {
+pub fn densities(particles: &Particles, dc: &DieCompactionSpec, height: f64) -> Result<(f64, f64)> {
+    let (positions, radii) = (&particles.position, &particles.radius);
     densities_in(positions, radii, dc.die_diameter, dc.rve_diameter, height)
 }
 
@@ -567,12 +562,7 @@ pub fn prepare(file: &DieCompactionFile, quiet: bool) -> Result<Specimen> {
     }
     progress.finish();
     let h0 = top_of_bed(&sim);
-    let (density_specimen, density_rve) = densities(
-        &sim.state.particles.position,
-        &sim.state.particles.radius,
-        dc,
-        h0,
-    )?;
+    let (density_specimen, density_rve) = densities(&sim.state.particles, dc, h0)?;
     Ok(Specimen {
         h0,
         density_specimen,
@@ -652,12 +642,7 @@ pub fn press(
     let records = dc.press.records;
     let record = |sim: &Simulation, out: &mut Pressing| -> Result<()> {
         let height = specimen.h0 + sim.state.walls[punch].displacement.z;
-        let (density_specimen, density_rve) = densities(
-            &sim.state.particles.position,
-            &sim.state.particles.radius,
-            dc,
-            height,
-        )?;
+        let (density_specimen, density_rve) = densities(&sim.state.particles, dc, height)?;
         let crate::boundary::BoundaryMotion::Pressed(load) = &sim.model.walls[punch].motion else {
             unreachable!("the punch is pressure-loaded")
         };

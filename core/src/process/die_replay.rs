@@ -177,12 +177,8 @@ pub fn replay(
     let mut out = Vec::with_capacity(stroke.heights.len() + 1);
     let mut record = |sim: &crate::simulation::Simulation| -> Result<()> {
         let height = specimen.h0 + sim.state.walls[PUNCH].displacement.z;
-        let (density_specimen, density_rve) = die_compaction::densities(
-            &sim.state.particles.position,
-            &sim.state.particles.radius,
-            dc,
-            height,
-        )?;
+        let (density_specimen, density_rve) =
+            die_compaction::densities(&sim.state.particles, dc, height)?;
         out.push(ReplayRecord {
             time: sim.state.time,
             height,

@@ -108,13 +108,13 @@ impl Simulation {
     }
 
     /// Step on with Δt = `dt` from now: the scene's estimate, or a process's new one
-    /// (a pressing re-estimates it as the specimen stiffens). Refuses a step that is
-    /// not positive and finite.
+    /// (a pressing re-estimates it as the specimen stiffens). A step that is not
+    /// positive and finite stops the run (exit 3); the build refuses such an estimate
+    /// earlier, as bad input naming `time_step`.
     pub fn set_time_step(&mut self, dt: f64) -> Result<()> {
         if !(dt > 0.0 && dt.is_finite()) {
-            return Err(TampError::Other(format!(
-                "time step {dt:e} s at step {}: a step must be positive and finite",
-                self.state.step
+            return Err(self.unstable(format!(
+                "the time step became {dt:e} s; a step must be positive and finite"
             )));
         }
         self.state.dt = dt;
