@@ -70,43 +70,88 @@ fn collision(
     approach: impl Fn(&Simulation) -> f64,
     force: impl Fn(&Simulation) -> f64,
 ) -> Result<Collision> {
-    let v_before = approach(sim);
+    let mut watch = CollisionWatch::new(overlap(sim), approach(sim));
     let dt = sim.state.dt;
-    let mut prev = overlap(sim);
-    let (mut start, mut end) = (None, None);
-    let mut samples: Vec<f64> = Vec::new();
-    let mut forces: Vec<f64> = Vec::new();
     for _ in 0..max_steps {
         sim.step()?;
-        let now = overlap(sim);
-        if start.is_none() && prev <= 0.0 && now > 0.0 {
-            start = Some(sim.state.time - dt + dt * (-prev) / (now - prev));
-        }
-        if start.is_some() {
-            samples.push(now);
-            forces.push(force(sim));
-        }
-        if start.is_some() && prev > 0.0 && now <= 0.0 {
-            end = Some(sim.state.time - dt + dt * prev / (prev - now));
+        if watch.observe(sim.state.time, dt, overlap(sim), || force(sim)) {
             break;
         }
-        prev = now;
     }
-    let (Some(start), Some(end)) = (start, end) else {
-        return Err(TampError::Other(format!(
+    watch.finish(approach(sim)).ok_or_else(|| {
+        TampError::Other(format!(
             "{bodies} did not complete a collision in {max_steps} steps"
-        )));
-    };
-    let (k, max_overlap) = refined_peak(&samples);
-    // The last sample is after separation (no force): it stays out of the peak.
-    let (_, max_force) = refined_peak(&forces[..forces.len().saturating_sub(1).max(1)]);
-    Ok(Collision {
-        duration: end - start,
-        max_overlap,
-        max_sampled_overlap: samples[k],
-        max_force,
-        restitution: -approach(sim) / v_before,
+        ))
     })
+}
+
+/// The measurement of one collision from the states after consecutive steps, whether
+/// they come from a simulation as it steps (`binary_collision`) or from a recorded
+/// trajectory: the same arithmetic either way.
+#[derive(Clone, Debug)]
+pub struct CollisionWatch {
+    v_before: f64,
+    prev: f64,
+    start: Option<f64>,
+    end: Option<f64>,
+    samples: Vec<f64>,
+    forces: Vec<f64>,
+}
+
+impl CollisionWatch {
+    /// Before the first step: the overlap (negative: a gap) and the normal approach speed.
+    pub fn new(overlap: f64, approach: f64) -> Self {
+        CollisionWatch {
+            v_before: approach,
+            prev: overlap,
+            start: None,
+            end: None,
+            samples: Vec::new(),
+            forces: Vec::new(),
+        }
+    }
+
+    /// The state after one more step of `dt`, at `time`: its overlap, and the force on
+    /// the first body (asked for only while in contact). True once the bodies have
+    /// separated, after which nothing more is taken.
+    pub fn observe(&mut self, time: f64, dt: f64, now: f64, force: impl FnOnce() -> f64) -> bool {
+        if self.end.is_some() {
+            return true;
+        }
+        let prev = self.prev;
+        if self.start.is_none() && prev <= 0.0 && now > 0.0 {
+            self.start = Some(time - dt + dt * (-prev) / (now - prev));
+        }
+        if self.start.is_some() {
+            self.samples.push(now);
+            self.forces.push(force());
+        }
+        if self.start.is_some() && prev > 0.0 && now <= 0.0 {
+            self.end = Some(time - dt + dt * prev / (prev - now));
+            return true;
+        }
+        self.prev = now;
+        false
+    }
+
+    /// The collision, given the normal approach speed at the step of separation; `None`
+    /// when the bodies have not touched and separated.
+    pub fn finish(&self, approach: f64) -> Option<Collision> {
+        let (Some(start), Some(end)) = (self.start, self.end) else {
+            return None;
+        };
+        let (k, max_overlap) = refined_peak(&self.samples);
+        // The last sample is after separation (no force): it stays out of the peak.
+        let forces = &self.forces[..self.forces.len().saturating_sub(1).max(1)];
+        let (_, max_force) = refined_peak(forces);
+        Some(Collision {
+            duration: end - start,
+            max_overlap,
+            max_sampled_overlap: self.samples[k],
+            max_force,
+            restitution: -approach / self.v_before,
+        })
+    }
 }
 
 /// The largest sample and its index; the value is refined by the parabola through it
