@@ -39,6 +39,8 @@ pub struct State {
     pub position: Vec3,
     pub velocity: Option<Vec3>,
     pub omega: Option<Vec3>,
+    /// The particle's total force (`fx fy fz`), when the file has it; not compared.
+    pub force: Option<Vec3>,
 }
 
 /// What a run provides.
@@ -61,6 +63,7 @@ impl Run {
                     position: p.position[i],
                     velocity: Some(p.velocity[i]),
                     omega: Some(p.omega[i]),
+                    force: Some(p.force[i]),
                 },
             );
         }
@@ -167,19 +170,37 @@ fn read_quantities(path: &Path) -> Result<BTreeMap<String, f64>> {
     };
     let mut out = BTreeMap::new();
     for (k, rec) in reader.records().enumerate() {
-        let rec = rec.map_err(|e| input_err(path, e.to_string()))?;
-        let value: f64 = rec[v].parse().map_err(|_| {
-            input_err(
+        let row = k + 2;
+        let rec = rec.map_err(|e| input_err(path, format!("row {row}: {e}")))?;
+        let (Some(name), Some(text)) = (rec.get(q), rec.get(v)) else {
+            return Err(input_err(
                 path,
-                format!("row {}: value '{}' is not a number", k + 2, &rec[v]),
-            )
-        })?;
-        out.insert(rec[q].to_string(), value);
+                format!("row {row}: fewer values than columns"),
+            ));
+        };
+        let value = match text.parse::<f64>() {
+            Ok(x) if x.is_finite() => x,
+            _ => {
+                return Err(input_err(
+                    path,
+                    format!("row {row}, column 'value': '{text}' is not a number (a finite one)"),
+                ));
+            }
+        };
+        if out.insert(name.to_string(), value).is_some() {
+            return Err(input_err(
+                path,
+                format!("row {row}: the quantity '{name}' was given before"),
+            ));
+        }
     }
     Ok(out)
 }
 
-fn read_trajectory(path: &Path) -> Result<BTreeMap<(u64, u64), State>> {
+/// The rows of a trajectory.csv, keyed by (step, id). Written by any program, so
+/// read as untrusted: a missing required column, a value that is not a finite number
+/// and a (step, id) given twice are each refused naming the row and the column.
+pub fn read_trajectory(path: &Path) -> Result<BTreeMap<(u64, u64), State>> {
     let mut reader = csv_reader(path)?;
     let headers = reader
         .headers()
@@ -193,22 +214,41 @@ fn read_trajectory(path: &Path) -> Result<BTreeMap<(u64, u64), State>> {
     let cx = [need("x")?, need("y")?, need("z")?];
     let cv = [col("vx"), col("vy"), col("vz")];
     let cw = [col("omegax"), col("omegay"), col("omegaz")];
+    let cf = [col("fx"), col("fy"), col("fz")];
     let mut out = BTreeMap::new();
     for (k, rec) in reader.records().enumerate() {
-        let rec = rec.map_err(|e| input_err(path, e.to_string()))?;
-        let num = |c: usize| -> Result<f64> {
-            rec[c].parse().map_err(|_| {
+        let row = k + 2;
+        let rec = rec.map_err(|e| input_err(path, format!("row {row}: {e}")))?;
+        let cell = |c: usize| -> Result<&str> {
+            rec.get(c).ok_or_else(|| {
                 input_err(
                     path,
-                    format!("row {}: '{}' is not a number", k + 2, &rec[c]),
+                    format!("row {row}: no value in column '{}'", &headers[c]),
                 )
             })
         };
+        let num = |c: usize| -> Result<f64> {
+            let text = cell(c)?;
+            match text.parse::<f64>() {
+                Ok(v) if v.is_finite() => Ok(v),
+                _ => Err(input_err(
+                    path,
+                    format!(
+                        "row {row}, column '{}': '{text}' is not a finite number",
+                        &headers[c]
+                    ),
+                )),
+            }
+        };
         let int = |c: usize| -> Result<u64> {
-            rec[c].parse().map_err(|_| {
+            let text = cell(c)?;
+            text.parse().map_err(|_| {
                 input_err(
                     path,
-                    format!("row {}: '{}' is not an integer", k + 2, &rec[c]),
+                    format!(
+                        "row {row}, column '{}': '{text}' is not a non-negative integer",
+                        &headers[c]
+                    ),
                 )
             })
         };
@@ -218,20 +258,29 @@ fn read_trajectory(path: &Path) -> Result<BTreeMap<(u64, u64), State>> {
                 _ => Ok(None),
             }
         };
-        out.insert(
-            (int(cs)?, int(ci)?),
-            State {
-                radius: num(cr)?,
-                position: Vec3::new(num(cx[0])?, num(cx[1])?, num(cx[2])?),
-                velocity: vec(cv)?,
-                omega: vec(cw)?,
-            },
-        );
+        let key = (int(cs)?, int(ci)?);
+        let state = State {
+            radius: num(cr)?,
+            position: Vec3::new(num(cx[0])?, num(cx[1])?, num(cx[2])?),
+            velocity: vec(cv)?,
+            omega: vec(cw)?,
+            force: vec(cf)?,
+        };
+        if out.insert(key, state).is_some() {
+            return Err(input_err(
+                path,
+                format!(
+                    "row {row}: step {} and id {} were given before (one row per particle and step)",
+                    key.0, key.1
+                ),
+            ));
+        }
     }
     Ok(out)
 }
 
-fn dump_trajectory(path: &Path) -> Result<BTreeMap<(u64, u64), State>> {
+/// The frames of a LIGGGHTS or LAMMPS dump, keyed by (step, id).
+pub fn dump_trajectory(path: &Path) -> Result<BTreeMap<(u64, u64), State>> {
     let mut out = BTreeMap::new();
     for f in crate::liggghts::dump::read(path)? {
         for k in 0..f.id.len() {
@@ -242,6 +291,7 @@ fn dump_trajectory(path: &Path) -> Result<BTreeMap<(u64, u64), State>> {
                     position: f.position[k],
                     velocity: Some(f.velocity[k]),
                     omega: Some(f.omega[k]),
+                    force: Some(f.force[k]),
                 },
             );
         }
@@ -537,6 +587,7 @@ mod tests {
                 position: Vec3::new(1.0 + x, 0.0, 0.0),
                 velocity: Some(Vec3::new(2.0, 0.0, 0.0)),
                 omega: None,
+                force: None,
             },
         );
         r

@@ -97,8 +97,10 @@ pub fn parse(text: &str, path: &Path) -> Result<Vec<Frame>> {
         }
     };
     let number = |k: usize, s: &str| -> Result<f64> {
-        s.parse::<f64>()
-            .map_err(|_| bad(path, k + 1, format!("'{s}' is not a number")))
+        match s.parse::<f64>() {
+            Ok(v) if v.is_finite() => Ok(v),
+            _ => Err(bad(path, k + 1, format!("'{s}' is not a finite number"))),
+        }
     };
     while k < lines.len() {
         if lines[k].trim().is_empty() {
