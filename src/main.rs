@@ -60,6 +60,11 @@ enum Command {
         /// it; the wall times in the report do (cores are shared), so time with 1.
         #[arg(long)]
         jobs: Option<usize>,
+        /// The engine the cases run on (repeatable; default tamp): tamp, liggghts,
+        /// lammps, or command:PROG, an adapter run as `PROG SCENE_JSON OUT_DIR`
+        /// (docs/engines.md). Each case runs once per engine.
+        #[arg(long = "engine", value_name = "ENGINE")]
+        engines: Vec<verify::engine::Engine>,
     },
     /// Write a LIGGGHTS 3.8 deck (in.tamp, particles.data, meshes) for SCENE into DIR.
     ExportLiggghts {
@@ -282,9 +287,11 @@ fn main() -> ExitCode {
             json,
             report,
             jobs,
+            engines,
         } => verify::run_cli(
             tier,
             &cases,
+            &engines,
             json.as_deref(),
             &report,
             jobs.unwrap_or_else(verify::default_jobs),

@@ -212,7 +212,14 @@ fn timed(
     let started = Instant::now();
     let mut repeats = 0u32;
     loop {
-        let result = verify::run_case(spec, dir, scratch, None, variant);
+        let result = verify::run_case(
+            spec,
+            dir,
+            scratch,
+            None,
+            variant,
+            &verify::engine::Engine::Tamp,
+        );
         repeats += 1;
         let elapsed = started.elapsed().as_secs_f64();
         if elapsed >= min_wall_s || repeats >= 1000 || result.status == Status::Error {
@@ -235,6 +242,7 @@ fn status_of(result: &verify::CaseResult) -> &'static str {
             "unstable"
         }
         Status::Error => "error",
+        Status::NotExpressible => "not expressible",
     }
 }
 

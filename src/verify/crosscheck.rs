@@ -119,7 +119,7 @@ impl Peer {
     }
 
     /// Whether the peer can run here, or how to install it.
-    fn check_installed(self) -> Result<()> {
+    pub fn check_installed(self) -> Result<()> {
         match self {
             Peer::Liggghts if on_path("liggghts") => Ok(()),
             Peer::Liggghts => Err(TampError::input(
@@ -182,7 +182,15 @@ pub fn run_cli(
         ));
     }
     if !live {
-        return verify::run_cases(tier, &names, None, report_dir, None, verify::default_jobs());
+        return verify::run_cases(
+            tier,
+            &names,
+            &[],
+            None,
+            report_dir,
+            None,
+            verify::default_jobs(),
+        );
     }
     for peer in peers {
         if names.iter().any(|n| peer_of(n) == Some(*peer)) {
@@ -272,6 +280,7 @@ pub fn run_cli(
         verify::run_cases(
             tier,
             &to_check,
+            &[],
             None,
             report_dir,
             Some(&live_root),

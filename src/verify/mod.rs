@@ -6,18 +6,31 @@
 //!
 //! The runner joins the two, judges each quantity, and writes the report. A quantity
 //! present on one side only is an error of the case, never silently skipped.
+//!
+//! A case runs on an engine (`engine`): it hands its scenes to `CaseContext::record`
+//! and measures only the recordings it gets back, so the same case verifies tamp,
+//! LIGGGHTS, LAMMPS or any program behind an adapter. A case whose file says
+//! `tamp_only` (a calculation, or a measurement of tamp's internals) runs on tamp
+//! alone and is `not_expressible` on the others.
 
 pub mod cases;
 pub mod crosscheck;
+pub mod engine;
+pub mod measure;
 pub mod parallel;
+pub mod recording;
 pub mod report;
 pub mod store;
 
 use crate::error::{Result, TampError};
 use crate::process::die_compaction_file::DieCompactionFile;
 use crate::scene::{self, Scene};
+use engine::{Engine, Refusal};
+use recording::{RecordSpec, Recording};
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
@@ -74,6 +87,10 @@ pub struct CaseSpec {
     /// runs on each deposit): read by the case with `CaseContext::parameters`.
     #[serde(default)]
     pub parameters: Option<serde_json::Value>,
+    /// Why the case runs on tamp only (a calculation, or a measurement of tamp's
+    /// internals rather than of recorded outputs); absent: it runs on every engine.
+    #[serde(default)]
+    pub tamp_only: Option<String>,
     pub quantities: Vec<QuantitySpec>,
 }
 
@@ -124,6 +141,12 @@ pub struct CaseContext<'a> {
     /// Numerical settings the accuracy-cost study changes; the default leaves the
     /// case's scene as written.
     pub variant: Variant,
+    /// The engine the case's scenes run on (`record`).
+    pub engine: Engine,
+    /// Set by `record` when the engine cannot express a scene: the reason.
+    pub not_expressible: Mutex<Option<String>>,
+    /// Whether the case recorded anything (a case that is not `tamp_only` must).
+    pub recorded: AtomicBool,
 }
 
 /// What `tamp study accuracy-cost` varies in a case's scene. Only numerical
@@ -165,7 +188,51 @@ impl Variant {
     }
 }
 
-impl CaseContext<'_> {
+impl<'a> CaseContext<'a> {
+    /// A context for `spec` on `engine`, writing into `report_dir`.
+    pub fn new(
+        spec: &'a CaseSpec,
+        dir: &Path,
+        report_dir: &Path,
+        reference_data: Option<&Path>,
+        variant: Variant,
+        engine: Engine,
+    ) -> Self {
+        CaseContext {
+            spec,
+            dir: dir.to_path_buf(),
+            report_dir: report_dir.to_path_buf(),
+            reference_data: reference_data.map(Path::to_path_buf),
+            variant,
+            engine,
+            not_expressible: Mutex::new(None),
+            recorded: AtomicBool::new(false),
+        }
+    }
+
+    /// Run `scene` on the case's engine and return what it recorded (`spec`): the
+    /// only thing a case that runs on every engine measures. `label` names the run
+    /// among the case's runs (its directory, for an external engine:
+    /// `<report>/<engine>/<case>_engine/<label>/`).
+    pub fn record(&self, label: &str, scene: &Scene, spec: RecordSpec) -> Result<Recording> {
+        self.recorded.store(true, Ordering::Relaxed);
+        if self.engine == Engine::Tamp {
+            return engine::tamp::record(scene, spec);
+        }
+        let dir = self
+            .report_dir
+            .join(format!("{}_engine", self.spec.name))
+            .join(label);
+        engine::record_external(&self.engine, scene, spec, &dir).map_err(|refusal| match refusal {
+            Refusal::Failed(e) => e,
+            Refusal::NotExpressible(why) => {
+                let message = format!("{}: {why}", self.engine);
+                *self.not_expressible.lock().expect("not poisoned") = Some(message.clone());
+                TampError::Other(message)
+            }
+        })
+    }
+
     /// The case file's `parameters`, as the case's own type; an absent or wrong field
     /// is an input error naming `parameters.<path>` in the case file.
     pub fn parameters<T: serde::de::DeserializeOwned>(&self) -> Result<T> {
@@ -298,18 +365,26 @@ pub enum Status {
     KnownDeviation,
     /// Recorded as a known deviation but within its tolerance: the record is stale.
     UnexpectedPass,
+    /// The engine cannot express the case's scene (an exporter's refusal, an
+    /// adapter's exit code 4), or the case runs on tamp only.
+    NotExpressible,
 }
 
 impl Status {
     /// Whether this status lets the tier pass.
     pub fn is_ok(self) -> bool {
-        matches!(self, Status::Pass | Status::KnownDeviation)
+        matches!(
+            self,
+            Status::Pass | Status::KnownDeviation | Status::NotExpressible
+        )
     }
 }
 
 #[derive(Clone, Debug, Serialize)]
 pub struct CaseResult {
     pub name: String,
+    /// The engine the case ran on (`engine::Engine`, as on the command line).
+    pub engine: String,
     pub tier: Tier,
     pub status: Status,
     pub wall_s: f64,
@@ -447,35 +522,61 @@ pub fn run_case(
     report_dir: &Path,
     reference_data: Option<&Path>,
     variant: Variant,
+    engine: &Engine,
 ) -> CaseResult {
     let started = Instant::now();
     let started_at = std::time::SystemTime::now();
-    let ctx = CaseContext {
-        spec,
-        dir: dir.to_path_buf(),
-        report_dir: report_dir.to_path_buf(),
-        reference_data: reference_data.map(Path::to_path_buf),
-        variant,
+    // Another engine's artefacts (plots, CSVs, run directories) go to a directory of
+    // its own, so that no engine's files stand in for another's.
+    let own_dir = match engine {
+        Engine::Tamp => report_dir.to_path_buf(),
+        other => report_dir.join(other.slug()),
     };
-    let outcome = match cases::find(&spec.name) {
-        Some(f) => f(&ctx),
-        None => Err(TampError::Other(format!(
+    let ctx = CaseContext::new(spec, dir, &own_dir, reference_data, variant, engine.clone());
+    let outcome = match (cases::find(&spec.name), &spec.tamp_only) {
+        (None, _) => Err(TampError::Other(format!(
             "no code registered for case '{}' in src/verify/cases",
             spec.name
         ))),
+        (Some(_), Some(why)) if *engine != Engine::Tamp => {
+            *ctx.not_expressible.lock().expect("not poisoned") =
+                Some(format!("runs on tamp only: {why}"));
+            Err(TampError::Other(String::new()))
+        }
+        (Some(f), tamp_only) => f(&ctx).and_then(|measured| {
+            match tamp_only.is_none() && !ctx.recorded.load(Ordering::Relaxed) {
+                true => Err(TampError::Other(format!(
+                    "case '{}' is not tamp_only in its file, yet it measured nothing an engine recorded",
+                    spec.name
+                ))),
+                false => Ok(measured),
+            }
+        }),
     };
     let wall_s = started.elapsed().as_secs_f64();
     let mut result = CaseResult {
         name: spec.name.clone(),
+        engine: engine.to_string(),
         tier: spec.tier,
         status: Status::Pass,
         wall_s,
         description: spec.description.clone(),
         error: None,
         quantities: Vec::new(),
-        plots: case_plots(report_dir, &spec.name, started_at),
+        plots: case_plots(&own_dir, &spec.name, started_at)
+            .into_iter()
+            .map(|plot| match engine {
+                Engine::Tamp => plot,
+                other => format!("{}/{plot}", other.slug()),
+            })
+            .collect(),
     };
+    let not_expressible = ctx.not_expressible.lock().expect("not poisoned").take();
     match outcome {
+        Err(_) if not_expressible.is_some() => {
+            result.status = Status::NotExpressible;
+            result.error = not_expressible;
+        }
         Err(e) => {
             result.status = Status::Error;
             result.error = Some(e.to_string());
@@ -540,11 +641,12 @@ fn case_plots(report_dir: &Path, case: &str, since: std::time::SystemTime) -> Ve
 pub fn run_cli(
     tier: Tier,
     names: &[String],
+    engines: &[Engine],
     json: Option<&Path>,
     report_dir: &Path,
     jobs: usize,
 ) -> Result<u8> {
-    run_cases(tier, names, json, report_dir, None, jobs)
+    run_cases(tier, names, engines, json, report_dir, None, jobs)
 }
 
 /// The number of cases `tamp verify` runs at once unless told: one per core.
@@ -552,15 +654,21 @@ pub fn default_jobs() -> usize {
     std::thread::available_parallelism().map_or(1, |n| n.get())
 }
 
-/// `run_cli` with `reference_data/` replaced by `reference_data` when given.
+/// `run_cli` with `reference_data/` replaced by `reference_data` when given. Each
+/// case runs once per engine (tamp alone when `engines` is empty).
 pub fn run_cases(
     tier: Tier,
     names: &[String],
+    engines: &[Engine],
     json: Option<&Path>,
     report_dir: &Path,
     reference_data: Option<&Path>,
     jobs: usize,
 ) -> Result<u8> {
+    let engines = match engines {
+        [] => &[Engine::Tamp][..],
+        some => some,
+    };
     let dir = verification_dir();
     let specs = load_specs(&dir)?;
     for n in names {
@@ -583,11 +691,27 @@ pub fn run_cases(
     // itself, so what it measures does not depend on what runs beside it; only its
     // wall_s does (cores are shared). Bars would overwrite each other: log lines.
     crate::progress::set_lines_only(jobs > 1);
-    let results = parallel::map(&selected, jobs, |spec| {
-        let r = run_case(spec, &dir, report_dir, reference_data, Variant::default());
+    let runs: Vec<(&CaseSpec, &Engine)> = engines
+        .iter()
+        .flat_map(|e| selected.iter().map(move |s| (*s, e)))
+        .collect();
+    let several = engines.len() > 1;
+    let results = parallel::map(&runs, jobs, |(spec, engine)| {
+        let r = run_case(
+            spec,
+            &dir,
+            report_dir,
+            reference_data,
+            Variant::default(),
+            engine,
+        );
+        let name = match several {
+            true => format!("{} [{engine}]", spec.name),
+            false => spec.name.clone(),
+        };
         eprintln!(
             "{:<32} {:?} ({:.2} s){}",
-            spec.name,
+            name,
             r.status,
             r.wall_s,
             r.error
@@ -624,6 +748,11 @@ pub fn run_cases(
         .iter()
         .filter(|c| c.status == Status::KnownDeviation)
         .count();
+    let inexpressible = report
+        .cases
+        .iter()
+        .filter(|c| c.status == Status::NotExpressible)
+        .count();
     let quantities: usize = report.cases.iter().map(|c| c.quantities.len()).sum();
     let known: usize = report
         .cases
@@ -631,13 +760,18 @@ pub fn run_cases(
         .flat_map(|c| &c.quantities)
         .filter(|q| q.status == Status::KnownDeviation)
         .count();
+    let not_expressible = match inexpressible {
+        0 => String::new(),
+        n => format!(", {n} not expressible on their engine"),
+    };
     println!(
-        "{} passed, {} with known deviations ({} quantities, recorded in docs/), {} failed: \
+        "{} passed, {} with known deviations ({} quantities, recorded in docs/), {} failed{}: \
          verification ({} quantities); report in {}",
-        report.cases.len() - failed - deviating,
+        report.cases.len() - failed - deviating - inexpressible,
         deviating,
         known,
         failed,
+        not_expressible,
         quantities,
         report_dir.join("verification.md").display()
     );
@@ -689,13 +823,14 @@ mod tests {
                     "quantities": []}}"#
             ))
             .unwrap();
-            let ctx = CaseContext {
-                spec: &spec,
-                dir: PathBuf::new(),
-                report_dir: PathBuf::new(),
-                reference_data: None,
-                variant: Variant::default(),
-            };
+            let ctx = CaseContext::new(
+                &spec,
+                Path::new(""),
+                Path::new(""),
+                None,
+                Variant::default(),
+                Engine::Tamp,
+            );
             ctx.parameters::<Scenario>().map_err(|e| e.to_string())
         };
         let ok = read(r#""parameters": {"box_width_radii": 20, "seeds": [1, 2]},"#).unwrap();

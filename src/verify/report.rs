@@ -13,7 +13,93 @@ fn status(s: Status) -> &'static str {
         Status::Error => "ERROR",
         Status::KnownDeviation => "known deviation",
         Status::UnexpectedPass => "UNEXPECTED PASS",
+        Status::NotExpressible => "not expressible",
     }
+}
+
+/// Whether the report holds runs of more than one engine.
+fn several_engines(r: &VerificationReport) -> bool {
+    r.cases.iter().any(|c| c.engine != r.cases[0].engine)
+}
+
+/// A case's title in the report: its name, and its engine when there are several.
+fn title(c: &CaseResult, several: bool) -> String {
+    match several {
+        true => format!("{} [{}]", c.name, c.engine),
+        false => c.name.clone(),
+    }
+}
+
+/// The anchor of a case's section.
+fn anchor(c: &CaseResult, several: bool) -> String {
+    let a = match several {
+        true => format!("{}-{}", c.name, c.engine),
+        false => c.name.clone(),
+    };
+    a.to_lowercase()
+        .chars()
+        .map(|ch| {
+            if ch.is_ascii_alphanumeric() || ch == '_' {
+                ch
+            } else {
+                '-'
+            }
+        })
+        .collect()
+}
+
+/// The largest relative difference between a case's values on another engine and
+/// tamp's values of the same quantities (absolute where tamp's value is 0).
+fn difference_from_tamp(c: &CaseResult, r: &VerificationReport) -> Option<f64> {
+    let tamp = r
+        .cases
+        .iter()
+        .find(|t| t.name == c.name && t.engine == "tamp")?;
+    c.quantities
+        .iter()
+        .filter_map(|q| {
+            let t = tamp.quantities.iter().find(|t| t.name == q.name)?;
+            let d = (q.value - t.value).abs();
+            Some(if t.value == 0.0 { d } else { d / t.value.abs() })
+        })
+        .reduce(f64::max)
+}
+
+/// Cases down, engines across: each cell the case's status on that engine and, for
+/// engines other than tamp, the largest relative difference from tamp's values.
+/// `None` when the report holds one engine.
+pub fn engine_matrix(r: &VerificationReport) -> Option<(Vec<String>, Vec<Vec<String>>)> {
+    if !several_engines(r) {
+        return None;
+    }
+    let mut engines: Vec<String> = Vec::new();
+    let mut cases: Vec<String> = Vec::new();
+    for c in &r.cases {
+        if !engines.contains(&c.engine) {
+            engines.push(c.engine.clone());
+        }
+        if !cases.contains(&c.name) {
+            cases.push(c.name.clone());
+        }
+    }
+    let rows = cases
+        .iter()
+        .map(|name| {
+            let mut row = vec![name.clone()];
+            for e in &engines {
+                let cell = match r.cases.iter().find(|c| &c.name == name && &c.engine == e) {
+                    None => "—".to_string(),
+                    Some(c) => match (e.as_str(), difference_from_tamp(c, r)) {
+                        ("tamp", _) | (_, None) => status(c.status).to_string(),
+                        (_, Some(d)) => format!("{} (Δ {d:.1e})", status(c.status)),
+                    },
+                };
+                row.push(cell);
+            }
+            row
+        })
+        .collect();
+    Some((engines, rows))
 }
 
 /// Whether a status needs the reader's attention (shown in bold).
@@ -126,6 +212,23 @@ pub fn markdown(r: &VerificationReport) -> String {
         s,
         "An HTML version with the same content is `verification.html` beside this file.\n"
     );
+    let several = several_engines(r);
+    if let Some((engines, rows)) = engine_matrix(r) {
+        let _ = writeln!(
+            s,
+            "## Engines\n\nEach case's status on each engine; beside another engine's status, Δ is the largest relative difference of its values from tamp's (docs/engines.md).\n"
+        );
+        let _ = writeln!(
+            s,
+            "| case | {} |\n|---|{}",
+            engines.join(" | "),
+            "---|".repeat(engines.len())
+        );
+        for row in rows {
+            let _ = writeln!(s, "| {} |", row.join(" | ").replace('\n', " "));
+        }
+        let _ = writeln!(s);
+    }
     let _ = writeln!(
         s,
         "| case | status | quantities | wall time (s) |\n|---|---|---|---|"
@@ -140,15 +243,15 @@ pub fn markdown(r: &VerificationReport) -> String {
         let _ = writeln!(
             s,
             "| [{}](#{}) | {st} | {} | {:.2} |",
-            c.name,
-            c.name.to_lowercase(),
+            title(c, several),
+            anchor(c, several),
             summary(c),
             c.wall_s
         );
     }
     let _ = writeln!(s, "\n## Cases: values, plots, tolerances and paper values");
     for c in &r.cases {
-        let _ = writeln!(s, "\n### {}\n\n{}\n", c.name, c.description);
+        let _ = writeln!(s, "\n### {}\n\n{}\n", title(c, several), c.description);
         let _ = writeln!(
             s,
             "| {} |\n|{}",
@@ -209,6 +312,27 @@ pub fn html(r: &VerificationReport) -> String {
         escape(&r.tamp_version),
         escape(&r.git_commit)
     );
+    let several = several_engines(r);
+    if let Some((engines, rows)) = engine_matrix(r) {
+        let _ = writeln!(
+            s,
+            "<h2>Engines</h2>\n<p>Each case's status on each engine; beside another engine's status, &Delta; is the largest relative difference of its values from tamp's (docs/engines.md).</p>\n<table>\n<tr><th>case</th>{}</tr>",
+            engines
+                .iter()
+                .map(|e| format!("<th>{}</th>", escape(e)))
+                .collect::<String>()
+        );
+        for row in rows {
+            let _ = writeln!(
+                s,
+                "<tr>{}</tr>",
+                row.iter()
+                    .map(|x| format!("<td>{}</td>", escape(x)))
+                    .collect::<String>()
+            );
+        }
+        let _ = writeln!(s, "</table>");
+    }
     let _ = writeln!(
         s,
         "<table>\n<tr><th>case</th><th>status</th><th>quantities</th><th>wall time (s)</th></tr>"
@@ -221,11 +345,12 @@ pub fn html(r: &VerificationReport) -> String {
         };
         let _ = writeln!(
             s,
-            "<tr><td><a href=\"#{0}\">{0}</a></td><td{class}>{1}</td><td>{2}</td><td>{3:.2}</td></tr>",
-            escape(&c.name),
+            "<tr><td><a href=\"#{4}\">{0}</a></td><td{class}>{1}</td><td>{2}</td><td>{3:.2}</td></tr>",
+            escape(&title(c, several)),
             status(c.status),
             summary(c),
-            c.wall_s
+            c.wall_s,
+            anchor(c, several)
         );
     }
     let _ = writeln!(
@@ -235,13 +360,14 @@ pub fn html(r: &VerificationReport) -> String {
     for c in &r.cases {
         let _ = writeln!(
             s,
-            "<h3 id=\"{0}\">{0}</h3>\n<p>{1}</p>\n<table>\n<tr>{2}</tr>",
-            escape(&c.name),
+            "<h3 id=\"{3}\">{0}</h3>\n<p>{1}</p>\n<table>\n<tr>{2}</tr>",
+            escape(&title(c, several)),
             escape(&c.description),
             COLUMNS
                 .iter()
                 .map(|h| format!("<th>{h}</th>"))
-                .collect::<String>()
+                .collect::<String>(),
+            anchor(c, several)
         );
         for (cells, st) in rows(c) {
             let cells: Vec<String> = cells

@@ -159,6 +159,7 @@ impl DieCompactionFile {
             broad_phase: self.broad_phase.clone(),
             stability: self.stability.clone(),
             output: self.output.clone(),
+            resolved_from: None,
             base_dir: self.base_dir.clone(),
         }
     }

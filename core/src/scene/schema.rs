@@ -16,6 +16,16 @@ pub use super::run::{
 pub use super::walls::WallSpec;
 use serde::{Deserialize, Serialize};
 
+/// The origin of a resolved scene.
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct ResolvedFrom {
+    /// The original scene's `name`.
+    pub name: String,
+    /// SHA-256 of the original scene file's bytes, hex.
+    pub sha256: String,
+}
+
 /// A scene: what to simulate, and how.
 #[derive(Clone, Debug, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
@@ -68,6 +78,11 @@ pub struct Scene {
     /// The files a run writes.
     #[serde(default)]
     pub output: OutputSpec,
+    /// The scene this one was resolved from (every particle placed, the step and the
+    /// step count fixed: what `tamp verify --engine` hands an engine), for provenance
+    /// only; absent in a scene written by hand.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub resolved_from: Option<ResolvedFrom>,
     /// Directory of the scene file, for relative paths (STL meshes); not a JSON field.
     #[serde(skip)]
     pub base_dir: std::path::PathBuf,

@@ -510,13 +510,14 @@ mod tests {
         .unwrap();
         let report = std::env::temp_dir().join(format!("tamp-plot-test-{}", std::process::id()));
         crate::output::create_dir(&report).unwrap();
-        let ctx = CaseContext {
-            spec: &spec,
-            dir: root.join("verification"),
-            report_dir: report.clone(),
-            reference_data: None,
-            variant: Default::default(),
-        };
+        let ctx = CaseContext::new(
+            &spec,
+            &root.join("verification"),
+            &report,
+            None,
+            Default::default(),
+            crate::verify::engine::Engine::Tamp,
+        );
         let record = |p: f64, d: f64| ReplayRecord {
             time: 0.0,
             height: 1.0,

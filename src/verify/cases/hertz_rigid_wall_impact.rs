@@ -6,12 +6,12 @@
 //! scene's particle material, not from tamp's pair table, so a wrong mixing rule
 //! (a finite wall term) fails the case.
 
-use crate::collision::plane_collision;
 use crate::contact::normal::hertz::{hertz_contact_duration, hertz_max_overlap};
 use crate::error::{Result, TampError};
 use crate::particles::Vec3;
 use crate::scene;
-use crate::verify::{CaseContext, Measured};
+use crate::verify::recording::RecordSpec;
+use crate::verify::{CaseContext, Measured, measure};
 
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let s = ctx.scene()?;
@@ -27,7 +27,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         ));
     }
     let e_star = e / (1.0 - nu * nu);
-    let mut sim = scene::build(&s)?.sim;
+    let sim = scene::build(&s)?.sim;
     let p = &sim.state.particles;
     let (m, r) = (p.mass[0], p.radius[0]);
     let mixed = sim
@@ -38,7 +38,8 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         .ok_or_else(|| TampError::Other("no E* for the sphere and the rigid wall".into()))?;
     let normal = Vec3::new(0.0, 0.0, 1.0);
     let v = -p.velocity[0].dot(&normal);
-    let c = plane_collision(&mut sim, 0, Vec3::zeros(), normal, 10_000_000)?;
+    let rec = ctx.record("impact", &s, RecordSpec::EVERY_STEP)?;
+    let c = measure::plane(&rec, 0, Vec3::zeros(), normal)?;
     Ok(vec![
         Measured::new("effective_modulus", mixed, e_star),
         Measured::new(

@@ -1,16 +1,15 @@
 //! Two equal spheres, linear spring–dashpot (Zhong 2009 model I, Table 1 values),
 //! head-on: restitution, contact duration and maximum overlap against the damped
 //! oscillator's closed forms (Zhong eqs 7–9), once with the scene's γ_n (e ≈ 0.5)
-//! and once with γ_n = 0.
+//! and once with γ_n = 0, measured from the recorded trajectories.
 
-use crate::collision::binary_collision;
+use super::two_body::Pair;
 use crate::contact::damping::{Constant, Damping};
 use crate::contact::normal::linear::LinearCollision;
 use crate::contact::normal::{Linear, NormalLaw};
 use crate::error::Result;
-use crate::material::effective_mass;
-use crate::scene;
-use crate::verify::{CaseContext, Measured};
+use crate::verify::recording::RecordSpec;
+use crate::verify::{CaseContext, Measured, measure};
 
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let base = ctx.scene()?;
@@ -31,13 +30,11 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     for (suffix, gamma_n) in [("", gamma), ("_undamped", 0.0)] {
         let mut s = base.clone();
         s.contact.damping = (gamma_n > 0.0).then_some(Damping::Constant(Constant { gamma_n }));
-        let mut sim = scene::build(&s)?.sim;
-        let p = &sim.state.particles;
-        let m_eff = effective_mass(p.mass[0], p.mass[1]);
-        let approach =
-            -(p.velocity[0] - p.velocity[1]).dot(&(p.position[0] - p.position[1]).normalize());
-        let exact = LinearCollision::new(stiffness, m_eff, gamma_n);
-        let c = binary_collision(&mut sim, 0, 1, 1_000_000)?;
+        let pair = Pair::of(&s)?;
+        let exact = LinearCollision::new(stiffness, pair.m_eff, gamma_n);
+        let label = format!("collision{suffix}");
+        let rec = ctx.record(&label, &s, RecordSpec::EVERY_STEP)?;
+        let c = measure::two_body(&rec, 0, 1)?;
         out.push(Measured::new(
             &format!("restitution{suffix}"),
             c.restitution,
@@ -51,7 +48,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         out.push(Measured::new(
             &format!("max_overlap{suffix}"),
             c.max_overlap,
-            exact.max_overlap(approach),
+            exact.max_overlap(pair.approach),
         ));
     }
     Ok(out)

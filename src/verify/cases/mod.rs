@@ -36,6 +36,7 @@ mod sliding_oblique_impact;
 mod storakers_unloading;
 mod thornton_restitution;
 mod three_sphere_compression;
+mod two_body;
 mod two_sphere_compression;
 mod van_der_waals_force;
 mod yield_surface_2d;

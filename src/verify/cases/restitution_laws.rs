@@ -1,13 +1,13 @@
 //! Head-on collisions of two equal spheres for the normal laws whose restitution
 //! has a closed form independent of speed: Walton–Braun (Zhong 2009 eq 16,
 //! e = √(k₁/k₂)) and the hysteretic law (Zhong eqs 17–18, e = √((1 − γ)/(1 + γ)),
-//! derived in docs/models/hysteretic.md). One function per case, sharing the probe.
+//! derived in docs/models/hysteretic.md). One function per case, sharing the
+//! measurement of the recorded collision.
 
-use crate::collision::binary_collision;
 use crate::contact::normal::{Hysteretic, NormalLaw, WaltonBraun};
 use crate::error::{Result, TampError};
-use crate::scene;
-use crate::verify::{CaseContext, Measured};
+use crate::verify::recording::RecordSpec;
+use crate::verify::{CaseContext, Measured, measure};
 
 pub fn walton_braun(ctx: &CaseContext) -> Result<Vec<Measured>> {
     restitution_against(ctx, "walton_braun", |law| match *law {
@@ -28,7 +28,7 @@ pub fn hysteretic(ctx: &CaseContext) -> Result<Vec<Measured>> {
     })
 }
 
-/// The probe's restitution against the law's closed form (`None`: the scene uses
+/// The recorded restitution against the law's closed form (`None`: the scene uses
 /// another law than the case is about).
 fn restitution_against(
     ctx: &CaseContext,
@@ -38,7 +38,7 @@ fn restitution_against(
     let scene = ctx.scene()?;
     let expected = closed_form(&scene.contact.normal)
         .ok_or_else(|| TampError::Other(format!("the scene must use {law}")))?;
-    let mut sim = scene::build(&scene)?.sim;
-    let c = binary_collision(&mut sim, 0, 1, 10_000_000)?;
+    let rec = ctx.record("collision", &scene, RecordSpec::EVERY_STEP)?;
+    let c = measure::two_body(&rec, 0, 1)?;
     Ok(vec![Measured::new("restitution", c.restitution, expected)])
 }

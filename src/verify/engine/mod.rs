@@ -1,0 +1,178 @@
+//! Engines: whatever turns a scene into recorded outputs (docs/engines.md).
+//!
+//! - `tamp`, in-process: the scene is built and stepped here and its frames kept in
+//!   memory, no files in between;
+//! - `liggghts`, `lammps`: the resolved scene is exported as a deck (the exporters of
+//!   `tamp export-liggghts` and `tamp export-lammps`), the peer runs it now, and its
+//!   dump is read as the layout of docs/compare.md;
+//! - `command:PROG`: any program, run as `PROG SCENE_JSON OUT_DIR` on the resolved
+//!   scene, writing `OUT_DIR/trajectory.csv`.
+//!
+//! A case measures only what the engine recorded, so its verdict means the same on
+//! every engine. What an external engine writes is untrusted input (`recording`).
+
+pub mod command;
+pub mod peer;
+pub mod resolved;
+pub mod tamp;
+
+use super::recording::{RecordSpec, Recording};
+use crate::error::TampError;
+use crate::scene::Scene;
+use std::fmt;
+use std::path::Path;
+use std::str::FromStr;
+
+/// The exit code by which an adapter says that the scene uses a feature it lacks (its
+/// reason on stderr): the case is then `not_expressible` on that engine, not an error.
+pub const NOT_EXPRESSIBLE_EXIT: i32 = 4;
+
+/// One engine of `tamp verify --engine`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Engine {
+    /// tamp itself, in-process.
+    Tamp,
+    /// LIGGGHTS 3.8 (`liggghts` on PATH), run now on the exported deck.
+    Liggghts,
+    /// LAMMPS 22 Jul 2025 (`.ci/install-lammps`, or `$LMP`), run now on the exported deck.
+    Lammps,
+    /// An adapter: the program and its leading arguments, split on white space.
+    Command(String),
+}
+
+impl FromStr for Engine {
+    type Err = String;
+
+    fn from_str(s: &str) -> std::result::Result<Self, String> {
+        match s {
+            "tamp" => Ok(Engine::Tamp),
+            "liggghts" => Ok(Engine::Liggghts),
+            "lammps" => Ok(Engine::Lammps),
+            _ => match s.strip_prefix("command:") {
+                Some(prog) if !prog.trim().is_empty() => {
+                    Ok(Engine::Command(prog.trim().to_string()))
+                }
+                _ => Err(format!(
+                    "'{s}' is not an engine: give tamp, liggghts, lammps or command:PROG (PROG is run as `PROG SCENE_JSON OUT_DIR`, docs/engines.md)"
+                )),
+            },
+        }
+    }
+}
+
+impl fmt::Display for Engine {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Engine::Tamp => f.write_str("tamp"),
+            Engine::Liggghts => f.write_str("liggghts"),
+            Engine::Lammps => f.write_str("lammps"),
+            Engine::Command(prog) => write!(f, "command:{prog}"),
+        }
+    }
+}
+
+impl Engine {
+    /// A file-name-safe name for the engine's run directories.
+    pub fn slug(&self) -> String {
+        self.to_string()
+            .chars()
+            .map(|c| {
+                if c.is_ascii_alphanumeric() || c == '-' {
+                    c
+                } else {
+                    '_'
+                }
+            })
+            .collect()
+    }
+}
+
+/// Why an engine gave no recording.
+#[derive(Debug)]
+pub enum Refusal {
+    /// The engine cannot express the scene (an exporter's refusal, an adapter's exit
+    /// code 4): the reason.
+    NotExpressible(String),
+    /// The engine failed, or what it wrote is unusable.
+    Failed(TampError),
+}
+
+impl From<TampError> for Refusal {
+    fn from(e: TampError) -> Self {
+        Refusal::Failed(e)
+    }
+}
+
+/// Record one run of `scene` on an external engine, its files under `dir` (emptied
+/// first, so nothing of an earlier run is read as this one's).
+pub fn record_external(
+    engine: &Engine,
+    scene: &Scene,
+    spec: RecordSpec,
+    dir: &Path,
+) -> std::result::Result<Recording, Refusal> {
+    if dir.exists() {
+        std::fs::remove_dir_all(dir)
+            .map_err(|e| TampError::io(format!("emptying {}", dir.display()), e))?;
+    }
+    crate::output::create_dir(dir)?;
+    let resolved = resolved::resolve(scene, spec).map_err(|e| match e {
+        resolved::Unresolvable::Feature(why) => Refusal::NotExpressible(why),
+        resolved::Unresolvable::Failed(e) => Refusal::Failed(e),
+    })?;
+    match engine {
+        Engine::Tamp => Err(Refusal::Failed(TampError::Other(
+            "the tamp engine runs in-process".into(),
+        ))),
+        Engine::Liggghts => peer::record(peer::Peer::Liggghts, &resolved, dir),
+        Engine::Lammps => peer::record(peer::Peer::Lammps, &resolved, dir),
+        Engine::Command(prog) => command::record(prog, &resolved, dir),
+    }
+}
+
+/// Read an engine's trajectory, written as the layout of docs/compare.md, for the
+/// resolved run.
+pub fn read_recording(
+    path: &Path,
+    resolved: &resolved::Resolved,
+) -> std::result::Result<Recording, Refusal> {
+    if !path.is_file() {
+        return Err(Refusal::Failed(TampError::input(
+            path.display().to_string(),
+            "was not written (the engine must write trajectory.csv, docs/engines.md)",
+        )));
+    }
+    let rows = crate::compare::read_trajectory(path)?;
+    Ok(resolved.recording(path, &rows)?)
+}
+
+/// The last lines of a program's output, for a message.
+pub fn tail(text: &str, lines: usize) -> String {
+    let all: Vec<&str> = text.lines().filter(|l| !l.trim().is_empty()).collect();
+    all[all.len().saturating_sub(lines)..].join(" | ")
+}
+
+/// An engine's failure, as a refusal.
+pub fn failed(e: impl Into<String>) -> Refusal {
+    Refusal::Failed(TampError::Other(e.into()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn engines_are_named_as_on_the_command_line() {
+        for name in ["tamp", "liggghts", "lammps", "command:python3 adapter.py"] {
+            assert_eq!(name.parse::<Engine>().unwrap().to_string(), name);
+        }
+        for bad in ["", "gromacs", "command:", "command:  "] {
+            let e = bad.parse::<Engine>().unwrap_err();
+            assert!(e.contains("command:PROG"), "{e}");
+        }
+        assert_eq!(
+            "command:./a b".parse::<Engine>().unwrap().slug(),
+            "command___a_b"
+        );
+    }
+}

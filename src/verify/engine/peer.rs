@@ -1,0 +1,79 @@
+//! The peer engines, `liggghts` and `lammps`: the resolved scene exported as a deck
+//! (`tamp export-liggghts`, `tamp export-lammps`), the peer run on it now, serially, and
+//! its dump read as the recording. An exporter's refusal means the peer cannot
+//! express the scene.
+
+use super::resolved::Resolved;
+use super::{Refusal, failed, tail};
+use crate::error::TampError;
+pub use crate::verify::crosscheck::Peer;
+use crate::verify::recording::Recording;
+use std::path::Path;
+use std::process::Command;
+
+/// Export `resolved` into `dir`, run `peer` on it and read its dump.
+pub fn record(peer: Peer, resolved: &Resolved, dir: &Path) -> Result<Recording, Refusal> {
+    let every = Some(resolved.spec.trajectory_every);
+    let sha = &resolved.sha256;
+    let exported = match peer {
+        Peer::Liggghts => crate::liggghts::export::export(&resolved.scene, sha, dir, every),
+        Peer::Lammps => crate::lammps::export::export(&resolved.scene, sha, dir, every),
+    };
+    if let Err(refusal) = exported {
+        return Err(match refusal {
+            e @ (TampError::Input { .. } | TampError::InputMany(_)) => {
+                Refusal::NotExpressible(e.to_string().replace('\n', "; "))
+            }
+            e => Refusal::Failed(e),
+        });
+    }
+    peer.check_installed()?;
+    crate::output::write_atomic(&dir.join("scene.json"), resolved.json.as_bytes())?;
+    let (mut command, log, dump, last) = match peer {
+        Peer::Liggghts => {
+            let mut c = Command::new("liggghts");
+            c.args(["-in", "in.tamp", "-log", "log.liggghts"]);
+            (c, "log.liggghts", "dump.liggghts", "final.liggghts")
+        }
+        Peer::Lammps => {
+            let mut c = Command::new(crate::verify::crosscheck::lammps_executable());
+            c.args([
+                "-in",
+                "in.tamp",
+                "-log",
+                "log.lammps",
+                "-screen",
+                "none",
+                "-nocite",
+            ]);
+            (c, "log.lammps", "dump.lammps", "final.lammps")
+        }
+    };
+    let output = command
+        .current_dir(dir)
+        .output()
+        .map_err(|e| failed(format!("{}: cannot start: {e}", peer.name())))?;
+    crate::output::write_atomic(&dir.join("screen.txt"), &output.stdout)?;
+    let log_text = std::fs::read_to_string(dir.join(log)).unwrap_or_default();
+    if !output.status.success() || !dir.join(dump).is_file() {
+        return Err(failed(format!(
+            "{} failed on {} ({}): {}",
+            peer.name(),
+            dir.join("in.tamp").display(),
+            output.status,
+            tail(
+                &format!("{log_text}\n{}", String::from_utf8_lossy(&output.stderr)),
+                3
+            )
+        )));
+    }
+    // The dump holds every `every`-th step; the final state is the last step's frame
+    // when the step count is not a multiple of it.
+    let mut rows = crate::compare::dump_trajectory(&dir.join(dump))?;
+    if dir.join(last).is_file() {
+        for (key, state) in crate::compare::dump_trajectory(&dir.join(last))? {
+            rows.entry(key).or_insert(state);
+        }
+    }
+    Ok(resolved.recording(&dir.join(dump), &rows)?)
+}

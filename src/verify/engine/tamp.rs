@@ -1,0 +1,54 @@
+//! The tamp engine: the scene built and stepped in-process, its frames kept in memory.
+//! The run is `tamp run`'s (the same build, step count and end-of-run energy check)
+//! without its files, and the frames hold the simulation's own clock, so a case
+//! measures here exactly what it would from the simulation itself.
+
+use crate::error::{Result, TampError};
+use crate::scene::{self, Scene};
+use crate::simulation::Simulation;
+use crate::verify::recording::{Body, Frame, RecordSpec, Recording};
+
+/// Run `scene` to its end, recording the frames `spec` asks for.
+pub fn record(scene: &Scene, spec: RecordSpec) -> Result<Recording> {
+    if scene.run.until.is_some() {
+        return Err(TampError::Other(
+            "run.until: a recorded run has a fixed step count, so a case's scene must not end when it settles".into(),
+        ));
+    }
+    let built = scene::build(scene)?;
+    let mut sim = built.sim;
+    let every = spec.trajectory_every.max(1);
+    let mut frames = vec![frame(&sim, spec.forces)];
+    while sim.state.step < built.steps {
+        sim.step()?;
+        if sim.state.step.is_multiple_of(every) || sim.state.step == built.steps {
+            frames.push(frame(&sim, spec.forces));
+        }
+    }
+    sim.check_energy_at_end()?;
+    Ok(Recording {
+        dt: sim.dt(),
+        frames,
+    })
+}
+
+/// The particles now, in id order.
+fn frame(sim: &Simulation, forces: bool) -> Frame {
+    let p = &sim.state.particles;
+    let mut order: Vec<usize> = (0..p.len()).collect();
+    order.sort_by_key(|&i| p.id[i]);
+    Frame {
+        step: sim.state.step,
+        time: sim.state.time,
+        bodies: order
+            .into_iter()
+            .map(|i| Body {
+                radius: p.radius[i],
+                position: p.position[i],
+                velocity: p.velocity[i],
+                omega: p.omega[i],
+                force: forces.then(|| p.force[i]),
+            })
+            .collect(),
+    }
+}

@@ -1,0 +1,118 @@
+//! Measurements of recorded runs that more than one case makes: a collision between two
+//! particles, or between a particle and a fixed plane, read from the frames of every
+//! step. The arithmetic is `collision::CollisionWatch`'s, the one a simulation uses as
+//! it steps, so the tamp engine's recording gives the values of a live measurement to
+//! the bit.
+
+use crate::collision::{Collision, CollisionWatch};
+use crate::error::{Result, TampError};
+use crate::particles::Vec3;
+use crate::verify::recording::{Frame, Recording};
+
+/// The first collision between particles `i` and `j` (indices in the scene's order):
+/// interpolated contact duration, refined and sampled largest overlap, and the
+/// restitution of the normal relative speed, along the line of centres at step 0.
+/// `max_force` is the force on `i`, when the recording has forces (else 0).
+pub fn two_body(rec: &Recording, i: usize, j: usize) -> Result<Collision> {
+    let frames = frames(rec, i.max(j), "a two-body collision")?;
+    let first = &frames[0].bodies;
+    let n = (first[i].position - first[j].position).normalize();
+    let overlap = |f: &Frame| {
+        let (a, b) = (&f.bodies[i], &f.bodies[j]);
+        a.radius + b.radius - (a.position - b.position).norm()
+    };
+    let approach = |f: &Frame| -(f.bodies[i].velocity - f.bodies[j].velocity).dot(&n);
+    watch(
+        rec,
+        frames,
+        &format!("particles {i} and {j}"),
+        i,
+        overlap,
+        approach,
+    )
+}
+
+/// The first collision of particle `i` with the fixed plane through `point` with unit
+/// `normal`; the overlap is R_i − (x_i − point)·n.
+pub fn plane(rec: &Recording, i: usize, point: Vec3, normal: Vec3) -> Result<Collision> {
+    let frames = frames(rec, i, "a wall collision")?;
+    let overlap = |f: &Frame| {
+        let b = &f.bodies[i];
+        b.radius - (b.position - point).dot(&normal)
+    };
+    let approach = |f: &Frame| -f.bodies[i].velocity.dot(&normal);
+    watch(
+        rec,
+        frames,
+        &format!("particle {i} and the plane"),
+        i,
+        overlap,
+        approach,
+    )
+}
+
+/// The consecutive frames, which must hold particle `last`.
+fn frames<'a>(rec: &'a Recording, last: usize, what: &str) -> Result<&'a [Frame]> {
+    let frames = rec.consecutive(what)?;
+    match frames.first() {
+        Some(f) if f.bodies.len() > last => Ok(frames),
+        Some(f) => Err(TampError::Other(format!(
+            "{what} of particle {last} in a recording of {} particles",
+            f.bodies.len()
+        ))),
+        None => Err(TampError::Other(format!("{what} in an empty recording"))),
+    }
+}
+
+fn watch(
+    rec: &Recording,
+    frames: &[Frame],
+    bodies: &str,
+    i: usize,
+    overlap: impl Fn(&Frame) -> f64,
+    approach: impl Fn(&Frame) -> f64,
+) -> Result<Collision> {
+    let mut watch = CollisionWatch::new(overlap(&frames[0]), approach(&frames[0]));
+    let mut last = &frames[0];
+    for f in &frames[1..] {
+        last = f;
+        let force = || f.bodies[i].force.map_or(0.0, |v| v.norm());
+        if watch.observe(f.time, rec.dt, overlap(f), force) {
+            break;
+        }
+    }
+    watch.finish(approach(last)).ok_or_else(|| {
+        TampError::Other(format!(
+            "{bodies} did not complete a collision in the {} recorded steps (up to step {})",
+            frames.len() - 1,
+            last.step
+        ))
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::collision::binary_collision;
+    use crate::scene;
+    use crate::verify::recording::RecordSpec;
+
+    /// The recorded measurement of the tamp engine equals the live one to the bit.
+    #[test]
+    fn a_recorded_collision_is_measured_as_the_live_one() {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("verification/hertz_collision_time.scene.json");
+        let scene = scene::load(&path).unwrap().0;
+        let live =
+            binary_collision(&mut scene::build(&scene).unwrap().sim, 0, 1, 10_000_000).unwrap();
+        let rec = crate::verify::engine::tamp::record(&scene, RecordSpec::EVERY_STEP).unwrap();
+        let recorded = two_body(&rec, 0, 1).unwrap();
+        assert_eq!(live.duration.to_bits(), recorded.duration.to_bits());
+        assert_eq!(live.max_overlap.to_bits(), recorded.max_overlap.to_bits());
+        assert_eq!(live.restitution.to_bits(), recorded.restitution.to_bits());
+        let mut gap = rec.clone();
+        gap.frames.remove(5);
+        let e = two_body(&gap, 0, 1).unwrap_err().to_string();
+        assert!(e.contains("jumps from step 4 to 6"), "{e}");
+    }
+}

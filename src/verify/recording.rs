@@ -1,0 +1,214 @@
+//! What an engine recorded of one run, the only thing a case measures: the frames of
+//! the trajectory (the layout of docs/compare.md) at the steps the case asked for.
+//!
+//! A recording from another program is untrusted input. It is accepted only when every
+//! frame the case needs is there with every particle, each value finite; anything else
+//! is an error naming the file, the row or step, and the column, never a silent gap.
+
+use crate::compare::State;
+use crate::error::{Result, TampError};
+use crate::particles::Vec3;
+use std::collections::BTreeMap;
+
+/// What a case needs an engine to record of one run: the scene's `output` block as
+/// the resolved scene hands it to an engine.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct RecordSpec {
+    /// Steps between frames; the first (step 0) and the last step are always recorded.
+    pub trajectory_every: u64,
+    /// Whether each frame holds the particles' total forces and torques.
+    pub forces: bool,
+}
+
+impl RecordSpec {
+    /// Every step, no forces: what a collision measurement needs.
+    pub const EVERY_STEP: RecordSpec = RecordSpec {
+        trajectory_every: 1,
+        forces: false,
+    };
+
+    /// The steps a run of `steps` steps must record: 0, k, 2k, … and `steps`.
+    pub fn required_steps(&self, steps: u64) -> impl Iterator<Item = u64> {
+        let every = self.trajectory_every.max(1);
+        (0..=steps)
+            .step_by(every as usize)
+            .chain((!steps.is_multiple_of(every)).then_some(steps))
+    }
+}
+
+/// One particle in one frame.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Body {
+    pub radius: f64,
+    pub position: Vec3,
+    pub velocity: Vec3,
+    pub omega: Vec3,
+    /// The total force on the particle, when the case asked for forces.
+    pub force: Option<Vec3>,
+}
+
+/// The particles after one step, in the order of the resolved scene (id = index + 1).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Frame {
+    pub step: u64,
+    /// Simulated time, s: the engine's own clock in-process, step · Δt from files.
+    pub time: f64,
+    pub bodies: Vec<Body>,
+}
+
+/// The frames of one run, by increasing step.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Recording {
+    /// The time step the run was resolved with, s.
+    pub dt: f64,
+    pub frames: Vec<Frame>,
+}
+
+impl Recording {
+    /// The frames, when they are consecutive steps (step k + 1 after step k), else an
+    /// error naming the first gap: a measurement that interpolates between steps must
+    /// not bridge a gap silently.
+    pub fn consecutive(&self, what: &str) -> Result<&[Frame]> {
+        for w in self.frames.windows(2) {
+            if w[1].step != w[0].step + 1 {
+                return Err(TampError::Other(format!(
+                    "{what} needs every step, and the recording jumps from step {} to {}",
+                    w[0].step, w[1].step
+                )));
+            }
+        }
+        Ok(&self.frames)
+    }
+
+    /// A recording read from the layout's rows, keyed by (step, id), from the file
+    /// `file`: checks that every step `spec` asks of a run of `steps` steps is there
+    /// with the ids 1..=`particles`, velocities, and forces when asked for. Other
+    /// steps are left out.
+    pub fn from_rows(
+        file: &str,
+        rows: &BTreeMap<(u64, u64), State>,
+        particles: usize,
+        dt: f64,
+        steps: u64,
+        spec: RecordSpec,
+    ) -> Result<Recording> {
+        let bad = |rule: String| TampError::input(file.to_string(), rule);
+        let mut by_step: BTreeMap<u64, Vec<(u64, &State)>> = BTreeMap::new();
+        for ((step, id), state) in rows {
+            by_step.entry(*step).or_default().push((*id, state));
+        }
+        if let Some((step, _)) = by_step.iter().find(|(s, _)| **s > steps) {
+            return Err(bad(format!(
+                "has step {step}, beyond the run's last step {steps}"
+            )));
+        }
+        let mut frames = Vec::new();
+        for step in spec.required_steps(steps) {
+            let Some(found) = by_step.get(&step) else {
+                return Err(bad(format!(
+                    "has no rows for step {step} (the case needs steps 0, {}, {}, … and the last, {steps})",
+                    spec.trajectory_every,
+                    2 * spec.trajectory_every
+                )));
+            };
+            let mut bodies = Vec::with_capacity(particles);
+            for id in 1..=particles as u64 {
+                let Some((_, s)) = found.iter().find(|(i, _)| *i == id) else {
+                    return Err(bad(format!(
+                        "step {step} has no row for particle id {id} (ids are 1 to {particles}, the order of the scene's particles)"
+                    )));
+                };
+                let need = |v: Option<Vec3>, columns: &str| {
+                    v.ok_or_else(|| bad(format!("needs the columns {columns}")))
+                };
+                let force = match spec.forces {
+                    true => Some(need(s.force, "fx, fy, fz (the case asks for forces)")?),
+                    false => None,
+                };
+                bodies.push(Body {
+                    radius: s.radius,
+                    position: s.position,
+                    velocity: need(s.velocity, "vx, vy, vz")?,
+                    omega: s.omega.unwrap_or_else(Vec3::zeros),
+                    force,
+                });
+            }
+            if let Some((id, _)) = found.iter().find(|(i, _)| *i == 0 || *i > particles as u64) {
+                return Err(bad(format!(
+                    "step {step} has particle id {id}, and the scene has ids 1 to {particles}"
+                )));
+            }
+            frames.push(Frame {
+                step,
+                time: step as f64 * dt,
+                bodies,
+            });
+        }
+        Ok(Recording { dt, frames })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn state(x: f64) -> State {
+        State {
+            radius: 1.0,
+            position: Vec3::new(x, 0.0, 0.0),
+            velocity: Some(Vec3::zeros()),
+            omega: None,
+            force: None,
+        }
+    }
+
+    #[test]
+    fn the_steps_a_run_must_record_include_the_first_and_the_last() {
+        let every3 = RecordSpec {
+            trajectory_every: 3,
+            forces: false,
+        };
+        assert_eq!(every3.required_steps(7).collect::<Vec<_>>(), [0, 3, 6, 7]);
+        assert_eq!(every3.required_steps(6).collect::<Vec<_>>(), [0, 3, 6]);
+    }
+
+    #[test]
+    fn a_missing_step_or_particle_is_named_and_never_skipped() {
+        let mut rows = BTreeMap::new();
+        for step in 0..=2 {
+            rows.insert((step, 1), state(step as f64));
+            rows.insert((step, 2), state(5.0));
+        }
+        let spec = RecordSpec::EVERY_STEP;
+        let ok = Recording::from_rows("t.csv", &rows, 2, 0.5, 2, spec).unwrap();
+        assert_eq!(ok.frames.len(), 3);
+        assert_eq!(ok.frames[2].time, 1.0);
+        let short = Recording::from_rows("t.csv", &rows, 2, 0.5, 3, spec).unwrap_err();
+        assert!(
+            short.to_string().contains("t.csv: has no rows for step 3"),
+            "{short}"
+        );
+        rows.remove(&(1, 2));
+        let hole = Recording::from_rows("t.csv", &rows, 2, 0.5, 2, spec).unwrap_err();
+        assert!(
+            hole.to_string()
+                .contains("step 1 has no row for particle id 2"),
+            "{hole}"
+        );
+        rows.insert((1, 2), state(5.0));
+        rows.insert((1, 3), state(9.0));
+        let stranger = Recording::from_rows("t.csv", &rows, 2, 0.5, 2, spec).unwrap_err();
+        assert!(stranger.to_string().contains("particle id 3"), "{stranger}");
+    }
+
+    #[test]
+    fn forces_are_required_only_when_asked_for() {
+        let rows: BTreeMap<_, _> = [((0, 1), state(0.0))].into_iter().collect();
+        let spec = RecordSpec {
+            trajectory_every: 1,
+            forces: true,
+        };
+        let e = Recording::from_rows("t.csv", &rows, 1, 1.0, 0, spec).unwrap_err();
+        assert!(e.to_string().contains("fx, fy, fz"), "{e}");
+    }
+}
