@@ -144,9 +144,9 @@ pub struct CaseContext<'a> {
     /// The engine the case's scenes run on (`record`).
     pub engine: Engine,
     /// Set by `record` when the engine cannot express a scene: the reason.
-    pub not_expressible: Mutex<Option<String>>,
+    not_expressible: Mutex<Option<String>>,
     /// Whether the case recorded anything (a case that is not `tamp_only` must).
-    pub recorded: AtomicBool,
+    recorded: AtomicBool,
 }
 
 /// What `tamp study accuracy-cost` varies in a case's scene. Only numerical

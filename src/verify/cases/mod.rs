@@ -12,6 +12,7 @@ mod die_compaction_replay;
 mod die_specimen;
 pub(crate) mod energy_conservation_elastic;
 mod hertz_collision_time;
+mod hertz_damped_collision;
 mod hertz_rigid_wall_impact;
 mod hertz_yield_onset;
 mod hollomon_constants;
@@ -47,6 +48,7 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("linear_restitution", linear_restitution::run),
     ("accuracy_on_demand", accuracy_on_demand::run),
     ("hertz_collision_time", hertz_collision_time::run),
+    ("hertz_damped_collision", hertz_damped_collision::run),
     ("hertz_rigid_wall_impact", hertz_rigid_wall_impact::run),
     ("hertz_yield_onset", hertz_yield_onset::run),
     (

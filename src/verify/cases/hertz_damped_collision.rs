@@ -1,0 +1,69 @@
+//! Two steel spheres meet head-on under Hertz with the dashpot ξ · 2√(m* k_n) (Tsuji et
+//! al. 1992's form), ξ set from a restitution e by LIGGGHTS's relation
+//! ξ = −√(5/6) ln e/√(ln²e + π²) (`liggghts_restitution`; LIGGGHTS `model hertz`,
+//! LAMMPS `damping coeff_restitution`). The damped Hertz impact has no closed form, so
+//! the reference is its equation of motion m* δ'' = −K δ^{3/2} − η(δ) δ', made
+//! dimensionless with δ_s = (m* v²/K)^{2/5} and solved by classical Runge–Kutta
+//! (`accuracy::damped_hertz`, converged far below these tolerances): restitution,
+//! contact duration and largest overlap, for each e of the case file's parameters.
+//! Measured from the recorded trajectory, so every engine with this dashpot is held
+//! to the same equation.
+
+use super::two_body::Pair;
+use crate::accuracy::damped_hertz::{Dashpot, critical_fraction_c, unit_impact};
+use crate::contact::damping::liggghts::LiggghtsModel;
+use crate::contact::damping::{Damping, LiggghtsRestitution};
+use crate::contact::normal::NormalLaw;
+use crate::error::{Result, TampError};
+use crate::verify::recording::RecordSpec;
+use crate::verify::{CaseContext, Measured, measure};
+use serde::Deserialize;
+
+/// The case file's `parameters`.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Scenario {
+    /// The restitutions e LIGGGHTS's relation turns into ξ, one run each.
+    restitutions: Vec<f64>,
+}
+
+pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
+    let base = ctx.scene()?;
+    if !matches!(base.contact.normal, NormalLaw::Hertz(_)) {
+        return Err(TampError::Other("the scene must use hertz".into()));
+    }
+    let mut out = Vec::new();
+    for e in ctx.parameters::<Scenario>()?.restitutions {
+        let mut s = base.clone();
+        s.contact.damping = Some(Damping::LiggghtsRestitution(LiggghtsRestitution {
+            restitution: e,
+        }));
+        let pair = Pair::of(&s)?;
+        let k = 4.0 / 3.0 * pair.effective_modulus()? * pair.r_eff.sqrt();
+        let v = pair.approach;
+        let delta_s = (pair.m_eff * v * v / k).powf(0.4);
+        let xi = LiggghtsModel::Hertz.critical_fraction(e);
+        let unit =
+            unit_impact(Dashpot::CriticalFraction, critical_fraction_c(xi)).ok_or_else(|| {
+                TampError::Other(format!("e = {e}: the reference impact does not end"))
+            })?;
+        let rec = ctx.record(&format!("collision_e{e}"), &s, RecordSpec::EVERY_STEP)?;
+        let c = measure::two_body(&rec, 0, 1)?;
+        out.push(Measured::new(
+            &format!("restitution_e{e}"),
+            c.restitution,
+            unit.restitution,
+        ));
+        out.push(Measured::new(
+            &format!("contact_duration_e{e}"),
+            c.duration,
+            unit.duration * delta_s / v,
+        ));
+        out.push(Measured::new(
+            &format!("max_overlap_e{e}"),
+            c.max_overlap,
+            unit.max_overlap * delta_s,
+        ));
+    }
+    Ok(out)
+}
