@@ -291,7 +291,7 @@ pub fn dump_trajectory(path: &Path) -> Result<BTreeMap<(u64, u64), State>> {
                     position: f.position[k],
                     velocity: Some(f.velocity[k]),
                     omega: Some(f.omega[k]),
-                    force: Some(f.force[k]),
+                    force: f.has_force.then(|| f.force[k]),
                 },
             );
         }

@@ -41,6 +41,8 @@ pub struct Frame {
     pub mass: Vec<f64>,
     /// Total force on the atom (pair, wall and body forces); zero without `fx fy fz`.
     pub force: Vec<Vec3>,
+    /// Whether the dump has the columns `fx fy fz` (else `force` holds zeros).
+    pub has_force: bool,
 }
 
 impl Frame {
@@ -163,6 +165,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Vec<Frame>> {
         let vel = [col("vx"), col("vy"), col("vz")];
         let omg = [col("omegax"), col("omegay"), col("omegaz")];
         let frc = [col("fx"), col("fy"), col("fz")];
+        frame.has_force = frc.iter().all(Option::is_some);
         let cm = col("mass");
         let mut rows: Vec<Atom> = Vec::with_capacity(n);
         for r in 0..n {

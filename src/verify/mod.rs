@@ -216,14 +216,17 @@ impl<'a> CaseContext<'a> {
     /// `<report>/<engine>/<case>_engine/<label>/`).
     pub fn record(&self, label: &str, scene: &Scene, spec: RecordSpec) -> Result<Recording> {
         self.recorded.store(true, Ordering::Relaxed);
-        if self.engine == Engine::Tamp {
-            return engine::tamp::record(scene, spec);
+        if scene.run.until.is_some() {
+            return Err(TampError::Other(format!(
+                "{}: run.until: a recorded run has a fixed step count, so a case's scene must not end when it settles",
+                self.spec.name
+            )));
         }
         let dir = self
             .report_dir
             .join(format!("{}_engine", self.spec.name))
             .join(label);
-        engine::record_external(&self.engine, scene, spec, &dir).map_err(|refusal| match refusal {
+        engine::record(&self.engine, scene, spec, &dir).map_err(|refusal| match refusal {
             Refusal::Failed(e) => e,
             Refusal::NotExpressible(why) => {
                 let message = format!("{}: {why}", self.engine);
@@ -539,9 +542,9 @@ pub fn run_case(
             spec.name
         ))),
         (Some(_), Some(why)) if *engine != Engine::Tamp => {
-            *ctx.not_expressible.lock().expect("not poisoned") =
-                Some(format!("runs on tamp only: {why}"));
-            Err(TampError::Other(String::new()))
+            let why = format!("runs on tamp only: {why}");
+            *ctx.not_expressible.lock().expect("not poisoned") = Some(why.clone());
+            Err(TampError::Other(why))
         }
         (Some(f), tamp_only) => f(&ctx).and_then(|measured| {
             match tamp_only.is_none() && !ctx.recorded.load(Ordering::Relaxed) {

@@ -93,27 +93,27 @@ impl Recording {
         spec: RecordSpec,
     ) -> Result<Recording> {
         let bad = |rule: String| TampError::input(file.to_string(), rule);
-        let mut by_step: BTreeMap<u64, Vec<(u64, &State)>> = BTreeMap::new();
-        for ((step, id), state) in rows {
-            by_step.entry(*step).or_default().push((*id, state));
-        }
-        if let Some((step, _)) = by_step.iter().find(|(s, _)| **s > steps) {
-            return Err(bad(format!(
-                "has step {step}, beyond the run's last step {steps}"
-            )));
+        let n = particles as u64;
+        if let Some((step, id)) = rows.keys().find(|(s, i)| *s > steps || *i == 0 || *i > n) {
+            return Err(bad(match step > &steps {
+                true => format!("has step {step}, beyond the run's last step {steps}"),
+                false => format!(
+                    "step {step} has particle id {id}, and the scene has ids 1 to {particles}"
+                ),
+            }));
         }
         let mut frames = Vec::new();
         for step in spec.required_steps(steps) {
-            let Some(found) = by_step.get(&step) else {
+            if rows.range((step, 0)..=(step, u64::MAX)).next().is_none() {
                 return Err(bad(format!(
                     "has no rows for step {step} (the case needs steps 0, {}, {}, … and the last, {steps})",
                     spec.trajectory_every,
                     2 * spec.trajectory_every
                 )));
-            };
+            }
             let mut bodies = Vec::with_capacity(particles);
-            for id in 1..=particles as u64 {
-                let Some((_, s)) = found.iter().find(|(i, _)| *i == id) else {
+            for id in 1..=n {
+                let Some(s) = rows.get(&(step, id)) else {
                     return Err(bad(format!(
                         "step {step} has no row for particle id {id} (ids are 1 to {particles}, the order of the scene's particles)"
                     )));
@@ -132,11 +132,6 @@ impl Recording {
                     omega: s.omega.unwrap_or_else(Vec3::zeros),
                     force,
                 });
-            }
-            if let Some((id, _)) = found.iter().find(|(i, _)| *i == 0 || *i > particles as u64) {
-                return Err(bad(format!(
-                    "step {step} has particle id {id}, and the scene has ids 1 to {particles}"
-                )));
             }
             frames.push(Frame {
                 step,

@@ -103,27 +103,26 @@ impl From<TampError> for Refusal {
     }
 }
 
-/// Record one run of `scene` on an external engine, its files under `dir` (emptied
-/// first, so nothing of an earlier run is read as this one's).
-pub fn record_external(
+/// Record one run of `scene` on `engine`. An external engine works under `dir`,
+/// emptied first so that nothing of an earlier run is read as this one's; tamp needs
+/// no files.
+pub fn record(
     engine: &Engine,
     scene: &Scene,
     spec: RecordSpec,
     dir: &Path,
 ) -> std::result::Result<Recording, Refusal> {
+    if *engine == Engine::Tamp {
+        return Ok(tamp::record(scene, spec)?);
+    }
     if dir.exists() {
         std::fs::remove_dir_all(dir)
             .map_err(|e| TampError::io(format!("emptying {}", dir.display()), e))?;
     }
     crate::output::create_dir(dir)?;
-    let resolved = resolved::resolve(scene, spec).map_err(|e| match e {
-        resolved::Unresolvable::Feature(why) => Refusal::NotExpressible(why),
-        resolved::Unresolvable::Failed(e) => Refusal::Failed(e),
-    })?;
+    let resolved = resolved::resolve(scene, spec)?;
     match engine {
-        Engine::Tamp => Err(Refusal::Failed(TampError::Other(
-            "the tamp engine runs in-process".into(),
-        ))),
+        Engine::Tamp => unreachable!("recorded in-process above"),
         Engine::Liggghts => peer::record(peer::Peer::Liggghts, &resolved, dir),
         Engine::Lammps => peer::record(peer::Peer::Lammps, &resolved, dir),
         Engine::Command(prog) => command::record(prog, &resolved, dir),

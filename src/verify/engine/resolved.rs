@@ -5,7 +5,7 @@
 //! keeps the original scene's name and hash. `tamp run` on it runs the same steps as on
 //! the original scene, bit for bit.
 
-use crate::error::TampError;
+use super::Refusal;
 use crate::scene::schema::{OutputSpec, ParticleSpec, ResolvedFrom, RunSpec, TimeStepSpec};
 use crate::scene::{self, Scene};
 use crate::verify::recording::{RecordSpec, Recording};
@@ -43,34 +43,14 @@ impl Resolved {
     }
 }
 
-/// Why a scene has no resolved form.
-#[derive(Debug)]
-pub enum Unresolvable {
-    /// It uses something a fixed list of particles and steps cannot say: the reason.
-    Feature(String),
-    /// It does not build.
-    Failed(TampError),
-}
-
-impl From<TampError> for Unresolvable {
-    fn from(e: TampError) -> Self {
-        Unresolvable::Failed(e)
-    }
-}
-
-/// `scene` resolved, its output set to record `spec`.
-pub fn resolve(scene: &Scene, spec: RecordSpec) -> Result<Resolved, Unresolvable> {
-    let refuse = |field: &str, why: &str| Err(Unresolvable::Feature(format!("{field}: {why}")));
+/// `scene` resolved, its output set to record `spec`; not expressible when a fixed list
+/// of particles and steps cannot say what it does.
+pub fn resolve(scene: &Scene, spec: RecordSpec) -> Result<Resolved, Refusal> {
+    let refuse = |field: &str, why: &str| Err(Refusal::NotExpressible(format!("{field}: {why}")));
     if scene.growth.is_some() {
         return refuse(
             "growth",
             "radii that grow during the run are not a fixed list of particles",
-        );
-    }
-    if scene.run.until.is_some() {
-        return refuse(
-            "run.until",
-            "a run that ends when it settles has no fixed step count",
         );
     }
     let original = serde_json::to_vec(scene).expect("a scene serialises");
@@ -186,7 +166,7 @@ mod tests {
             duration: 1e-4,
             initial_fraction: 0.5,
         });
-        let Err(Unresolvable::Feature(why)) = resolve(&s, RecordSpec::EVERY_STEP) else {
+        let Err(Refusal::NotExpressible(why)) = resolve(&s, RecordSpec::EVERY_STEP) else {
             panic!("growth resolved")
         };
         assert!(why.starts_with("growth:"), "{why}");
