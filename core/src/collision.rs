@@ -1,7 +1,6 @@
-//! A collision or a compression measured as it happens: `binary_collision` and
-//! `plane_collision` step the simulation they are given until the bodies have touched
-//! and separated, `compress_to_force` until a force is reached; the measurements
-//! themselves never change the state.
+//! A collision measured as it happens: `binary_collision` and `plane_collision` step
+//! the simulation they are given until the bodies have touched and separated; the
+//! measurement itself never changes the state.
 
 use crate::error::{Result, TampError};
 use crate::particles::Vec3;
@@ -175,52 +174,4 @@ fn refined_peak(samples: &[f64]) -> (usize, f64) {
         samples[k]
     };
     (k, peak)
-}
-
-/// One state of a displacement-driven compression.
-#[derive(Clone, Copy, Debug)]
-pub struct CompressionSample {
-    /// Overlap of the watched contact, m.
-    pub overlap: f64,
-    /// Force on the watched particle, N.
-    pub force: f64,
-    /// Rojek eqs 27–29 at this state (no safety factor), s.
-    pub critical_time_step: Option<f64>,
-}
-
-/// Step a displacement-driven `sim` until the force on particle `i` reaches
-/// `target`. Returns the overlap of contact (i, j) at `target`, interpolated
-/// linearly between the two steps that bracket it, and the states of every
-/// `every`-th step in contact (plus the last) for curves.
-pub fn compress_to_force(
-    sim: &mut Simulation,
-    i: usize,
-    j: usize,
-    target: f64,
-    max_steps: u64,
-    every: u64,
-) -> Result<(f64, Vec<CompressionSample>)> {
-    let sample = |s: &Simulation| CompressionSample {
-        overlap: s.overlap(i, j),
-        force: s.state.particles.force[i].norm(),
-        critical_time_step: s.critical_time_step(None),
-    };
-    let mut curve = Vec::new();
-    let mut prev = (sim.overlap(i, j), sim.state.particles.force[i].norm());
-    for step in 0..max_steps {
-        sim.step()?;
-        let now = (sim.overlap(i, j), sim.state.particles.force[i].norm());
-        if step % every == 0 && now.0 > 0.0 {
-            curve.push(sample(sim));
-        }
-        if prev.1 < target && now.1 >= target {
-            curve.push(sample(sim));
-            let w = (target - prev.1) / (now.1 - prev.1);
-            return Ok((prev.0 + w * (now.0 - prev.0), curve));
-        }
-        prev = now;
-    }
-    Err(TampError::Other(format!(
-        "the force on particle {i} never reached {target:e} N in {max_steps} steps"
-    )))
 }

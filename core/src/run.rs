@@ -144,6 +144,7 @@ pub fn run_scene(
         n => n,
     };
     let trajectory_every = scene.output.trajectory_every;
+    let dense_from = scene.output.trajectory_every_step_from;
     let vtk_every = scene.output.vtk_every;
     let vtk_dir = out_dir.join("vtk");
     if vtk_every > 0 {
@@ -230,7 +231,8 @@ pub fn run_scene(
         if sim.state.step % every == 0 {
             series.record(&sim)?;
         }
-        if trajectory_every > 0 && (sim.state.step % trajectory_every == 0 || last) {
+        let dense = dense_from.is_some_and(|from| sim.state.step >= from);
+        if trajectory_every > 0 && (sim.state.step % trajectory_every == 0 || last || dense) {
             record_trajectory(&sim, &mut trajectory, forces);
         }
         if vtk_every > 0 && sim.state.step % vtk_every == 0 {

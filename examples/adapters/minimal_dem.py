@@ -19,8 +19,9 @@ OUT_DIR already exists. The adapter writes one file, OUT_DIR/trajectory.csv:
 
 The force columns are there only when `output.forces` is true. They hold each particle's
 total force and torque after that step. There is one row per particle (id = index in
-`particles` + 1) at steps 0, k, 2k, ... (k = `output.trajectory_every`), and always one at
-the last step N, never twice. Numbers are written with Python's repr(float), the shortest
+`particles` + 1) at steps 0, k, 2k, ... (k = `output.trajectory_every`), at every step from
+`output.trajectory_every_step_from` on when the scene sets it, and always one at the last
+step N, never twice. Numbers are written with Python's repr(float), the shortest
 form that reads back to the same double.
 
 Exit codes:
@@ -58,8 +59,8 @@ ignored a feature silently, it would produce plausible numbers for a different s
 
 It ignores `name`, `seed`, `resolved_from`, `broad_phase` (every tamp broad phase finds the
 same pairs as brute force) and `stability`. So it applies none of tamp's own stability
-checks except the one for non-finite values. Of `output` it reads only `trajectory_every`
-and `forces`: series, VTK frames, contact files and checkpoints are tamp's outputs, and the
+checks except the one for non-finite values. Of `output` it reads only `trajectory_every`,
+`trajectory_every_step_from` and `forces`: series, VTK frames, contact files and checkpoints are tamp's outputs, and the
 contract does not ask an engine for them.
 
 How to run it
@@ -311,6 +312,9 @@ def read_scene(scene):
     output = obj(output, "output")
     every = output.get("trajectory_every")
     every = 0 if every is None else integer(every, "output.trajectory_every")
+    dense_from = output.get("trajectory_every_step_from")
+    if dense_from is not None:
+        dense_from = integer(dense_from, "output.trajectory_every_step_from")
     forces = output.get("forces")
     if forces is None:
         forces = False
@@ -324,6 +328,7 @@ def read_scene(scene):
         "dt": dt,
         "steps": steps,
         "every": every,
+        "dense_from": dense_from,
         "forces": forces,
     }
 
@@ -398,6 +403,7 @@ def run(s, rows):
     dt, steps = s["dt"], s["steps"]
     half_dt = 0.5 * dt
     every = s["every"]
+    dense_from = s["dense_from"]
     with_forces = s["forces"]
     hertz = s["law"][0] == "hertz"
     gamma_n = s["gamma_n"]
@@ -450,7 +456,8 @@ def run(s, rows):
                     f"(particles[{k}]): its position or velocity is not finite"
                 )
         # With trajectory_every = 0 only the first and last states are written.
-        if step == steps or (every > 0 and step % every == 0):
+        dense = dense_from is not None and step >= dense_from
+        if step == steps or dense or (every > 0 and step % every == 0):
             record(step, f)
 
 

@@ -96,6 +96,12 @@ pub(super) fn pair_model(scene: &Scene) -> std::result::Result<String, Vec<(Stri
 pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
     let mut out = pair_model(scene).err().unwrap_or_default();
     let mut refuse = |path: String, why: &str| out.push((path, why.to_string()));
+    if scene.output.trajectory_every_step_from.is_some() {
+        refuse(
+            "output.trajectory_every_step_from".into(),
+            "the exported deck dumps at one interval",
+        );
+    }
     if scene.contact.cohesion.is_some() {
         refuse(
             "contact.cohesion".into(),

@@ -120,6 +120,12 @@ fn restitution(scene: &Scene) -> std::result::Result<f64, (String, String)> {
 pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
     let mut out: Vec<(String, String)> = Vec::new();
     let mut refuse = |path: &str, why: &str| out.push((path.to_string(), why.to_string()));
+    if scene.output.trajectory_every_step_from.is_some() {
+        refuse(
+            "output.trajectory_every_step_from",
+            "the exported deck dumps at one interval",
+        );
+    }
     // The law's own rules; the contact kinds are checked after the scene is built.
     match scene.contact.normal.liggghts_deck(&deck_scene(scene, None)) {
         None => refuse(

@@ -17,10 +17,7 @@ pub fn two_body(rec: &Recording, i: usize, j: usize) -> Result<Collision> {
     let frames = frames(rec, i.max(j), "a two-body collision")?;
     let first = &frames[0].bodies;
     let n = (first[i].position - first[j].position).normalize();
-    let overlap = |f: &Frame| {
-        let (a, b) = (&f.bodies[i], &f.bodies[j]);
-        a.radius + b.radius - (a.position - b.position).norm()
-    };
+    let overlap = |f: &Frame| overlap(f, i, j);
     let approach = |f: &Frame| -(f.bodies[i].velocity - f.bodies[j].velocity).dot(&n);
     watch(
         rec,
@@ -49,6 +46,54 @@ pub fn plane(rec: &Recording, i: usize, point: Vec3, normal: Vec3) -> Result<Col
         overlap,
         approach,
     )
+}
+
+/// The overlap R_i + R_j − |x_i − x_j| of particles `i` and `j` in a frame.
+pub fn overlap(f: &Frame, i: usize, j: usize) -> f64 {
+    let (a, b) = (&f.bodies[i], &f.bodies[j]);
+    a.radius + b.radius - (a.position - b.position).norm()
+}
+
+/// |F_i|, the magnitude of the total force on particle `i` in a frame; an error when
+/// the recording holds no forces.
+pub fn force(f: &Frame, i: usize) -> Result<f64> {
+    f.bodies[i].force.map(|v| v.norm()).ok_or_else(|| {
+        TampError::Other(format!(
+            "step {} holds no forces (the case must ask for them)",
+            f.step
+        ))
+    })
+}
+
+/// Where `rising` first reaches `target`, between a frame where it is below and the next
+/// recorded frame where it is at or above: `other` interpolated linearly in `rising`
+/// there. The frames may be sparse; a case that needs the crossing between consecutive
+/// steps records every step where it expects it (`RecordSpec::sparse_then_every_step`).
+pub fn first_crossing(
+    rec: &Recording,
+    rising: impl Fn(&Frame) -> Result<f64>,
+    other: impl Fn(&Frame) -> Result<f64>,
+    target: f64,
+    what: &str,
+) -> Result<f64> {
+    let mut frames = rec.frames.iter();
+    let first = frames
+        .next()
+        .ok_or_else(|| TampError::Other(format!("{what} in an empty recording")))?;
+    let mut prev = (rising(first)?, other(first)?);
+    for f in frames {
+        let now = (rising(f)?, other(f)?);
+        if prev.0 < target && now.0 >= target {
+            let w = (target - prev.0) / (now.0 - prev.0);
+            return Ok(prev.1 + w * (now.1 - prev.1));
+        }
+        prev = now;
+    }
+    Err(TampError::Other(format!(
+        "{what} never reached {target:e} in the {} recorded frames (up to step {})",
+        rec.frames.len(),
+        rec.frames.last().map_or(0, |f| f.step)
+    )))
 }
 
 /// The consecutive frames, which must hold particle `last`.

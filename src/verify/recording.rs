@@ -18,6 +18,8 @@ pub struct RecordSpec {
     pub trajectory_every: u64,
     /// Whether each frame holds the particles' total forces and torques.
     pub forces: bool,
+    /// From this step to the last, every step is recorded too.
+    pub every_step_from: Option<u64>,
 }
 
 impl RecordSpec {
@@ -25,14 +27,40 @@ impl RecordSpec {
     pub const EVERY_STEP: RecordSpec = RecordSpec {
         trajectory_every: 1,
         forces: false,
+        every_step_from: None,
     };
 
-    /// The steps a run of `steps` steps must record: 0, k, 2k, … and `steps`.
+    /// Every `k` steps (and the last).
+    pub fn every(k: u64, forces: bool) -> RecordSpec {
+        RecordSpec {
+            trajectory_every: k,
+            forces,
+            every_step_from: None,
+        }
+    }
+
+    /// Every `k` steps, and every step from `from` on: a run that crosses a value
+    /// near its end, found between consecutive steps there.
+    pub fn sparse_then_every_step(k: u64, from: u64, forces: bool) -> RecordSpec {
+        RecordSpec {
+            trajectory_every: k,
+            forces,
+            every_step_from: Some(from),
+        }
+    }
+
+    /// Whether step `step` of a run of `steps` steps is recorded.
+    pub fn records(&self, step: u64, steps: u64) -> bool {
+        step.is_multiple_of(self.trajectory_every.max(1))
+            || step == steps
+            || self.every_step_from.is_some_and(|from| step >= from)
+    }
+
+    /// The steps a run of `steps` steps must record: 0, k, 2k, …, every step from
+    /// `every_step_from`, and `steps`.
     pub fn required_steps(&self, steps: u64) -> impl Iterator<Item = u64> {
-        let every = self.trajectory_every.max(1);
-        (0..=steps)
-            .step_by(every as usize)
-            .chain((!steps.is_multiple_of(every)).then_some(steps))
+        let spec = *self;
+        (0..=steps).filter(move |&s| spec.records(s, steps))
     }
 }
 
@@ -105,8 +133,11 @@ impl Recording {
         let mut frames = Vec::new();
         for step in spec.required_steps(steps) {
             if rows.range((step, 0)..=(step, u64::MAX)).next().is_none() {
+                let dense = spec
+                    .every_step_from
+                    .map_or(String::new(), |from| format!(", every step from {from}"));
                 return Err(bad(format!(
-                    "has no rows for step {step} (the case needs steps 0, {}, {}, … and the last, {steps})",
+                    "has no rows for step {step} (the case needs steps 0, {}, {}, …{dense} and the last, {steps})",
                     spec.trajectory_every,
                     2 * spec.trajectory_every
                 )));
@@ -159,12 +190,14 @@ mod tests {
 
     #[test]
     fn the_steps_a_run_must_record_include_the_first_and_the_last() {
-        let every3 = RecordSpec {
-            trajectory_every: 3,
-            forces: false,
-        };
+        let every3 = RecordSpec::every(3, false);
         assert_eq!(every3.required_steps(7).collect::<Vec<_>>(), [0, 3, 6, 7]);
         assert_eq!(every3.required_steps(6).collect::<Vec<_>>(), [0, 3, 6]);
+        let window = RecordSpec::sparse_then_every_step(4, 9, false);
+        assert_eq!(
+            window.required_steps(12).collect::<Vec<_>>(),
+            [0, 4, 8, 9, 10, 11, 12]
+        );
     }
 
     #[test]
@@ -199,10 +232,7 @@ mod tests {
     #[test]
     fn forces_are_required_only_when_asked_for() {
         let rows: BTreeMap<_, _> = [((0, 1), state(0.0))].into_iter().collect();
-        let spec = RecordSpec {
-            trajectory_every: 1,
-            forces: true,
-        };
+        let spec = RecordSpec::every(1, true);
         let e = Recording::from_rows("t.csv", &rows, 1, 1.0, 0, spec).unwrap_err();
         assert!(e.to_string().contains("fx, fy, fz"), "{e}");
     }

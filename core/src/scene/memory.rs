@@ -77,7 +77,11 @@ fn shares(scene: &Scene, steps: Option<u64>, process: Option<(&str, usize)>) -> 
     }
     let every = scene.output.trajectory_every;
     if let (Some(steps), true) = (steps, every > 0) {
-        let records = (steps / every) as f64 + 2.0;
+        let dense = scene
+            .output
+            .trajectory_every_step_from
+            .map_or(0, |from| steps.saturating_sub(from));
+        let records = (steps / every) as f64 + dense as f64 + 2.0;
         shares.push(Share {
             path: "output.trajectory_every".into(),
             bytes: records * particles * BYTES_PER_TRAJECTORY_ROW,

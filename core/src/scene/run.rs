@@ -217,6 +217,11 @@ pub struct OutputSpec {
     /// writes none. The last step is always written when this is set.
     #[serde(default)]
     pub trajectory_every: u64,
+    /// From this step to the last, trajectory.csv has a row at every step as well:
+    /// a measurement that interpolates between steps near the end of a run (where a
+    /// force or an overlap crosses a value) needs them there and nowhere else.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub trajectory_every_step_from: Option<u64>,
     /// Steps between restart checkpoints (`checkpoint.json`); 0 writes none.
     #[serde(default)]
     pub checkpoint_every: u64,
@@ -310,6 +315,12 @@ pub fn validate_detection_limits_and_output(scene: &Scene, e: &mut Errors) {
         e.push(
             "stability.check_every",
             "must be >= 1, got 0 (it would switch the energy check off)",
+        );
+    }
+    if scene.output.trajectory_every_step_from.is_some() && scene.output.trajectory_every == 0 {
+        e.push(
+            "output.trajectory_every_step_from",
+            "needs output.trajectory_every >= 1 (it adds rows to trajectory.csv)",
         );
     }
     for (k, c) in scene.output.series.iter().enumerate() {

@@ -1,14 +1,15 @@
 //! Onset of yield in the Hertz contact of two equal NiAl spheres (Rojek 2016 eq 30,
 //! Table 2): F_Y, the overlap h_Y from inverting eq 2, and a displacement-driven
-//! two-sphere compression read at h_Y. The references for F_Y and h_Y are an
+//! two-sphere compression read at h_Y from its recorded run, between the consecutive
+//! steps where the overlap first reaches h_Y. The references for F_Y and h_Y are an
 //! independent evaluation (Python, docs/paper-discrepancies.md §1); the paper plots
 //! a point ~6 % higher, consistent with E ≈ 178 GPa instead of Table 2's 183 GPa.
 
+use super::two_body::{Pair, compression_past};
 use crate::contact::normal::hertz::hertz_overlap_at_force;
-use crate::error::{Result, TampError};
+use crate::error::Result;
 use crate::material::hertz_yield_onset_force;
-use crate::scene;
-use crate::verify::{CaseContext, Measured};
+use crate::verify::{CaseContext, Measured, measure};
 
 /// NiAl, Rojek 2016 Table 2.
 const YIELD_STRESS: f64 = 800e6;
@@ -28,28 +29,16 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let f_y = hertz_yield_onset_force(radius, e, nu, YIELD_STRESS);
 
     // Displacement-driven compression: both centres prescribed, read F(h) at h_Y.
-    let mut sim = scene::build(&scene)?.sim;
-    let e_eff = sim
-        .model
-        .pair_table
-        .get(0, 0)
-        .effective_modulus
-        .unwrap_or(0.0);
-    let h_y = hertz_overlap_at_force(f_y, 0.5 * radius, e_eff);
-    let mut prev = (sim.overlap(0, 1), sim.state.particles.force[0].norm());
-    let mut f_at_h_y = None;
-    for _ in 0..1_000_000 {
-        sim.step()?;
-        let now = (sim.overlap(0, 1), sim.state.particles.force[0].norm());
-        if prev.0 < h_y && now.0 >= h_y {
-            let w = (h_y - prev.0) / (now.0 - prev.0);
-            f_at_h_y = Some(prev.1 + w * (now.1 - prev.1));
-            break;
-        }
-        prev = now;
-    }
-    let f_at_h_y =
-        f_at_h_y.ok_or_else(|| TampError::Other("the compression never reached h_Y".into()))?;
+    let h_y = hertz_overlap_at_force(f_y, 0.5 * radius, Pair::of(&scene)?.effective_modulus()?);
+    let (run, spec) = compression_past(&scene, h_y, 1000)?;
+    let rec = ctx.record("compression", &run, spec)?;
+    let f_at_h_y = measure::first_crossing(
+        &rec,
+        |f| Ok(measure::overlap(f, 0, 1)),
+        |f| measure::force(f, 0),
+        h_y,
+        "the overlap",
+    )?;
     Ok(vec![
         Measured::new("F_Y_table2", f_y, F_Y_PYTHON),
         Measured::new("h_Y_table2", h_y, H_Y_PYTHON),

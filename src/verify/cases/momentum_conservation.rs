@@ -16,10 +16,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let built = scene::build(&scene)?;
     let p = &built.sim.state.particles;
     let (mass, inertia) = (p.mass.clone(), p.inertia.clone());
-    let first_and_last = RecordSpec {
-        trajectory_every: built.steps.max(1),
-        forces: false,
-    };
+    let first_and_last = RecordSpec::every(built.steps.max(1), false);
     let rec = ctx.record("cloud", &scene, first_and_last)?;
     let (Some(first), Some(last)) = (rec.frames.first(), rec.frames.last()) else {
         return Err(TampError::Other("the recording has no frames".into()));

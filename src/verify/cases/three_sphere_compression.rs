@@ -5,15 +5,19 @@
 //! it lets the step follow the stiff small contact without resolving its
 //! oscillation. Reference: eq 2 (Hertz) or eq 16 (Storåkers) with
 //! R* = 10·2/12 µm, inverted at 0.02 N. The paper reads 0.4–0.5 µm for Storåkers.
+//! The overlap is read from the recorded run, between the consecutive steps where the
+//! force on the outer sphere first reaches 0.02 N.
 
 use super::rojek_models::{MODELS, material_constants, overlap_at_force, with_model};
-use crate::collision::compress_to_force;
+use super::two_body::compression_past;
 use crate::error::Result;
 use crate::material::effective_radius;
-use crate::scene;
-use crate::verify::{CaseContext, Measured};
+use crate::verify::{CaseContext, Measured, measure};
 
 const FORCE: f64 = 0.02;
+
+/// Steps between recorded frames before the crossing (about a hundred per run).
+const EVERY: u64 = 10_000;
 
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let base = ctx.scene()?;
@@ -21,12 +25,20 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let r_eff = effective_radius(base.particles[0].radius, base.particles[1].radius);
     let mut out = Vec::new();
     for (name, exponent) in MODELS {
-        let mut sim = scene::build(&with_model(&base, exponent))?.sim;
-        let (h, _) = compress_to_force(&mut sim, 0, 1, FORCE, 100_000_000, u64::MAX)?;
+        let reference = overlap_at_force(FORCE, r_eff, e, nu, yield_stress, exponent);
+        let (scene, spec) = compression_past(&with_model(&base, exponent), reference, EVERY)?;
+        let rec = ctx.record(name, &scene, spec)?;
+        let h = measure::first_crossing(
+            &rec,
+            |f| measure::force(f, 0),
+            |f| Ok(measure::overlap(f, 0, 1)),
+            FORCE,
+            "the force on particle 0",
+        )?;
         out.push(Measured::new(
             &format!("small_contact_overlap_at_0.02N_{name}"),
             h,
-            overlap_at_force(FORCE, r_eff, e, nu, yield_stress, exponent),
+            reference,
         ));
     }
     Ok(out)

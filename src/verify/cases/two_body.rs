@@ -1,11 +1,19 @@
 //! The inputs of a two-sphere case as its references need them: the effective mass,
-//! radius and modulus of particles 0 and 1 and their normal approach speed, taken from
-//! the scene as tamp builds it (materials mixed once, masses from densities), before
-//! any step. The references never read what an engine recorded.
+//! radius and modulus of particles 0 and 1, their gap and normal approach speed, taken
+//! from the scene as tamp builds it (materials mixed once, masses from densities),
+//! before any step. The references never read what an engine recorded.
+//!
+//! Also the length of the run a case hands an engine, from the same inputs: a
+//! collision needs the gap closed at the approach speed and then the contact, whose
+//! duration scales as Hertz's (Johnson 1985 §11.4),
+//!   T_H = 3.2145 (m*/k̃)^{2/5} v^{−1/5},  k̃ = 4/3 E* √R*;
+//! a displacement-driven compression to the overlap h reaches it at step (h + gap)/(v Δt).
 
 use crate::error::{Result, TampError};
 use crate::material::{effective_mass, effective_radius};
+use crate::scene::schema::RunSpec;
 use crate::scene::{self, Scene};
+use crate::verify::recording::RecordSpec;
 
 /// Particles 0 and 1 of a scene, at t = 0.
 #[derive(Clone, Copy, Debug)]
@@ -18,6 +26,10 @@ pub struct Pair {
     pub e_eff: Option<f64>,
     /// −(v₀ − v₁)·n, n from particle 1 to 0: the speed at which they close, m/s.
     pub approach: f64,
+    /// |x₀ − x₁| − R₀ − R₁, m: negative when they overlap at t = 0.
+    pub gap: f64,
+    /// The scene's time step, s.
+    pub dt: f64,
 }
 
 impl Pair {
@@ -40,6 +52,8 @@ impl Pair {
                 .effective_modulus,
             approach: -(p.velocity[0] - p.velocity[1])
                 .dot(&(p.position[0] - p.position[1]).normalize()),
+            gap: (p.position[0] - p.position[1]).norm() - p.radius[0] - p.radius[1],
+            dt: sim.dt(),
         })
     }
 
@@ -51,4 +65,40 @@ impl Pair {
             )
         })
     }
+
+    /// Steps that close the gap and then last `contacts` Hertz contact durations at the
+    /// approach speed: a run through one collision of any law whose contact lasts a
+    /// few times Hertz's at most (the measurement says so when it did not end).
+    pub fn steps_through_collision(&self, contacts: f64) -> Result<u64> {
+        let k = 4.0 / 3.0 * self.effective_modulus()? * self.r_eff.sqrt();
+        let hertz = 3.2145 * (self.m_eff / k).powf(0.4) * self.approach.powf(-0.2);
+        Ok(((self.gap.max(0.0) / self.approach + contacts * hertz) / self.dt).ceil() as u64)
+    }
+
+    /// The step at which the pair, closing at its prescribed approach speed, reaches
+    /// the overlap `h`.
+    pub fn step_at_overlap(&self, h: f64) -> f64 {
+        (h + self.gap) / (self.approach * self.dt)
+    }
+}
+
+/// `scene` run for `steps` steps.
+pub fn with_steps(scene: &Scene, steps: u64) -> Scene {
+    Scene {
+        run: RunSpec {
+            steps: Some(steps),
+            ..RunSpec::default()
+        },
+        ..scene.clone()
+    }
+}
+
+/// A displacement-driven compression of particles 0 and 1 of `scene` past the overlap
+/// `h` it is expected to cross a value at: the run ends 2 % past the step of `h`, and is
+/// recorded every `every` steps with forces, and at every step from 2 % before it,
+/// where the crossing is found between consecutive steps.
+pub fn compression_past(scene: &Scene, h: f64, every: u64) -> Result<(Scene, RecordSpec)> {
+    let k = Pair::of(scene)?.step_at_overlap(h);
+    let spec = RecordSpec::sparse_then_every_step(every, (0.98 * k).floor() as u64, true);
+    Ok((with_steps(scene, (1.02 * k).ceil() as u64), spec))
 }

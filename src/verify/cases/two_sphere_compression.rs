@@ -4,18 +4,44 @@
 //! Reference: eq 31 for Hertz, and for Storåkers eq 16 with R* = R/2 and
 //! σ0* = 2^{−m}σ0, which gives F/4R² = 2^{−1−m/2} 3^{1−m} π c^{2+m} σ0 (|h|/2R)^{1+m/2}
 //! (eq 32 as printed is 2^{2−m/2} too large; docs/paper-discrepancies.md).
-//! Also writes the F–h and Δt_cr–h curves of all models (Rojek Figs 10, 12) to
-//! `two_sphere_compression.csv` and `.svg` in the report directory.
+//! The overlap is read from the recorded run, between the consecutive steps where the
+//! force first reaches the target. Also writes the F–h curves of all models as recorded
+//! (Rojek Fig 10), with tamp's critical time step at each overlap (Fig 12: a property of
+//! the law that tamp computes, not a recorded output), to `two_sphere_compression.csv`
+//! and `.svg` in the report directory.
 
 use super::rojek_models::{MODELS, material_constants, overlap_at_force, with_model};
-use crate::collision::{CompressionSample, compress_to_force};
+use super::two_body::compression_past;
 use crate::error::Result;
 use crate::plot::{Panel, Series, write_svg};
-use crate::scene;
-use crate::verify::{CaseContext, Measured};
+use crate::scene::{self, Scene};
+use crate::verify::{CaseContext, Measured, measure};
 use std::fmt::Write;
 
 const PRESSURE: f64 = 50e6;
+
+/// Steps between the recorded frames of the curves.
+const EVERY: u64 = 500;
+
+/// One point of a curve: the recorded overlap and force, and tamp's critical time step
+/// of the pair held at that overlap.
+struct Sample {
+    overlap: f64,
+    force: f64,
+    critical_time_step: Option<f64>,
+}
+
+/// Tamp's critical time step of particles 0 and 1 of `scene` placed at overlap `h`
+/// along x, at rest.
+fn critical_time_step_at(scene: &Scene, h: f64) -> Result<Option<f64>> {
+    let mut s = scene.clone();
+    let (r0, r1) = (s.particles[0].radius, s.particles[1].radius);
+    s.particles[0].position = [-(r0 - 0.5 * h), 0.0, 0.0];
+    s.particles[1].position = [r1 - 0.5 * h, 0.0, 0.0];
+    // The pair is placed in contact on purpose.
+    s.stability.initial_overlap_tolerance = 1.0;
+    Ok(scene::build(&s)?.sim.critical_time_step(None))
+}
 
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let base = ctx.scene()?;
@@ -28,15 +54,40 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         String::from("model,h_over_2R,F_over_4R2_Pa,overlap_m,force_N,critical_time_step_s\n");
     let (mut force_curves, mut dt_curves) = (Vec::new(), Vec::new());
     for (name, exponent) in MODELS {
-        let mut sim = scene::build(&with_model(&base, exponent))?.sim;
-        let (h, curve) = compress_to_force(&mut sim, 0, 1, target, 100_000_000, 500)?;
+        let model = with_model(&base, exponent);
         let reference = overlap_at_force(target, 0.5 * radius, e, nu, yield_stress, exponent);
+        let (scene, spec) = compression_past(&model, reference, EVERY)?;
+        let rec = ctx.record(name, &scene, spec)?;
+        let h = measure::first_crossing(
+            &rec,
+            |f| measure::force(f, 0),
+            |f| Ok(measure::overlap(f, 0, 1)),
+            target,
+            "the force on particle 0",
+        )?;
+        let mut curve = Vec::new();
+        for f in &rec.frames {
+            let overlap = measure::overlap(f, 0, 1);
+            let force = measure::force(f, 0)?;
+            if overlap > 0.0 && f.step.is_multiple_of(EVERY) && force < target {
+                curve.push(Sample {
+                    overlap,
+                    force,
+                    critical_time_step: critical_time_step_at(&model, overlap)?,
+                });
+            }
+        }
+        curve.push(Sample {
+            overlap: h,
+            force: target,
+            critical_time_step: critical_time_step_at(&model, h)?,
+        });
         out.push(Measured::new(
             &format!("h_over_2R_at_50MPa_{name}"),
             h / (2.0 * radius),
             reference / (2.0 * radius),
         ));
-        let x = |s: &CompressionSample| s.overlap / (2.0 * radius);
+        let x = |s: &Sample| s.overlap / (2.0 * radius);
         for s in &curve {
             let _ = writeln!(
                 csv,

@@ -5,12 +5,15 @@
 //! no other load: they must stay in contact at every step and settle where the
 //! Hertz force balances the saturated attraction,
 //!   4/3 E* √R* δ_eq^{3/2} = A R*/(6 h_min²).
+//! The held spheres' force is read from the first recorded frame (the forces of the
+//! placed particles, before any step); the free pair from a frame at every step.
 
+use super::two_body::{Pair, with_steps};
 use crate::contact::normal::hertz::hertz_overlap_at_force;
 use crate::contact::van_der_waals::{Cohesion, VanDerWaals};
 use crate::error::{Result, TampError};
-use crate::scene;
-use crate::verify::{CaseContext, Measured};
+use crate::verify::recording::RecordSpec;
+use crate::verify::{CaseContext, Measured, measure};
 
 const GAPS: [(&str, f64); 3] = [("1nm", 1e-9), ("10nm", 1e-8), ("50nm", 5e-8)];
 
@@ -35,34 +38,30 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
             p.prescribed_velocity = Some([0.0; 3]);
         }
         s.broad_phase.skin_fraction = 1e-6;
-        let sim = scene::build(&s)?.sim;
+        let rec = ctx.record(name, &with_steps(&s, 1), RecordSpec::every(1, true))?;
+        let held = rec.frames[0].bodies[0].force.unwrap_or_default();
         out.push(Measured::new(
             &format!("force_at_separation_{name}"),
-            sim.state.particles.force[0].x,
+            held.x,
             hamaker * r_eff / (6.0 * gap * gap),
         ));
     }
 
-    let mut sim = scene::build(&base)?.sim;
-    let steps = base.run.steps.unwrap_or(0);
-    let mut apart = 0u64;
-    for _ in 0..steps {
-        sim.step()?;
-        if sim.overlap(0, 1) <= 0.0 {
-            apart += 1;
-        }
-    }
-    let e_star = sim
-        .model
-        .pair_table
-        .get(0, 0)
-        .effective_modulus
-        .unwrap_or(0.0);
+    let rec = ctx.record("free_pair", &base, RecordSpec::EVERY_STEP)?;
+    let apart = rec.frames[1..]
+        .iter()
+        .filter(|f| measure::overlap(f, 0, 1) <= 0.0)
+        .count();
+    let last = rec
+        .frames
+        .last()
+        .ok_or_else(|| TampError::Other("an empty recording".into()))?;
+    let e_star = Pair::of(&base)?.effective_modulus()?;
     let pull = hamaker * r_eff / (6.0 * min_separation * min_separation);
     out.push(Measured::new("steps_apart", apart as f64, 0.0));
     out.push(Measured::new(
         "equilibrium_overlap",
-        sim.overlap(0, 1),
+        measure::overlap(last, 0, 1),
         hertz_overlap_at_force(pull, r_eff, e_star),
     ));
     Ok(out)

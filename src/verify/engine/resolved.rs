@@ -93,6 +93,7 @@ pub fn resolve(scene: &Scene, spec: RecordSpec) -> Result<Resolved, Refusal> {
         },
         output: OutputSpec {
             trajectory_every: spec.trajectory_every,
+            trajectory_every_step_from: spec.every_step_from,
             forces: spec.forces,
             ..OutputSpec::default()
         },

@@ -12,11 +12,10 @@ use crate::verify::recording::{Body, Frame, RecordSpec, Recording};
 pub fn record(scene: &Scene, spec: RecordSpec) -> Result<Recording> {
     let built = scene::build(scene)?;
     let mut sim = built.sim;
-    let every = spec.trajectory_every.max(1);
     let mut frames = vec![frame(&sim, spec.forces)];
     while sim.state.step < built.steps {
         sim.step()?;
-        if sim.state.step.is_multiple_of(every) || sim.state.step == built.steps {
+        if spec.records(sim.state.step, built.steps) {
             frames.push(frame(&sim, spec.forces));
         }
     }
