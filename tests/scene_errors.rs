@@ -760,6 +760,17 @@ fn scenes_too_large_for_memory_are_refused_before_allocating() {
     expect_input_error(s, &needles("output.trajectory_every"));
 }
 
+/// Rows at every step from a step on are rows of trajectory.csv, which must be written.
+#[test]
+fn every_step_rows_need_a_trajectory() {
+    let mut s = base();
+    s["output"] = json!({"trajectory_every_step_from": 5});
+    expect_input_error(
+        s,
+        &["output.trajectory_every_step_from", "output.trajectory_every >= 1"],
+    );
+}
+
 /// A rigid wall material: no density or elastic constants (a value given would never
 /// be used, so it is refused), and never a particle's material.
 #[test]

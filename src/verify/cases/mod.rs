@@ -64,6 +64,7 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("hysteretic_restitution", restitution_laws::hysteretic),
     ("kuwabara_kono_restitution", kuwabara_kono_restitution::run),
     ("thornton_restitution", thornton_restitution::run),
+    ("thornton_liggghts_restitution", thornton_restitution::run),
     ("sliding_oblique_impact", sliding_oblique_impact::run),
     ("van_der_waals_force", van_der_waals_force::run),
     ("nial_die_compaction_small", nial_die_compaction::small),
