@@ -65,6 +65,14 @@ enum Command {
         /// (docs/engines.md). Each case runs once per engine.
         #[arg(long = "engine", value_name = "ENGINE")]
         engines: Vec<verify::engine::Engine>,
+        /// Run the peer engines (liggghts, lammps) now, and check each run against its
+        /// record in reference_data/<peer>/engine/ (byte for byte, else every value to
+        /// 1e-9). Without it a peer engine gives its recorded values, and needs no peer.
+        #[arg(long)]
+        live: bool,
+        /// With --live: write the peer runs' records instead of checking them.
+        #[arg(long, requires = "live")]
+        record: bool,
     },
     /// Write a LIGGGHTS 3.8 deck (in.tamp, particles.data, meshes) for SCENE into DIR.
     ExportLiggghts {
@@ -288,10 +296,17 @@ fn main() -> ExitCode {
             report,
             jobs,
             engines,
+            live,
+            record,
         } => verify::run_cli(
             tier,
             &cases,
             &engines,
+            match (live, record) {
+                (_, true) => verify::engine::peer_record::PeerRuns::Record,
+                (true, false) => verify::engine::peer_record::PeerRuns::Live,
+                (false, false) => verify::engine::peer_record::PeerRuns::Recorded,
+            },
             json.as_deref(),
             &report,
             jobs.unwrap_or_else(verify::default_jobs),

@@ -234,3 +234,69 @@ fn an_unknown_engine_is_refused_naming_the_choices() {
         "{err}"
     );
 }
+
+/// Without `--live` a peer engine gives the values recorded in
+/// `reference_data/<peer>/engine/`, with no peer installed; a record whose deck is not
+/// the one the case exports now is an error naming the command that re-records it.
+#[test]
+fn a_peer_engine_without_the_peer_gives_its_recorded_values_and_refuses_a_stale_record() {
+    let case = "hertz_collision_time";
+    let record_path = root().join(format!("reference_data/liggghts/engine/{case}.json"));
+    let record: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&record_path).unwrap()).unwrap();
+
+    let dir = scratch("recorded");
+    let json = dir.join("v.json");
+    let run = |verification: &Path| {
+        let _ = std::fs::remove_file(&json);
+        Command::new(env!("CARGO_BIN_EXE_tamp"))
+            .args(["verify", "--engine", "liggghts", "--case", case, "--report"])
+            .arg(dir.join("report"))
+            .arg("--json")
+            .arg(&json)
+            .env("PATH", "/nonexistent")
+            .env("TAMP_VERIFICATION_DIR", verification)
+            .current_dir(root())
+            .output()
+            .unwrap()
+    };
+    let cases = |out: &Output| -> Vec<serde_json::Value> {
+        let text = std::fs::read_to_string(&json)
+            .unwrap_or_else(|e| panic!("no JSON ({e}): {}", String::from_utf8_lossy(&out.stderr)));
+        serde_json::from_str::<serde_json::Value>(&text).unwrap()["cases"]
+            .as_array()
+            .unwrap()
+            .clone()
+    };
+    let out = run(&root().join("verification"));
+    let c = &cases(&out)[0];
+    assert_eq!(c["status"], "pass", "{c}");
+    for q in c["quantities"].as_array().unwrap() {
+        let name = q["name"].as_str().unwrap();
+        assert_eq!(q["value"], record["quantities"][name], "{name}");
+    }
+
+    // The same case beside a record of another deck.
+    let copy = dir.join("copy");
+    std::fs::create_dir_all(copy.join("verification")).unwrap();
+    for file in [format!("{case}.json"), format!("{case}.scene.json")] {
+        std::fs::copy(
+            root().join("verification").join(&file),
+            copy.join("verification").join(&file),
+        )
+        .unwrap();
+    }
+    let mut stale = record.clone();
+    stale["runs"][0]["deck_sha256"] = serde_json::json!("0".repeat(64));
+    let stale_path = copy.join(format!("reference_data/liggghts/engine/{case}.json"));
+    std::fs::create_dir_all(stale_path.parent().unwrap()).unwrap();
+    std::fs::write(&stale_path, stale.to_string()).unwrap();
+    let out = run(&copy.join("verification"));
+    let c = &cases(&out)[0];
+    assert_eq!(c["status"], "error", "{c}");
+    let error = c["error"].as_str().unwrap();
+    assert!(
+        error.contains("is stale") && error.contains("--live --record --case hertz_collision_time"),
+        "{error}"
+    );
+}

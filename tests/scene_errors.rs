@@ -767,7 +767,10 @@ fn every_step_rows_need_a_trajectory() {
     s["output"] = json!({"trajectory_every_step_from": 5});
     expect_input_error(
         s,
-        &["output.trajectory_every_step_from", "output.trajectory_every >= 1"],
+        &[
+            "output.trajectory_every_step_from",
+            "output.trajectory_every >= 1",
+        ],
     );
 }
 

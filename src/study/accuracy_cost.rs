@@ -219,6 +219,7 @@ fn timed(
             None,
             variant,
             &verify::engine::Engine::Tamp,
+            verify::engine::peer_record::PeerRuns::Recorded,
         );
         repeats += 1;
         let elapsed = started.elapsed().as_secs_f64();

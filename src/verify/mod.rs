@@ -25,6 +25,7 @@ pub mod store;
 use crate::error::{Result, TampError};
 use crate::process::die_compaction_file::DieCompactionFile;
 use crate::scene::{self, Scene};
+use engine::peer_record::{self, PeerRecord, PeerRun, PeerRuns};
 use engine::{Engine, Refusal};
 use recording::{RecordSpec, Recording};
 use serde::{Deserialize, Serialize};
@@ -143,6 +144,10 @@ pub struct CaseContext<'a> {
     pub variant: Variant,
     /// The engine the case's scenes run on (`record`).
     pub engine: Engine,
+    /// Whether a peer engine runs now or gives its recorded values.
+    pub peer_runs: PeerRuns,
+    /// The runs a peer engine made for this case, as its record keeps them.
+    peer_log: Mutex<Vec<PeerRun>>,
     /// Set by `record` when the engine cannot express a scene: the reason.
     not_expressible: Mutex<Option<String>>,
     /// Whether the case recorded anything (a case that is not `tamp_only` must).
@@ -205,6 +210,8 @@ impl<'a> CaseContext<'a> {
             reference_data: reference_data.map(Path::to_path_buf),
             variant,
             engine,
+            peer_runs: PeerRuns::default(),
+            peer_log: Mutex::new(Vec::new()),
             not_expressible: Mutex::new(None),
             recorded: AtomicBool::new(false),
         }
@@ -226,14 +233,94 @@ impl<'a> CaseContext<'a> {
             .report_dir
             .join(format!("{}_engine", self.spec.name))
             .join(label);
-        engine::record(&self.engine, scene, spec, &dir).map_err(|refusal| match refusal {
+        let refused = |refusal| match refusal {
             Refusal::Failed(e) => e,
             Refusal::NotExpressible(why) => {
                 let message = format!("{}: {why}", self.engine);
                 *self.not_expressible.lock().expect("not poisoned") = Some(message.clone());
                 TampError::Other(message)
             }
-        })
+        };
+        if let (Some(peer), PeerRuns::Recorded) = (self.engine.peer(), self.peer_runs) {
+            // The recorded values stand in for the peer's: its deck must be the one
+            // recorded, and tamp's own run gives the case its quantities and references.
+            let deck = engine::peer_deck(peer, scene, spec, &dir).map_err(refused)?;
+            let path = self.peer_record_path(peer);
+            let record = peer_record::load(&path)?.ok_or_else(|| {
+                TampError::Other(format!(
+                    "{}: no recorded {} run of this case; record one with `tamp verify --engine {} --live --record --case {}` (the peer installed)",
+                    path.display(),
+                    self.engine,
+                    self.engine,
+                    self.spec.name
+                ))
+            })?;
+            record.check_run(label, &deck, &path)?;
+            return engine::tamp::record(scene, spec);
+        }
+        let (recording, run) =
+            engine::record(&self.engine, label, scene, spec, &dir).map_err(refused)?;
+        if let Some(run) = run {
+            self.peer_log.lock().expect("not poisoned").push(run);
+        }
+        Ok(recording)
+    }
+
+    /// `reference_data/<peer>/engine/<case>.json`.
+    fn peer_record_path(&self, peer: engine::peer::Peer) -> PathBuf {
+        peer_record::path(&reference_data_beside(&self.dir), peer, &self.spec.name)
+    }
+
+    /// A peer engine's values, as `peer_runs` says: the recorded ones in place of those
+    /// measured on tamp's run (`Recorded`), the fresh ones checked against the record
+    /// (`Live`), or the fresh ones written as the record (`Record`).
+    fn peer_values(&self, mut measured: Vec<Measured>) -> Result<Vec<Measured>> {
+        let Some(peer) = self.engine.peer() else {
+            return Ok(measured);
+        };
+        let path = self.peer_record_path(peer);
+        match self.peer_runs {
+            PeerRuns::Recorded => {
+                let record = peer_record::load(&path)?
+                    .ok_or_else(|| TampError::Other(format!("{} vanished", path.display())))?;
+                for m in &mut measured {
+                    m.value = *record.quantities.get(&m.name).ok_or_else(|| {
+                        TampError::Other(format!(
+                            "{}: has no value of '{}'",
+                            path.display(),
+                            m.name
+                        ))
+                    })?;
+                }
+            }
+            PeerRuns::Live => {
+                let runs = self.peer_log.lock().expect("not poisoned").clone();
+                let values = measured.iter().map(|m| (m.name.clone(), m.value)).collect();
+                if let Some(record) = peer_record::load(&path)? {
+                    let drift = record.drift(&runs, &values);
+                    if !drift.is_empty() {
+                        return Err(TampError::Other(format!(
+                            "{} drifted from its record {}: {}; find out why, then re-record with --live --record",
+                            self.engine,
+                            path.display(),
+                            drift.join("; ")
+                        )));
+                    }
+                }
+            }
+            PeerRuns::Record => {
+                let record = PeerRecord {
+                    case: self.spec.name.clone(),
+                    engine: self.engine.to_string(),
+                    tamp_version: crate::VERSION.to_string(),
+                    git_commit: crate::GIT_COMMIT.to_string(),
+                    runs: self.peer_log.lock().expect("not poisoned").clone(),
+                    quantities: measured.iter().map(|m| (m.name.clone(), m.value)).collect(),
+                };
+                peer_record::save(&path, &record)?;
+            }
+        }
+        Ok(measured)
     }
 
     /// The case file's `parameters`, as the case's own type; an absent or wrong field
@@ -526,6 +613,7 @@ pub fn run_case(
     reference_data: Option<&Path>,
     variant: Variant,
     engine: &Engine,
+    peer_runs: PeerRuns,
 ) -> CaseResult {
     let started = Instant::now();
     let started_at = std::time::SystemTime::now();
@@ -535,7 +623,8 @@ pub fn run_case(
         Engine::Tamp => report_dir.to_path_buf(),
         other => report_dir.join(other.slug()),
     };
-    let ctx = CaseContext::new(spec, dir, &own_dir, reference_data, variant, engine.clone());
+    let mut ctx = CaseContext::new(spec, dir, &own_dir, reference_data, variant, engine.clone());
+    ctx.peer_runs = peer_runs;
     let outcome = match (cases::find(&spec.name), &spec.tamp_only) {
         (None, _) => Err(TampError::Other(format!(
             "no code registered for case '{}' in src/verify/cases",
@@ -552,7 +641,7 @@ pub fn run_case(
                     "case '{}' is not tamp_only in its file, yet it measured nothing an engine recorded",
                     spec.name
                 ))),
-                false => Ok(measured),
+                false => ctx.peer_values(measured),
             }
         }),
     };
@@ -645,11 +734,14 @@ pub fn run_cli(
     tier: Tier,
     names: &[String],
     engines: &[Engine],
+    peer_runs: PeerRuns,
     json: Option<&Path>,
     report_dir: &Path,
     jobs: usize,
 ) -> Result<u8> {
-    run_cases(tier, names, engines, json, report_dir, None, jobs)
+    run_cases(
+        tier, names, engines, peer_runs, json, report_dir, None, jobs,
+    )
 }
 
 /// The number of cases `tamp verify` runs at once unless told: one per core.
@@ -659,10 +751,12 @@ pub fn default_jobs() -> usize {
 
 /// `run_cli` with `reference_data/` replaced by `reference_data` when given. Each
 /// case runs once per engine (tamp alone when `engines` is empty).
+#[allow(clippy::too_many_arguments)]
 pub fn run_cases(
     tier: Tier,
     names: &[String],
     engines: &[Engine],
+    peer_runs: PeerRuns,
     json: Option<&Path>,
     report_dir: &Path,
     reference_data: Option<&Path>,
@@ -707,6 +801,7 @@ pub fn run_cases(
             reference_data,
             Variant::default(),
             engine,
+            peer_runs,
         );
         let name = match several {
             true => format!("{} [{engine}]", spec.name),

@@ -4,7 +4,8 @@
 //!   memory, no files in between;
 //! - `liggghts`, `lammps`: the resolved scene is exported as a deck (the exporters of
 //!   `tamp export-liggghts` and `tamp export-lammps`), the peer runs it now, and its
-//!   dump is read as the layout of docs/compare.md;
+//!   dump is read as the layout of docs/compare.md; or, without `--live`, the peer's
+//!   recorded values stand in for the run (`peer_record`);
 //! - `command:PROG`: any program, run as `PROG SCENE_JSON OUT_DIR` on the resolved
 //!   scene, writing `OUT_DIR/trajectory.csv`.
 //!
@@ -13,6 +14,7 @@
 
 pub mod command;
 pub mod peer;
+pub mod peer_record;
 pub mod resolved;
 pub mod tamp;
 
@@ -32,9 +34,11 @@ pub const NOT_EXPRESSIBLE_EXIT: i32 = 4;
 pub enum Engine {
     /// tamp itself, in-process.
     Tamp,
-    /// LIGGGHTS 3.8 (`liggghts` on PATH), run now on the exported deck.
+    /// LIGGGHTS 3.8 (`liggghts` on PATH) on the exported deck: run now with `--live`,
+    /// else its recorded values.
     Liggghts,
-    /// LAMMPS 22 Jul 2025 (`.ci/install-lammps`, or `$LMP`), run now on the exported deck.
+    /// LAMMPS 22 Jul 2025 (`.ci/install-lammps`, or `$LMP`) on the exported deck: run
+    /// now with `--live`, else its recorded values.
     Lammps,
     /// An adapter: the program and its leading arguments, split on white space.
     Command(String),
@@ -72,6 +76,15 @@ impl fmt::Display for Engine {
 }
 
 impl Engine {
+    /// The peer code this engine runs, if it is one.
+    pub fn peer(&self) -> Option<peer::Peer> {
+        match self {
+            Engine::Liggghts => Some(peer::Peer::Liggghts),
+            Engine::Lammps => Some(peer::Peer::Lammps),
+            _ => None,
+        }
+    }
+
     /// A file-name-safe name for the engine's run directories.
     pub fn slug(&self) -> String {
         self.to_string()
@@ -105,28 +118,62 @@ impl From<TampError> for Refusal {
 
 /// Record one run of `scene` on `engine`. An external engine works under `dir`,
 /// emptied first so that nothing of an earlier run is read as this one's; tamp needs
-/// no files.
+/// no files. A peer's run also gives what its record keeps (`peer_record::PeerRun`,
+/// labelled `label`).
 pub fn record(
     engine: &Engine,
+    label: &str,
     scene: &Scene,
     spec: RecordSpec,
     dir: &Path,
-) -> std::result::Result<Recording, Refusal> {
+) -> std::result::Result<(Recording, Option<peer_record::PeerRun>), Refusal> {
     if *engine == Engine::Tamp {
-        return Ok(tamp::record(scene, spec)?);
+        return Ok((tamp::record(scene, spec)?, None));
     }
+    let resolved = fresh_resolved(scene, spec, dir)?;
+    match (engine, engine.peer()) {
+        (_, Some(p)) => {
+            let (recording, deck_sha256, dump_sha256) = peer::record(p, &resolved, dir)?;
+            let run = peer_record::PeerRun {
+                label: label.to_string(),
+                deck_sha256,
+                dump_sha256,
+            };
+            Ok((recording, Some(run)))
+        }
+        (Engine::Command(prog), None) => Ok((command::record(prog, &resolved, dir)?, None)),
+        (Engine::Tamp | Engine::Liggghts | Engine::Lammps, None) => {
+            unreachable!("tamp is recorded in-process and the peers have a peer")
+        }
+    }
+}
+
+/// The SHA-256 of the deck `peer` would run for `scene`, exported into `dir` (emptied
+/// first), without running it: what a recorded run is checked against.
+pub fn peer_deck(
+    peer: peer::Peer,
+    scene: &Scene,
+    spec: RecordSpec,
+    dir: &Path,
+) -> std::result::Result<String, Refusal> {
+    let resolved = fresh_resolved(scene, spec, dir)?;
+    let deck = peer::export(peer, &resolved, dir)?;
+    crate::output::write_atomic(&dir.join("scene.json"), resolved.json.as_bytes())?;
+    Ok(deck)
+}
+
+/// `scene` resolved, with `dir` emptied for its run.
+fn fresh_resolved(
+    scene: &Scene,
+    spec: RecordSpec,
+    dir: &Path,
+) -> std::result::Result<resolved::Resolved, Refusal> {
     if dir.exists() {
         std::fs::remove_dir_all(dir)
             .map_err(|e| TampError::io(format!("emptying {}", dir.display()), e))?;
     }
     crate::output::create_dir(dir)?;
-    let resolved = resolved::resolve(scene, spec)?;
-    match engine {
-        Engine::Tamp => unreachable!("recorded in-process above"),
-        Engine::Liggghts => peer::record(peer::Peer::Liggghts, &resolved, dir),
-        Engine::Lammps => peer::record(peer::Peer::Lammps, &resolved, dir),
-        Engine::Command(prog) => command::record(prog, &resolved, dir),
-    }
+    resolved::resolve(scene, spec)
 }
 
 /// Read an engine's trajectory, written as the layout of docs/compare.md, for the

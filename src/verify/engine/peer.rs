@@ -11,22 +11,33 @@ use crate::verify::recording::Recording;
 use std::path::Path;
 use std::process::Command;
 
-/// Export `resolved` into `dir`, run `peer` on it and read its dump.
-pub fn record(peer: Peer, resolved: &Resolved, dir: &Path) -> Result<Recording, Refusal> {
+/// Export `resolved` into the empty `dir` as `peer`'s deck and return the deck's
+/// SHA-256 (`peer_record::deck_sha256`); the exporter's refusal means the peer cannot
+/// express the scene.
+pub fn export(peer: Peer, resolved: &Resolved, dir: &Path) -> Result<String, Refusal> {
     let every = Some(resolved.spec.trajectory_every);
     let sha = &resolved.sha256;
     let exported = match peer {
         Peer::Liggghts => crate::liggghts::export::export(&resolved.scene, sha, dir, every),
         Peer::Lammps => crate::lammps::export::export(&resolved.scene, sha, dir, every),
     };
-    if let Err(refusal) = exported {
-        return Err(match refusal {
-            e @ (TampError::Input { .. } | TampError::InputMany(_)) => {
-                Refusal::NotExpressible(e.to_string().replace('\n', "; "))
-            }
-            e => Refusal::Failed(e),
-        });
-    }
+    exported.map_err(|refusal| match refusal {
+        e @ (TampError::Input { .. } | TampError::InputMany(_)) => {
+            Refusal::NotExpressible(e.to_string().replace('\n', "; "))
+        }
+        e => Refusal::Failed(e),
+    })?;
+    Ok(super::peer_record::deck_sha256(dir)?)
+}
+
+/// Export `resolved` into the empty `dir`, run `peer` on it and read its dump; also
+/// the SHA-256 of the deck and of the dump, by which a recorded run is checked.
+pub fn record(
+    peer: Peer,
+    resolved: &Resolved,
+    dir: &Path,
+) -> Result<(Recording, String, String), Refusal> {
+    let deck_sha256 = export(peer, resolved, dir)?;
     peer.check_installed()?;
     crate::output::write_atomic(&dir.join("scene.json"), resolved.json.as_bytes())?;
     let (mut command, log, dump, last) = match peer {
@@ -75,5 +86,11 @@ pub fn record(peer: Peer, resolved: &Resolved, dir: &Path) -> Result<Recording, 
             rows.entry(key).or_insert(state);
         }
     }
-    Ok(resolved.recording(&dir.join(dump), &rows)?)
+    let bytes = std::fs::read(dir.join(dump))
+        .map_err(|e| TampError::io(format!("reading {}", dir.join(dump).display()), e))?;
+    Ok((
+        resolved.recording(&dir.join(dump), &rows)?,
+        deck_sha256,
+        crate::scene::sha256_hex(&bytes),
+    ))
 }
