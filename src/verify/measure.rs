@@ -96,6 +96,23 @@ pub fn first_crossing(
     )))
 }
 
+/// The overlap of particles `i` and `j` where the force on `i` first reaches `target`,
+/// in a displacement-driven compression recorded with forces.
+pub fn overlap_where_force_reaches(
+    rec: &Recording,
+    i: usize,
+    j: usize,
+    target: f64,
+) -> Result<f64> {
+    first_crossing(
+        rec,
+        |f| force(f, i),
+        |f| Ok(overlap(f, i, j)),
+        target,
+        &format!("the force on particle {i}"),
+    )
+}
+
 /// The consecutive frames, which must hold particle `last`.
 fn frames<'a>(rec: &'a Recording, last: usize, what: &str) -> Result<&'a [Frame]> {
     let frames = rec.consecutive(what)?;

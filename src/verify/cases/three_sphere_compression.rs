@@ -28,13 +28,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         let reference = overlap_at_force(FORCE, r_eff, e, nu, yield_stress, exponent);
         let (scene, spec) = compression_past(&with_model(&base, exponent), reference, EVERY)?;
         let rec = ctx.record(name, &scene, spec)?;
-        let h = measure::first_crossing(
-            &rec,
-            |f| measure::force(f, 0),
-            |f| Ok(measure::overlap(f, 0, 1)),
-            FORCE,
-            "the force on particle 0",
-        )?;
+        let h = measure::overlap_where_force_reaches(&rec, 0, 1, FORCE)?;
         out.push(Measured::new(
             &format!("small_contact_overlap_at_0.02N_{name}"),
             h,

@@ -58,13 +58,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         let reference = overlap_at_force(target, 0.5 * radius, e, nu, yield_stress, exponent);
         let (scene, spec) = compression_past(&model, reference, EVERY)?;
         let rec = ctx.record(name, &scene, spec)?;
-        let h = measure::first_crossing(
-            &rec,
-            |f| measure::force(f, 0),
-            |f| Ok(measure::overlap(f, 0, 1)),
-            target,
-            "the force on particle 0",
-        )?;
+        let h = measure::overlap_where_force_reaches(&rec, 0, 1, target)?;
         let mut curve = Vec::new();
         for f in &rec.frames {
             let overlap = measure::overlap(f, 0, 1);
