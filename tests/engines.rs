@@ -237,9 +237,10 @@ fn an_unknown_engine_is_refused_naming_the_choices() {
 
 /// Without `--live` a peer engine gives the values recorded in
 /// `reference_data/<peer>/engine/`, with no peer installed; a record whose deck is not
-/// the one the case exports now is an error naming the command that re-records it.
+/// the one the case exports now is an error naming the command that re-records it; an
+/// engine farther from tamp than the case file's `agreement` fails.
 #[test]
-fn a_peer_engine_without_the_peer_gives_its_recorded_values_and_refuses_a_stale_record() {
+fn a_peer_engine_without_the_peer_gives_its_recorded_values_and_keeps_its_promises() {
     let case = "hertz_collision_time";
     let record_path = root().join(format!("reference_data/liggghts/engine/{case}.json"));
     let record: serde_json::Value =
@@ -299,4 +300,20 @@ fn a_peer_engine_without_the_peer_gives_its_recorded_values_and_refuses_a_stale_
         error.contains("is stale") && error.contains("--live --record --case hertz_collision_time"),
         "{error}"
     );
+
+    // The record as it is, and a case file that promises exact agreement with tamp:
+    // the peer's values differ from tamp's through the clock alone, and that fails.
+    std::fs::write(&stale_path, record.to_string()).unwrap();
+    let case_path = copy.join(format!("verification/{case}.json"));
+    let mut strict: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&case_path).unwrap()).unwrap();
+    for a in strict["agreement"].as_array_mut().unwrap() {
+        a["relative"] = serde_json::json!(0.0);
+    }
+    std::fs::write(&case_path, strict.to_string()).unwrap();
+    let out = run(&copy.join("verification"));
+    let c = &cases(&out)[0];
+    assert_eq!(c["status"], "fail", "{c}");
+    let error = c["error"].as_str().unwrap();
+    assert!(error.contains("liggghts departs from tamp"), "{error}");
 }

@@ -92,7 +92,22 @@ pub struct CaseSpec {
     /// internals rather than of recorded outputs); absent: it runs on every engine.
     #[serde(default)]
     pub tamp_only: Option<String>,
+    /// Engines that run the same algorithm as tamp and must give tamp's values to a
+    /// stated relative tolerance, beside meeting the references.
+    #[serde(default)]
+    pub agreement: Vec<Agreement>,
     pub quantities: Vec<QuantitySpec>,
+}
+
+/// An engine's promised agreement with tamp in one case: every quantity within
+/// `relative` of tamp's value of it, checked against a run of the case on tamp.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Agreement {
+    pub engine: String,
+    pub relative: f64,
+    /// Why this tolerance (one sentence).
+    pub why: String,
 }
 
 impl CaseSpec {
@@ -544,6 +559,24 @@ pub fn load_specs(dir: &Path) -> Result<Vec<CaseSpec>> {
                     })?;
                 }
             }
+            for (k, a) in spec.agreement.iter().enumerate() {
+                let path = |field: &str| format!("{}: agreement[{k}].{field}", f.display());
+                if let Err(why) = a.engine.parse::<Engine>() {
+                    return Err(TampError::input(path("engine"), why));
+                }
+                if a.engine == "tamp" {
+                    return Err(TampError::input(
+                        path("engine"),
+                        "tamp agrees with itself; name another engine",
+                    ));
+                }
+                if !(a.relative >= 0.0 && a.relative.is_finite()) {
+                    return Err(TampError::input(
+                        path("relative"),
+                        format!("must be a finite number >= 0, got {}", a.relative),
+                    ));
+                }
+            }
             Ok(spec)
         })
         .collect()
@@ -689,9 +722,24 @@ pub fn run_case(
                     ));
                 }
             }
+            let disagreement = match problems.is_empty() {
+                true => disagreement(
+                    spec,
+                    dir,
+                    &own_dir,
+                    reference_data,
+                    variant,
+                    engine,
+                    &result,
+                ),
+                false => None,
+            };
             if !problems.is_empty() {
                 result.status = Status::Error;
                 result.error = Some(problems.join("; "));
+            } else if let Some(why) = disagreement {
+                result.status = Status::Fail;
+                result.error = Some(why);
             } else if result.quantities.iter().any(|q| !q.status.is_ok()) {
                 result.status = Status::Fail;
             } else if result
@@ -704,6 +752,56 @@ pub fn run_case(
         }
     }
     result
+}
+
+/// Where `engine` gives values farther from tamp's than the case file's `agreement`
+/// allows: tamp's values come from the case run on tamp beside it (its artefacts in
+/// `<engine dir>/<case>_agreement/`), an error of that run is one of the check.
+fn disagreement(
+    spec: &CaseSpec,
+    dir: &Path,
+    own_dir: &Path,
+    reference_data: Option<&Path>,
+    variant: Variant,
+    engine: &Engine,
+    result: &CaseResult,
+) -> Option<String> {
+    let promise = spec
+        .agreement
+        .iter()
+        .find(|a| a.engine == engine.to_string())?;
+    let scratch = own_dir.join(format!("{}_agreement", spec.name));
+    let ctx = CaseContext::new(spec, dir, &scratch, reference_data, variant, Engine::Tamp);
+    let tamp = match cases::find(&spec.name).map(|f| f(&ctx)) {
+        Some(Ok(measured)) => measured,
+        Some(Err(e)) => {
+            return Some(format!(
+                "the run on tamp for the agreement check failed: {e}"
+            ));
+        }
+        None => return None,
+    };
+    let mut far = Vec::new();
+    for q in &result.quantities {
+        let Some(t) = tamp.iter().find(|m| m.name == q.name) else {
+            continue;
+        };
+        let difference = (q.value - t.value).abs() / t.value.abs().max(f64::MIN_POSITIVE);
+        if difference.is_nan() || difference > promise.relative {
+            far.push(format!(
+                "{}: {engine} {:e}, tamp {:e} (relative {difference:.1e})",
+                q.name, q.value, t.value
+            ));
+        }
+    }
+    (!far.is_empty()).then(|| {
+        format!(
+            "{engine} departs from tamp by more than the {:e} the case file states ({}): {}",
+            promise.relative,
+            promise.why,
+            far.join("; ")
+        )
+    })
 }
 
 /// The SVG files a case wrote into the report directory during its run, sorted:

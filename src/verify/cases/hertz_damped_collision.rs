@@ -9,7 +9,7 @@
 //! Measured from the recorded trajectory, so every engine with this dashpot is held
 //! to the same equation.
 
-use super::two_body::Pair;
+use super::two_body::{Pair, collision_quantities};
 use crate::accuracy::damped_hertz::{Dashpot, critical_fraction_c, unit_impact};
 use crate::contact::damping::liggghts::LiggghtsModel;
 use crate::contact::damping::{Damping, LiggghtsRestitution};
@@ -49,19 +49,11 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
             })?;
         let rec = ctx.record(&format!("collision_e{e}"), &s, RecordSpec::EVERY_STEP)?;
         let c = measure::two_body(&rec, 0, 1)?;
-        out.push(Measured::new(
-            &format!("restitution_e{e}"),
-            c.restitution,
+        out.extend(collision_quantities(
+            &format!("_e{e}"),
+            &c,
             unit.restitution,
-        ));
-        out.push(Measured::new(
-            &format!("contact_duration_e{e}"),
-            c.duration,
             unit.duration * delta_s / v,
-        ));
-        out.push(Measured::new(
-            &format!("max_overlap_e{e}"),
-            c.max_overlap,
             unit.max_overlap * delta_s,
         ));
     }

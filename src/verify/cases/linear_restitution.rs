@@ -3,7 +3,7 @@
 //! oscillator's closed forms (Zhong eqs 7–9), once with the scene's γ_n (e ≈ 0.5)
 //! and once with γ_n = 0, measured from the recorded trajectories.
 
-use super::two_body::Pair;
+use super::two_body::{Pair, collision_quantities};
 use crate::contact::damping::{Constant, Damping};
 use crate::contact::normal::linear::LinearCollision;
 use crate::contact::normal::{Linear, NormalLaw};
@@ -35,19 +35,11 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         let label = format!("collision{suffix}");
         let rec = ctx.record(&label, &s, RecordSpec::EVERY_STEP)?;
         let c = measure::two_body(&rec, 0, 1)?;
-        out.push(Measured::new(
-            &format!("restitution{suffix}"),
-            c.restitution,
+        out.extend(collision_quantities(
+            suffix,
+            &c,
             exact.restitution(),
-        ));
-        out.push(Measured::new(
-            &format!("contact_duration{suffix}"),
-            c.duration,
             exact.contact_duration(),
-        ));
-        out.push(Measured::new(
-            &format!("max_overlap{suffix}"),
-            c.max_overlap,
             exact.max_overlap(pair.approach),
         ));
     }

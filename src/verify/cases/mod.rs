@@ -22,8 +22,8 @@ mod lammps_two_sphere;
 mod liggghts_inputs;
 mod liggghts_oblique_wall_impact;
 mod liggghts_three_sphere_trajectory;
-mod liggghts_two_sphere;
 mod liggghts_two_sphere_oblique;
+mod linear_damped_collision;
 mod linear_restitution;
 mod mdr_curve;
 mod momentum_conservation;
@@ -46,6 +46,7 @@ use super::CaseFn;
 
 pub const CASES: &[(&str, CaseFn)] = &[
     ("linear_restitution", linear_restitution::run),
+    ("linear_damped_collision", linear_damped_collision::run),
     ("accuracy_on_demand", accuracy_on_demand::run),
     ("hertz_collision_time", hertz_collision_time::run),
     ("hertz_damped_collision", hertz_damped_collision::run),
@@ -100,8 +101,6 @@ pub const CASES: &[(&str, CaseFn)] = &[
         "liggghts_two_sphere_thornton",
         liggghts_three_sphere_trajectory::run,
     ),
-    ("liggghts_two_sphere_hertz", liggghts_two_sphere::hertz),
-    ("liggghts_two_sphere_hooke", liggghts_two_sphere::hooke),
     (
         "liggghts_two_sphere_oblique",
         liggghts_two_sphere_oblique::run,

@@ -9,10 +9,12 @@
 //!   T_H = 3.2145 (m*/k̃)^{2/5} v^{−1/5},  k̃ = 4/3 E* √R*;
 //! a displacement-driven compression to the overlap h reaches it at step (h + gap)/(v Δt).
 
+use crate::collision::Collision;
 use crate::error::{Result, TampError};
 use crate::material::{effective_mass, effective_radius};
 use crate::scene::schema::RunSpec;
 use crate::scene::{self, Scene};
+use crate::verify::Measured;
 use crate::verify::recording::RecordSpec;
 
 /// Particles 0 and 1 of a scene, at t = 0.
@@ -101,4 +103,20 @@ pub fn compression_past(scene: &Scene, h: f64, every: u64) -> Result<(Scene, Rec
     let k = Pair::of(scene)?.step_at_overlap(h);
     let spec = RecordSpec::sparse_then_every_step(every, (0.98 * k).floor() as u64, true);
     Ok((with_steps(scene, (1.02 * k).ceil() as u64), spec))
+}
+
+/// A measured collision against its references, as the quantities `restitution`,
+/// `contact_duration` and `max_overlap`, each name followed by `suffix`.
+pub fn collision_quantities(
+    suffix: &str,
+    c: &Collision,
+    restitution: f64,
+    duration: f64,
+    max_overlap: f64,
+) -> [Measured; 3] {
+    [
+        Measured::new(&format!("restitution{suffix}"), c.restitution, restitution),
+        Measured::new(&format!("contact_duration{suffix}"), c.duration, duration),
+        Measured::new(&format!("max_overlap{suffix}"), c.max_overlap, max_overlap),
+    ]
 }
