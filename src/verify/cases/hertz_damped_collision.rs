@@ -9,23 +9,13 @@
 //! Measured from the recorded trajectory, so every engine with this dashpot is held
 //! to the same equation.
 
-use super::two_body::{Pair, collision_quantities};
+use super::two_body::{Pair, collision_quantities, each_restitution};
 use crate::accuracy::damped_hertz::{Dashpot, critical_fraction_c, unit_impact};
 use crate::contact::damping::liggghts::LiggghtsModel;
-use crate::contact::damping::{Damping, LiggghtsRestitution};
 use crate::contact::normal::NormalLaw;
 use crate::error::{Result, TampError};
 use crate::verify::recording::RecordSpec;
 use crate::verify::{CaseContext, Measured, measure};
-use serde::Deserialize;
-
-/// The case file's `parameters`.
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct Scenario {
-    /// The restitutions e LIGGGHTS's relation turns into ξ, one run each.
-    restitutions: Vec<f64>,
-}
 
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let base = ctx.scene()?;
@@ -33,11 +23,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         return Err(TampError::Other("the scene must use hertz".into()));
     }
     let mut out = Vec::new();
-    for e in ctx.parameters::<Scenario>()?.restitutions {
-        let mut s = base.clone();
-        s.contact.damping = Some(Damping::LiggghtsRestitution(LiggghtsRestitution {
-            restitution: e,
-        }));
+    for (e, s) in each_restitution(ctx, &base)? {
         let pair = Pair::of(&s)?;
         let k = 4.0 / 3.0 * pair.effective_modulus()? * pair.r_eff.sqrt();
         let v = pair.approach;

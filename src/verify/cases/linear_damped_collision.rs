@@ -8,22 +8,12 @@
 //! and largest overlap, for each e of the case file's parameters, measured from the
 //! recorded trajectory.
 
-use super::two_body::{Pair, collision_quantities};
-use crate::contact::damping::{Damping, LiggghtsRestitution};
+use super::two_body::{Pair, collision_quantities, each_restitution};
 use crate::contact::normal::linear::LinearCollision;
 use crate::contact::normal::{Linear, NormalLaw};
 use crate::error::{Result, TampError};
 use crate::verify::recording::RecordSpec;
 use crate::verify::{CaseContext, Measured, measure};
-use serde::Deserialize;
-
-/// The case file's `parameters`.
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct Scenario {
-    /// The restitutions e LIGGGHTS's relation turns into ξ, one run each.
-    restitutions: Vec<f64>,
-}
 
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let base = ctx.scene()?;
@@ -31,11 +21,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         return Err(TampError::Other("the scene must use linear".into()));
     };
     let mut out = Vec::new();
-    for e in ctx.parameters::<Scenario>()?.restitutions {
-        let mut s = base.clone();
-        s.contact.damping = Some(Damping::LiggghtsRestitution(LiggghtsRestitution {
-            restitution: e,
-        }));
+    for (e, s) in each_restitution(ctx, &base)? {
         let pair = Pair::of(&s)?;
         let ln_e = e.ln();
         let xi = ln_e.abs() / (ln_e * ln_e + std::f64::consts::PI.powi(2)).sqrt();

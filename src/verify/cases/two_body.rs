@@ -10,12 +10,13 @@
 //! a displacement-driven compression to the overlap h reaches it at step (h + gap)/(v Δt).
 
 use crate::collision::Collision;
+use crate::contact::damping::{Damping, LiggghtsRestitution};
 use crate::error::{Result, TampError};
 use crate::material::{effective_mass, effective_radius};
 use crate::scene::schema::RunSpec;
 use crate::scene::{self, Scene};
-use crate::verify::Measured;
 use crate::verify::recording::RecordSpec;
+use crate::verify::{CaseContext, Measured};
 
 /// Particles 0 and 1 of a scene, at t = 0.
 #[derive(Clone, Copy, Debug)]
@@ -119,4 +120,29 @@ pub fn collision_quantities(
         Measured::new(&format!("contact_duration{suffix}"), c.duration, duration),
         Measured::new(&format!("max_overlap{suffix}"), c.max_overlap, max_overlap),
     ]
+}
+
+/// The case file's `parameters` of a case that runs one collision per restitution e of
+/// LIGGGHTS's damping relation (`liggghts_restitution`).
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Restitutions {
+    restitutions: Vec<f64>,
+}
+
+/// `base` once per restitution e of the case file's `parameters`, each with LIGGGHTS's
+/// restitution damping at that e.
+pub fn each_restitution(ctx: &CaseContext, base: &Scene) -> Result<Vec<(f64, Scene)>> {
+    Ok(ctx
+        .parameters::<Restitutions>()?
+        .restitutions
+        .into_iter()
+        .map(|e| {
+            let mut s = base.clone();
+            s.contact.damping = Some(Damping::LiggghtsRestitution(LiggghtsRestitution {
+                restitution: e,
+            }));
+            (e, s)
+        })
+        .collect())
 }
