@@ -163,6 +163,8 @@ pub struct CaseContext<'a> {
     pub peer_runs: PeerRuns,
     /// The runs a peer engine made for this case, as its record keeps them.
     peer_log: Mutex<Vec<PeerRun>>,
+    /// The peer's record of this case, once read.
+    peer_record: Mutex<Option<PeerRecord>>,
     /// Set by `record` when the engine cannot express a scene: the reason.
     not_expressible: Mutex<Option<String>>,
     /// Whether the case recorded anything (a case that is not `tamp_only` must).
@@ -227,6 +229,7 @@ impl<'a> CaseContext<'a> {
             engine,
             peer_runs: PeerRuns::default(),
             peer_log: Mutex::new(Vec::new()),
+            peer_record: Mutex::new(None),
             not_expressible: Mutex::new(None),
             recorded: AtomicBool::new(false),
         }
@@ -261,16 +264,22 @@ impl<'a> CaseContext<'a> {
             // recorded, and tamp's own run gives the case its quantities and references.
             let deck = engine::peer_deck(peer, scene, spec, &dir).map_err(refused)?;
             let path = self.peer_record_path(peer);
-            let record = peer_record::load(&path)?.ok_or_else(|| {
-                TampError::Other(format!(
-                    "{}: no recorded {} run of this case; record one with `tamp verify --engine {} --live --record --case {}` (the peer installed)",
-                    path.display(),
-                    self.engine,
-                    self.engine,
-                    self.spec.name
-                ))
-            })?;
-            record.check_run(label, &deck, &path)?;
+            let mut cached = self.peer_record.lock().expect("not poisoned");
+            if cached.is_none() {
+                *cached = Some(peer_record::load(&path)?.ok_or_else(|| {
+                    TampError::Other(format!(
+                        "{}: no recorded {} run of this case; record one with `tamp verify --engine {} --live --record --case {}` (the peer installed)",
+                        path.display(),
+                        self.engine,
+                        self.engine,
+                        self.spec.name
+                    ))
+                })?);
+            }
+            if let Some(record) = cached.as_ref() {
+                record.check_run(label, &deck, &path)?;
+            }
+            drop(cached);
             return engine::tamp::record(scene, spec);
         }
         let (recording, run) =
@@ -296,8 +305,18 @@ impl<'a> CaseContext<'a> {
         let path = self.peer_record_path(peer);
         match self.peer_runs {
             PeerRuns::Recorded => {
-                let record = peer_record::load(&path)?
-                    .ok_or_else(|| TampError::Other(format!("{} vanished", path.display())))?;
+                let record = self
+                    .peer_record
+                    .lock()
+                    .expect("not poisoned")
+                    .take()
+                    .ok_or_else(|| {
+                        TampError::Other(format!(
+                            "{}: the case recorded no run on {}",
+                            path.display(),
+                            self.engine
+                        ))
+                    })?;
                 for m in &mut measured {
                     m.value = *record.quantities.get(&m.name).ok_or_else(|| {
                         TampError::Other(format!(

@@ -36,16 +36,7 @@ fn anchor(c: &CaseResult, several: bool) -> String {
         true => format!("{}-{}", c.name, c.engine),
         false => c.name.clone(),
     };
-    a.to_lowercase()
-        .chars()
-        .map(|ch| {
-            if ch.is_ascii_alphanumeric() || ch == '_' {
-                ch
-            } else {
-                '-'
-            }
-        })
-        .collect()
+    super::engine::safe_chars(&a.to_lowercase(), '_', '-')
 }
 
 /// The largest relative difference between a case's values on another engine and

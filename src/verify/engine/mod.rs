@@ -87,17 +87,19 @@ impl Engine {
 
     /// A file-name-safe name for the engine's run directories.
     pub fn slug(&self) -> String {
-        self.to_string()
-            .chars()
-            .map(|c| {
-                if c.is_ascii_alphanumeric() || c == '-' {
-                    c
-                } else {
-                    '_'
-                }
-            })
-            .collect()
+        safe_chars(&self.to_string(), '-', '_')
     }
+}
+
+/// `text` with every character other than an ASCII letter, a digit or `keep` replaced
+/// by `replacement`: names for files and anchors.
+pub fn safe_chars(text: &str, keep: char, replacement: char) -> String {
+    text.chars()
+        .map(|c| match c.is_ascii_alphanumeric() || c == keep {
+            true => c,
+            false => replacement,
+        })
+        .collect()
 }
 
 /// Why an engine gave no recording.
