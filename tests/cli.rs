@@ -310,7 +310,7 @@ fn each_exporter_refuses_the_other_peers_lever_arms_naming_the_field() {
     // ("mid_overlap"), LAMMPS's the full radius ("lammps"), contact/lever_arm.rs.
     let path = concat!(
         env!("CARGO_MANIFEST_DIR"),
-        "/verification/liggghts_oblique_wall_impact.scene.json"
+        "/verification/oblique_wall_impact_liggghts.scene.json"
     );
     let mut scene: Value = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
     for (command, arms, peer) in [

@@ -89,7 +89,11 @@ fn tamp_behind_the_adapter_contract_gets_the_in_process_verdict_on_every_case() 
                 .unwrap_or_else(|| panic!("{n} did not run on {engine}"))
         };
         let (inside, adapter) = (on("tamp"), on("command:"));
-        assert_eq!(inside["status"], "pass", "{n}: {inside}");
+        // A known deviation is the law's, so the adapter must report it too.
+        assert!(
+            matches!(inside["status"].as_str(), Some("pass" | "known_deviation")),
+            "{n}: {inside}"
+        );
         assert_eq!(adapter["status"], inside["status"], "{n}: {adapter}");
         // The same quantities, equal to round-off (the adapter's clock is step·Δt).
         for (a, b) in adapter["quantities"]

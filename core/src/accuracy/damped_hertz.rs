@@ -2,21 +2,25 @@
 //!
 //!   m* δ'' = −K δ^{3/2} − η(δ) δ',   δ(0) = 0, δ'(0) = v,
 //!
-//! with three dashpots of tamp's laws:
+//! with the dashpots of tamp's laws:
 //! - ξ · 2√(m* k_n), k_n the Hertz tangent stiffness 2E*√(R*δ) (Tsuji et al. 1992's form;
 //!   tamp's `critical_fraction`, and `liggghts_restitution` and `tsuji`, which run as one):
 //!   η = 2ξ √(m* (3/2) K) δ^{1/4};
 //! - Kuwabara & Kono 1987 (`kuwabara_kono`): η = (3/2) K A δ^{1/2}, and the total force
 //!   is clamped at zero, so the bodies stop pushing when it vanishes and coast apart
 //!   through the rest of the overlap;
-//! - a constant γ_n (`constant`, Zhong 2009 eq 6): η = γ_n, no clamp (the force turns
-//!   attractive before the overlap closes, as tamp's dashpot does).
+//! - a constant γ_n (`constant`, Zhong 2009 eq 6; `mass_velocity`, γ_n = η_n0 m*): η = γ_n,
+//!   no clamp (the force turns attractive before the overlap closes, as tamp's dashpot
+//!   does);
+//! - LAMMPS's `viscoelastic` (viscous.rs): η = η_n0 m* √(R* δ), Kuwabara–Kono's form
+//!   without the clamp.
 //!
 //! With δ = δ_s x, t = (δ_s/v) τ and δ_s = (m* v²/K)^{2/5} it becomes
 //!
 //!   x'' = −x^{3/2} − c x^q x',   x(0) = 0, x'(0) = 1,
 //!
-//! q = 1/4, 1/2, 0 and c = 2√(3/2) ξ, (3/2) A v/δ_s, γ_n δ_s/(m* v): one equation per c
+//! q = 1/4, 1/2, 0, 1/2 and c = 2√(3/2) ξ, (3/2) A v/δ_s, γ_n δ_s/(m* v),
+//! η_n0 √(R* δ_s) δ_s/v: one equation per c
 //! for every mass, radius, modulus and speed. For the first, c depends on ξ alone (Tsuji
 //! 1992: the restitution depends on ξ alone), and the restitution is LIGGGHTS's relation
 //! ξ = −√(5/6) ln e/√(ln²e + π²) (liggghts.rs; RK4 of this equation at step 5e-5 meets it
@@ -60,6 +64,9 @@ pub enum Dashpot {
     KuwabaraKono,
     /// A constant γ_n: q = 0, c = γ_n δ_s/(m* v).
     Constant,
+    /// LAMMPS's `viscoelastic`, η_n0 m* √(R* δ): q = 1/2, c = η_n0 √(R* δ_s) δ_s/v, no
+    /// clamp (Kuwabara–Kono's form, pulling at the end as every unclamped dashpot).
+    Viscoelastic,
 }
 
 impl Dashpot {
@@ -68,7 +75,7 @@ impl Dashpot {
     fn power(self, x: f64) -> f64 {
         match self {
             Dashpot::CriticalFraction => x.sqrt().sqrt(),
-            Dashpot::KuwabaraKono => x.sqrt(),
+            Dashpot::KuwabaraKono | Dashpot::Viscoelastic => x.sqrt(),
             Dashpot::Constant => 1.0,
         }
     }

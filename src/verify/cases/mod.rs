@@ -13,21 +13,20 @@ mod die_specimen;
 pub(crate) mod energy_conservation_elastic;
 mod hertz_collision_time;
 mod hertz_damped_collision;
+mod hertz_dashpot_forms;
 mod hertz_rigid_wall_impact;
 mod hertz_yield_onset;
 mod hollomon_constants;
 mod kuwabara_kono_restitution;
-mod lammps_oblique_wall_impact;
-mod lammps_two_sphere;
+mod lammps_cylinder_wall_impact;
 mod liggghts_inputs;
-mod liggghts_oblique_wall_impact;
 mod liggghts_three_sphere_trajectory;
-mod liggghts_two_sphere_oblique;
 mod linear_damped_collision;
 mod linear_restitution;
 mod mdr_curve;
 mod momentum_conservation;
 mod nial_die_compaction;
+mod oblique_impact;
 pub mod probe;
 mod restitution_laws;
 mod rojek_models;
@@ -50,6 +49,7 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("accuracy_on_demand", accuracy_on_demand::run),
     ("hertz_collision_time", hertz_collision_time::run),
     ("hertz_damped_collision", hertz_damped_collision::run),
+    ("hertz_dashpot_forms", hertz_dashpot_forms::run),
     ("hertz_rigid_wall_impact", hertz_rigid_wall_impact::run),
     ("hertz_yield_onset", hertz_yield_onset::run),
     (
@@ -67,6 +67,10 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("thornton_restitution", thornton_restitution::run),
     ("thornton_liggghts_restitution", thornton_restitution::run),
     ("sliding_oblique_impact", sliding_oblique_impact::run),
+    ("oblique_wall_impact_liggghts", oblique_impact::wall),
+    ("oblique_wall_impact_lammps_mindlin", oblique_impact::wall),
+    ("oblique_wall_impact_lammps_linear", oblique_impact::wall),
+    ("oblique_pair_impact_liggghts", oblique_impact::pair),
     ("van_der_waals_force", van_der_waals_force::run),
     ("nial_die_compaction_small", nial_die_compaction::small),
     ("nial_die_compaction", nial_die_compaction::full),
@@ -101,27 +105,10 @@ pub const CASES: &[(&str, CaseFn)] = &[
         "liggghts_two_sphere_thornton",
         liggghts_three_sphere_trajectory::run,
     ),
-    (
-        "liggghts_two_sphere_oblique",
-        liggghts_two_sphere_oblique::run,
-    ),
-    (
-        "liggghts_oblique_wall_impact",
-        liggghts_oblique_wall_impact::run,
-    ),
-    ("lammps_two_sphere_hertz", lammps_two_sphere::run),
     ("lammps_die_compaction_small", die_compaction_replay::lammps),
     (
-        "lammps_oblique_wall_impact_mindlin",
-        lammps_oblique_wall_impact::mindlin,
-    ),
-    (
-        "lammps_oblique_wall_impact_linear",
-        lammps_oblique_wall_impact::linear,
-    ),
-    (
         "lammps_cylinder_wall_impact",
-        lammps_oblique_wall_impact::cylinder,
+        lammps_cylinder_wall_impact::cylinder,
     ),
     (
         "lammps_three_sphere_trajectory",

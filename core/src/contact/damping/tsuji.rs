@@ -9,7 +9,7 @@
 //!   η = d √(m* F_n/δ),  F_d = η dδ/dt   (F_n the elastic normal force)
 //!
 //! d is not exactly the damping that gives restitution e: LAMMPS's own fit (the
-//! rebound it gives is measured in docs/lammps.md, `lammps_two_sphere_hertz`). LAMMPS releases after 22 Jul 2025 multiply d by √2
+//! rebound it gives is measured by the case `hertz_dashpot_forms`). LAMMPS releases after 22 Jul 2025 multiply d by √2
 //! ("for effective mass convention (as in Tsuji 1992)"); this law is the 22 Jul 2025
 //! one, which the recorded LAMMPS runs check.
 //!
