@@ -101,10 +101,6 @@ pub const CASES: &[(&str, CaseFn)] = &[
         "liggghts_three_sphere_trajectory",
         liggghts_three_sphere_trajectory::run,
     ),
-    (
-        "liggghts_two_sphere_thornton",
-        liggghts_three_sphere_trajectory::run,
-    ),
     ("lammps_die_compaction_small", die_compaction_replay::lammps),
     (
         "lammps_cylinder_wall_impact",

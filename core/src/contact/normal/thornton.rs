@@ -10,7 +10,8 @@
 //! release commit 84ba3d76, unchanged at the repository's HEAD), read line by line.
 //! LIGGGHTS 3.8 has no documentation page for the model: everything below about
 //! LIGGGHTS comes from its source and was checked against the Debian build of 3.8.0
-//! (test `replays_the_liggghts_deck`, case `liggghts_two_sphere_thornton`).
+//! (test `replays_the_liggghts_deck`, case `thornton_liggghts_restitution` on the
+//! `liggghts` engine).
 //! Convention: δ > 0 overlap, dδ/dt > 0 approach, F > 0 repulsive; SI units.
 //!
 //! Parameter: Thornton's limiting contact pressure p_y (`yield_pressure`, Pa). The
