@@ -71,6 +71,7 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("oblique_wall_impact_lammps_mindlin", oblique_impact::wall),
     ("oblique_wall_impact_lammps_linear", oblique_impact::wall),
     ("oblique_pair_impact_liggghts", oblique_impact::pair),
+    ("oblique_pair_impact_lammps", oblique_impact::pair),
     ("van_der_waals_force", van_der_waals_force::run),
     ("nial_die_compaction_small", nial_die_compaction::small),
     ("nial_die_compaction", nial_die_compaction::full),
