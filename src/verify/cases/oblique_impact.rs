@@ -33,6 +33,7 @@
 //! spheres have separated (no force acts after that).
 
 use crate::error::{Result, TampError};
+use crate::measure::region::ball_volume;
 use crate::particles::Vec3;
 use crate::plot::{Panel, Series, write_svg};
 use crate::scene::schema::ContactSpec;
@@ -224,8 +225,9 @@ fn friction(s: &Scene) -> Result<f64> {
         .ok_or_else(|| TampError::Other("each law must name a tangential law".into()))
 }
 
-/// The first and last frames of the scene's run on the case's engine.
-fn first_and_last(ctx: &CaseContext, label: &str, s: &Scene) -> Result<(Frame, Frame)> {
+/// The first and last frames of the scene's run on the case's engine, recording
+/// nothing in between.
+pub(super) fn first_and_last(ctx: &CaseContext, label: &str, s: &Scene) -> Result<(Frame, Frame)> {
     let steps = scene::build(s)?.steps;
     let rec = ctx.record(label, s, RecordSpec::every(steps.max(1), false))?;
     match (rec.frames.first(), rec.frames.last()) {
@@ -247,7 +249,7 @@ fn farther_from_one(so_far: Option<f64>, ratio: f64) -> f64 {
 /// Σ m r × v + I ω about the origin, solid spheres of one density.
 fn angular_momentum(frame: &Frame, density: f64) -> Vec3 {
     frame.bodies.iter().fold(Vec3::zeros(), |sum, b| {
-        let mass = density * 4.0 / 3.0 * std::f64::consts::PI * b.radius.powi(3);
+        let mass = density * ball_volume(b.radius);
         let inertia = 0.4 * mass * b.radius * b.radius;
         sum + mass * b.position.cross(&b.velocity) + inertia * b.omega
     })

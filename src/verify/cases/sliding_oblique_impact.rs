@@ -9,14 +9,14 @@
 //! read from the first and last recorded frames, once the sphere has left the wall
 //! (no force acts on it after that, so the last frame holds its rebound exactly).
 
+use super::oblique_impact::first_and_last;
 use crate::contact::tangential::{
     Coulomb, CundallStrack, HaffWerner, MindlinDeresiewicz, MindlinNoSlip, TangentialLaw,
     storakers, walton_braun,
 };
 use crate::error::{Result, TampError};
 use crate::particles::Vec3;
-use crate::scene::{self, schema::FrictionSpec, walls::ShapeSpec};
-use crate::verify::recording::RecordSpec;
+use crate::scene::{schema::FrictionSpec, walls::ShapeSpec};
 use crate::verify::{CaseContext, Measured};
 
 /// Each law with its own parameter where it has one (stiffness about half the
@@ -53,11 +53,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
             friction,
             friction_pairs: Vec::new(),
         });
-        let steps = scene::build(&s)?.steps;
-        let rec = ctx.record(law.name(), &s, RecordSpec::every(steps.max(1), false))?;
-        let (Some(first), Some(last)) = (rec.frames.first(), rec.frames.last()) else {
-            return Err(TampError::Other("an empty recording".into()));
-        };
+        let (first, last) = first_and_last(ctx, law.name(), &s)?;
         let (b0, b1) = (&first.bodies[0], &last.bodies[0]);
         let (v0, v1, radius) = (b0.velocity, b1.velocity, b0.radius);
         let gap = (b1.position - point).dot(&normal) - b1.radius;
