@@ -1,11 +1,12 @@
 //! Measurements of recorded runs that more than one case makes: a collision between two
 //! particles, or between a particle and a fixed plane, read from the frames of every
-//! step. The arithmetic is `collision::CollisionWatch`'s, the one a simulation uses as
+//! step; the momenta and kinetic energy of a frame. The arithmetic is `collision::CollisionWatch`'s, the one a simulation uses as
 //! it steps, so the tamp engine's recording gives the values of a live measurement to
 //! the bit.
 
 use crate::collision::{Collision, CollisionWatch};
 use crate::error::{Result, TampError};
+use crate::measure::region::ball_volume;
 use crate::particles::Vec3;
 use crate::verify::recording::{Frame, Recording};
 
@@ -111,6 +112,35 @@ pub fn overlap_where_force_reaches(
         target,
         &format!("the force on particle {i}"),
     )
+}
+
+/// Mass and moment of inertia of a solid sphere of `radius` and `density`.
+fn sphere(radius: f64, density: f64) -> (f64, f64) {
+    let mass = density * ball_volume(radius);
+    (mass, 0.4 * mass * radius * radius)
+}
+
+/// Σ m v, solid spheres of one density.
+pub fn linear_momentum(frame: &Frame, density: f64) -> Vec3 {
+    frame.bodies.iter().fold(Vec3::zeros(), |sum, b| {
+        sum + sphere(b.radius, density).0 * b.velocity
+    })
+}
+
+/// Σ m x × v + I ω about the origin, solid spheres of one density.
+pub fn angular_momentum(frame: &Frame, density: f64) -> Vec3 {
+    frame.bodies.iter().fold(Vec3::zeros(), |sum, b| {
+        let (mass, inertia) = sphere(b.radius, density);
+        sum + mass * b.position.cross(&b.velocity) + inertia * b.omega
+    })
+}
+
+/// Σ ½ m v² + ½ I ω², solid spheres of one density.
+pub fn kinetic_energy(frame: &Frame, density: f64) -> f64 {
+    frame.bodies.iter().fold(0.0, |sum, b| {
+        let (mass, inertia) = sphere(b.radius, density);
+        sum + 0.5 * (mass * b.velocity.norm_squared() + inertia * b.omega.norm_squared())
+    })
 }
 
 /// The consecutive frames, which must hold particle `last`.

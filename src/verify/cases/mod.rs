@@ -20,7 +20,6 @@ mod hollomon_constants;
 mod kuwabara_kono_restitution;
 mod lammps_cylinder_wall_impact;
 mod liggghts_inputs;
-mod liggghts_three_sphere_trajectory;
 mod linear_damped_collision;
 mod linear_restitution;
 mod mdr_curve;
@@ -36,6 +35,8 @@ mod sliding_oblique_impact;
 mod storakers_unloading;
 mod thornton_restitution;
 mod three_sphere_compression;
+mod three_sphere_impact;
+mod trajectory_replay;
 mod two_body;
 mod two_sphere_compression;
 mod van_der_waals_force;
@@ -72,6 +73,8 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("oblique_wall_impact_lammps_linear", oblique_impact::wall),
     ("oblique_pair_impact_liggghts", oblique_impact::pair),
     ("oblique_pair_impact_lammps", oblique_impact::pair),
+    ("three_sphere_impact_liggghts", three_sphere_impact::run),
+    ("three_sphere_impact_lammps", three_sphere_impact::run),
     ("van_der_waals_force", van_der_waals_force::run),
     ("nial_die_compaction_small", nial_die_compaction::small),
     ("nial_die_compaction", nial_die_compaction::full),
@@ -98,21 +101,13 @@ pub const CASES: &[(&str, CaseFn)] = &[
         die_compaction_replay::liggghts,
     ),
     ("liggghts_die_compaction", die_compaction_replay::liggghts),
-    (
-        "liggghts_three_sphere_trajectory",
-        liggghts_three_sphere_trajectory::run,
-    ),
     ("lammps_die_compaction_small", die_compaction_replay::lammps),
     (
         "lammps_cylinder_wall_impact",
         lammps_cylinder_wall_impact::cylinder,
     ),
-    (
-        "lammps_three_sphere_trajectory",
-        liggghts_three_sphere_trajectory::run,
-    ),
     ("lammps_settled_packing", settled_packing::lammps),
-    ("lammps_moving_wall", liggghts_three_sphere_trajectory::run),
+    ("lammps_moving_wall", trajectory_replay::run),
 ];
 
 pub fn find(name: &str) -> Option<CaseFn> {

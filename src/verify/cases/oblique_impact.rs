@@ -33,14 +33,13 @@
 //! spheres have separated (no force acts after that).
 
 use crate::error::{Result, TampError};
-use crate::measure::region::ball_volume;
 use crate::particles::Vec3;
 use crate::plot::{Panel, Series, write_svg};
 use crate::scene::schema::ContactSpec;
 use crate::scene::walls::ShapeSpec;
 use crate::scene::{self, Scene};
 use crate::verify::recording::{Frame, RecordSpec};
-use crate::verify::{CaseContext, Measured};
+use crate::verify::{CaseContext, Measured, measure};
 use serde::Deserialize;
 use std::fmt::Write as _;
 
@@ -186,8 +185,8 @@ pub fn pair(ctx: &CaseContext) -> Result<Vec<Measured>> {
         let density = s.materials.first().and_then(|m| m.density).ok_or_else(|| {
             TampError::Other("the scene's first material must have a density".into())
         })?;
-        let l0 = angular_momentum(&first, density);
-        let l1 = angular_momentum(&last, density);
+        let l0 = measure::angular_momentum(&first, density);
+        let l1 = measure::angular_momentum(&last, density);
         let ratio = l1.dot(&l0) / l0.norm_squared();
         let (v0, v1) = (first.bodies[0].velocity, b0.velocity);
         let _ = writeln!(
@@ -244,15 +243,6 @@ fn farther_from_one(so_far: Option<f64>, ratio: f64) -> f64 {
         Some(r) if (r - 1.0).abs() >= (ratio - 1.0).abs() => r,
         _ => ratio,
     }
-}
-
-/// Σ m r × v + I ω about the origin, solid spheres of one density.
-fn angular_momentum(frame: &Frame, density: f64) -> Vec3 {
-    frame.bodies.iter().fold(Vec3::zeros(), |sum, b| {
-        let mass = density * ball_volume(b.radius);
-        let inertia = 0.4 * mass * b.radius * b.radius;
-        sum + mass * b.position.cross(&b.velocity) + inertia * b.omega
-    })
 }
 
 fn write_table_and_plot(ctx: &CaseContext, table: &str, curves: Vec<Series>) -> Result<()> {

@@ -1,11 +1,7 @@
-//! Cross-check against LIGGGHTS 3.8.0 (`liggghts_three_sphere_trajectory`) or LAMMPS
-//! 22 Jul 2025 (`lammps_three_sphere_trajectory`, tangential `mindlin` as tamp's
-//! `lammps_mindlin`, LAMMPS's lever arms), trajectory by trajectory: three spheres in a
-//! chain of off-centre impacts (hertz, restitution damping, tangential history with
-//! friction, rotation), so that the normal, damping, tangential and torque terms all
-//! act, in 3D, and every contact happens once: the trajectories depend smoothly on
-//! the data (no chaos), so two codes running the same algorithm must agree to
-//! round-off at every step.
+//! Cross-check against LAMMPS 22 Jul 2025 (`lammps_moving_wall`), trajectory by
+//! trajectory: soft spheres among walls that move (a plane, a cylinder sliding along its
+//! axis), with the normal, damping, tangential and torque terms of sphere and wall
+//! contacts all acting.
 //!
 //! The deck is the one `tamp export-liggghts` / `tamp export-lammps` writes for this
 //! case's scene (`reference_data/<peer>/run_exported.sh`); the peer's dump, converted to
@@ -22,8 +18,8 @@ use crate::verify::{CaseContext, Measured};
 use std::collections::BTreeMap;
 
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
-    // The peer is the case name's prefix: `liggghts_` or `lammps_` (both dumps are
-    // converted by `import-liggghts-dump`, reference_data/<peer>/run_exported.sh).
+    // The peer is the case name's prefix (LAMMPS's dump is converted by
+    // `import-liggghts-dump`, reference_data/lammps/run_exported.sh).
     let peer = ctx.spec.name.split('_').next().unwrap_or_default();
     let recorded = ctx.reference_data_dir().join(peer).join(&ctx.spec.name);
     let scene_file = ctx
