@@ -50,6 +50,9 @@ enum Command {
         /// Only these cases (repeatable).
         #[arg(long = "case")]
         cases: Vec<String>,
+        /// All the tier's cases but these (repeatable; not with --case).
+        #[arg(long = "skip-case", value_name = "CASE", conflicts_with = "cases")]
+        skip: Vec<String>,
         /// Also write the JSON result to this file (default: REPORT/verification.json).
         #[arg(long)]
         json: Option<PathBuf>,
@@ -298,9 +301,11 @@ fn main() -> ExitCode {
             engines,
             live,
             record,
+            skip,
         } => verify::run_cli(
             tier,
             &cases,
+            &skip,
             &engines,
             match (live, record) {
                 (_, true) => verify::engine::peer_record::PeerRuns::Record,

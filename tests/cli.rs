@@ -191,6 +191,11 @@ fn verify_rejects_unknown_case_with_exit_2() {
     let o = tamp(&["verify", "--case", "no_such_case"]);
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("--case: unknown case 'no_such_case'"));
+    let o = tamp(&["verify", "--skip-case", "no_such_case"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        String::from_utf8_lossy(&o.stderr).contains("--skip-case: unknown case 'no_such_case'")
+    );
 }
 
 #[test]

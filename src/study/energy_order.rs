@@ -34,7 +34,9 @@ pub fn run(out: &Path) -> Result<u8> {
     for seed in SEEDS {
         let mut seeded = scene.clone();
         seeded.seed = seed;
-        let (energy_drift, energy_drift_order) = drift_and_order(&seeded)?;
+        let (energy_drift, energy_drift_order) = drift_and_order(&seeded, |_, s, spec| {
+            crate::verify::engine::tamp::record(s, spec)
+        })?;
         eprintln!("seed {seed}: drift {energy_drift:.3e}, order {energy_drift_order:.3}");
         rows.push(Row {
             seed,

@@ -27,7 +27,7 @@ use crate::process::die_compaction_file::DieCompactionFile;
 use crate::scene::{self, Scene};
 use engine::peer_record::{self, PeerRecord, PeerRun, PeerRuns};
 use engine::{Engine, Refusal};
-use recording::{RecordSpec, Recording};
+use recording::{Frame, RecordSpec, Recording};
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
@@ -232,6 +232,19 @@ impl<'a> CaseContext<'a> {
             peer_record: Mutex::new(None),
             not_expressible: Mutex::new(None),
             recorded: AtomicBool::new(false),
+        }
+    }
+
+    /// The first and the last frame of `scene`'s run on the case's engine, recording
+    /// nothing in between.
+    pub fn first_and_last(&self, label: &str, scene: &Scene) -> Result<(Frame, Frame)> {
+        let steps = scene::build(scene)?.steps;
+        let rec = self.record(label, scene, RecordSpec::every(steps.max(1), false))?;
+        match (rec.frames.first(), rec.frames.last()) {
+            (Some(a), Some(b)) if b.step == steps => Ok((a.clone(), b.clone())),
+            _ => Err(TampError::Other(format!(
+                "{label}: the recording has no frame at step 0 and step {steps}"
+            ))),
         }
     }
 
@@ -847,17 +860,44 @@ fn case_plots(report_dir: &Path, case: &str, since: std::time::SystemTime) -> Ve
 
 /// `tamp verify`: returns the exit code (0 when every case passes or deviates only
 /// where `docs/` records it, 1 otherwise).
+#[allow(clippy::too_many_arguments)]
 pub fn run_cli(
     tier: Tier,
     names: &[String],
+    skip: &[String],
     engines: &[Engine],
     peer_runs: PeerRuns,
     json: Option<&Path>,
     report_dir: &Path,
     jobs: usize,
 ) -> Result<u8> {
+    let names = match skip {
+        [] => names.to_vec(),
+        skip => {
+            let specs = load_specs(&verification_dir())?;
+            if let Some(n) = skip.iter().find(|n| !specs.iter().any(|s| &s.name == *n)) {
+                return Err(TampError::input(
+                    "--skip-case",
+                    format!("unknown case '{n}'"),
+                ));
+            }
+            specs
+                .into_iter()
+                .filter(|s| tier == Tier::Full || s.tier == Tier::Quick)
+                .map(|s| s.name)
+                .filter(|n| !skip.contains(n))
+                .collect()
+        }
+    };
+    // An empty list would mean the whole tier to `run_cases`.
+    if names.is_empty() && !skip.is_empty() {
+        return Err(TampError::input(
+            "--skip-case",
+            "skips every case of the tier".to_string(),
+        ));
+    }
     run_cases(
-        tier, names, engines, peer_runs, json, report_dir, None, jobs,
+        tier, &names, engines, peer_runs, json, report_dir, None, jobs,
     )
 }
 

@@ -361,6 +361,7 @@ pub fn place(
         explicit,
         walls,
         space,
+        placement_scale,
         scene.stability.initial_overlap_tolerance,
     )?;
     let mut sources = Vec::new();
@@ -406,15 +407,18 @@ fn insertion_box(region: &BoxRegion) -> InsertionBox {
 }
 
 /// Initial overlaps among the explicit and deposited particles (through periodic
-/// faces too) and with the walls. The first `explicit` particles are named by their
-/// `particles[k]` path, the rest as deposited particles.
+/// faces too) and with the walls, at the size they start with: `scale` of their
+/// radius (a growth stage's initial fraction, else 1). The first `explicit` particles
+/// are named by their `particles[k]` path, the rest as deposited particles.
 fn check_initial_overlaps(
     p: &Particles,
     explicit: usize,
     walls: &[Boundary],
     space: &Space,
+    scale: f64,
     tolerance: f64,
 ) -> Result<()> {
+    let radius: Vec<f64> = p.radius.iter().map(|r| r * scale).collect();
     let path = |i: usize| {
         if i < explicit {
             format!("particles[{i}].position")
@@ -422,7 +426,7 @@ fn check_initial_overlaps(
             format!("deposit (particle {i})")
         }
     };
-    let pairs = crate::detect::cells::candidate_pairs_in(&p.position, &p.radius, 0.0, space);
+    let pairs = crate::detect::cells::candidate_pairs_in(&p.position, &radius, 0.0, space);
     let mut errors = Vec::new();
     for (i, j) in pairs {
         let (i, j) = (i as usize, j as usize);
@@ -448,8 +452,8 @@ fn check_initial_overlaps(
             errors.push(TampError::input(path(j), rule));
             continue;
         }
-        let overlap = p.radius[i] + p.radius[j] - distance;
-        let fraction = overlap / p.radius[i].min(p.radius[j]);
+        let overlap = radius[i] + radius[j] - distance;
+        let fraction = overlap / radius[i].min(radius[j]);
         if fraction > tolerance {
             errors.push(TampError::input(
                 path(j),
@@ -463,8 +467,8 @@ fn check_initial_overlaps(
     }
     for (k, wall) in walls.iter().enumerate() {
         for i in 0..p.len() {
-            let overlap = wall.deepest_overlap(&wall.initial_pose(), &p.position[i], p.radius[i]);
-            if overlap / p.radius[i] > tolerance {
+            let overlap = wall.deepest_overlap(&wall.initial_pose(), &p.position[i], radius[i]);
+            if overlap / radius[i] > tolerance {
                 errors.push(TampError::input(
                     path(i),
                     format!(

@@ -14,7 +14,8 @@
 //! periodic faces need more than two (a large sphere must not meet two images of
 //! another), and the monodisperse point of a small N_b would otherwise be narrower.
 //!
-//! Measured: the interior fraction of the settled bed, the slab from one large
+//! Measured from the last recorded frame of each point's run (centres and radii) and
+//! the scene's periodic faces: the interior fraction of the settled bed, the slab from one large
 //! diameter above the floor to one below the bed's Gibbs surface (`measure::bed`),
 //! as the Scott case measures away from the floor and the loose top. The bulk
 //! fraction of the whole bed below its surface is written beside it; it includes the
@@ -36,8 +37,9 @@ use crate::measure::bed::bulk_packing_fraction;
 use crate::measure::region::ball_volume;
 use crate::particles::Vec3;
 use crate::plot::{Panel, Series, write_svg};
+use crate::scene::Scene;
+use crate::scene::physics::space;
 use crate::scene::schema::{BoxRegion, PeriodicSpec, RadiusSpec};
-use crate::scene::{self, Scene};
 use crate::verify::{CaseContext, Measured};
 use std::fmt::Write as _;
 use std::time::Instant;
@@ -112,12 +114,12 @@ fn point_scene(base: &Scene, ratio: usize) -> Result<(Scene, f64, f64)> {
 fn run_point(ctx: &CaseContext, base: &Scene, ratio: usize) -> Result<Point> {
     let (scene, side, container_height) = point_scene(base, ratio)?;
     let clock = Instant::now();
-    let built = scene::build(&scene)?;
-    let mut sim = built.sim;
-    sim.run_with(built.steps, |_| {})?;
-    let p = &sim.state.particles;
-    let bed = bulk_packing_fraction(&p.position, &p.radius, &sim.model.detection.space, 2, 0.0)?;
-    write_state(ctx, ratio, &p.position, &p.radius)?;
+    let label = format!("ns_over_nb_{ratio}");
+    let (_, last) = ctx.first_and_last(&label, &scene)?;
+    let position: Vec<Vec3> = last.bodies.iter().map(|b| b.position).collect();
+    let radius: Vec<f64> = last.bodies.iter().map(|b| b.radius).collect();
+    let bed = bulk_packing_fraction(&position, &radius, &space(scene.periodic.as_ref()), 2, 0.0)?;
+    write_state(ctx, ratio, &position, &radius)?;
     Ok(Point {
         ratio,
         n_big: scene.insert[0].count,

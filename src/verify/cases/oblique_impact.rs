@@ -35,10 +35,9 @@
 use crate::error::{Result, TampError};
 use crate::particles::Vec3;
 use crate::plot::{Panel, Series, write_svg};
+use crate::scene::Scene;
 use crate::scene::schema::ContactSpec;
 use crate::scene::walls::ShapeSpec;
-use crate::scene::{self, Scene};
-use crate::verify::recording::{Frame, RecordSpec};
 use crate::verify::{CaseContext, Measured, measure};
 use serde::Deserialize;
 use std::fmt::Write as _;
@@ -98,7 +97,7 @@ pub fn wall(ctx: &CaseContext) -> Result<Vec<Measured>> {
                 each
             })
             .collect();
-        let (first, last) = first_and_last(ctx, &law.label, &s)?;
+        let (first, last) = ctx.first_and_last(&law.label, &s)?;
         let mu = friction(&s)?;
         let mut sliding_ratio: Option<f64> = None;
         let (mut lost, mut lost_most, mut spin) = (0.0, 0.0, 0.0);
@@ -174,7 +173,7 @@ pub fn pair(ctx: &CaseContext) -> Result<Vec<Measured>> {
     for law in &p.laws {
         let mut s = base.clone();
         s.contact = law.contact.clone();
-        let (first, last) = first_and_last(ctx, &law.label, &s)?;
+        let (first, last) = ctx.first_and_last(&law.label, &s)?;
         let (b0, b1) = (&last.bodies[0], &last.bodies[1]);
         if (b1.position - b0.position).norm() <= b0.radius + b1.radius {
             return Err(TampError::Other(format!(
@@ -222,19 +221,6 @@ fn friction(s: &Scene) -> Result<f64> {
         .as_ref()
         .map(|t| t.friction)
         .ok_or_else(|| TampError::Other("each law must name a tangential law".into()))
-}
-
-/// The first and last frames of the scene's run on the case's engine, recording
-/// nothing in between.
-pub(super) fn first_and_last(ctx: &CaseContext, label: &str, s: &Scene) -> Result<(Frame, Frame)> {
-    let steps = scene::build(s)?.steps;
-    let rec = ctx.record(label, s, RecordSpec::every(steps.max(1), false))?;
-    match (rec.frames.first(), rec.frames.last()) {
-        (Some(a), Some(b)) if b.step == steps => Ok((a.clone(), b.clone())),
-        _ => Err(TampError::Other(format!(
-            "{label}: the recording has no frame at step 0 and step {steps}"
-        ))),
-    }
 }
 
 /// Of a running extreme and a new ratio, the one farther from 1.

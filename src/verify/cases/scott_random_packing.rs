@@ -9,7 +9,8 @@
 //! grow, and tamp's overlap guard stops such a run (it did, with 10⁴ spheres:
 //! docs/paper-discrepancies.md §18).
 //!
-//! Measured: the packing fraction of the interior slab, 4 diameters above the floor
+//! Measured from the last recorded frame (centres and radii) and the scene's periodic
+//! faces: the packing fraction of the interior slab, 4 diameters above the floor
 //! (where the wall-induced layering has died out) to 4 diameters below the highest
 //! sphere top (the loose surface), counted exactly per periodic cell
 //! (`measure::packing`). Reference: Scott & Kilgour 1969 (J. Phys. D 2, 863),
@@ -23,31 +24,34 @@
 use crate::contact::tangential::{CundallStrack, TangentialLaw};
 use crate::error::Result;
 use crate::measure::{Region, packing::packing_fraction};
+use crate::particles::Vec3;
+use crate::scene::Scene;
+use crate::scene::physics::space;
 use crate::scene::schema::{FrictionSpec, RotationSpec};
-use crate::scene::{self, Scene};
 use crate::verify::{CaseContext, Measured};
 
-/// Packing fraction of the interior of the settled bed.
-fn interior_packing_fraction(scene: &Scene) -> Result<f64> {
-    let built = scene::build(scene)?;
-    let mut sim = built.sim;
-    sim.run_with(built.steps, |_| {})?;
-    let p = &sim.state.particles;
-    let d = 2.0 * p.largest_radius();
-    let top = (0..p.len())
-        .map(|i| p.position[i].z + p.radius[i])
+/// Packing fraction of the interior of the bed settled in run `label`.
+fn interior_packing_fraction(ctx: &CaseContext, label: &str, scene: &Scene) -> Result<f64> {
+    let (_, last) = ctx.first_and_last(label, scene)?;
+    let position: Vec<Vec3> = last.bodies.iter().map(|b| b.position).collect();
+    let radius: Vec<f64> = last.bodies.iter().map(|b| b.radius).collect();
+    let d = 2.0 * radius.iter().copied().fold(0.0, f64::max);
+    let top = last
+        .bodies
+        .iter()
+        .map(|b| b.position.z + b.radius)
         .fold(f64::NEG_INFINITY, f64::max);
     let region = Region::Slab {
         axis: 2,
         lo: 4.0 * d,
         hi: top - 4.0 * d,
     };
-    packing_fraction(&p.position, &p.radius, &region, &sim.model.detection.space)
+    packing_fraction(&position, &radius, &region, &space(scene.periodic.as_ref()))
 }
 
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let scene = ctx.scene()?;
-    let frictionless = interior_packing_fraction(&scene)?;
+    let frictionless = interior_packing_fraction(ctx, "frictionless", &scene)?;
     let mut frictional = scene.clone();
     frictional.contact.tangential = Some(FrictionSpec {
         law: TangentialLaw::CundallStrack(CundallStrack { stiffness: 1e7 }),
@@ -55,7 +59,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         friction_pairs: Vec::new(),
     });
     frictional.rotation = Some(RotationSpec { inertia_scale: 1.0 });
-    let with_friction = interior_packing_fraction(&frictional)?;
+    let with_friction = interior_packing_fraction(ctx, "frictional", &frictional)?;
     Ok(vec![
         Measured::new("packing_fraction", frictionless, 0.637),
         // The interval [0.555, 0.637] as its centre and half-width (see the JSON).

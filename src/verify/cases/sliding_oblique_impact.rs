@@ -9,7 +9,6 @@
 //! read from the first and last recorded frames, once the sphere has left the wall
 //! (no force acts on it after that, so the last frame holds its rebound exactly).
 
-use super::oblique_impact::first_and_last;
 use crate::contact::tangential::{
     Coulomb, CundallStrack, HaffWerner, MindlinDeresiewicz, MindlinNoSlip, TangentialLaw,
     storakers, walton_braun,
@@ -53,7 +52,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
             friction,
             friction_pairs: Vec::new(),
         });
-        let (first, last) = first_and_last(ctx, law.name(), &s)?;
+        let (first, last) = ctx.first_and_last(law.name(), &s)?;
         let (b0, b1) = (&first.bodies[0], &last.bodies[0]);
         let (v0, v1, radius) = (b0.velocity, b1.velocity, b0.radius);
         let gap = (b1.position - point).dot(&normal) - b1.radius;

@@ -37,7 +37,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         .ok_or_else(|| {
             TampError::Other("the scene's spheres must share one material density".into())
         })?;
-    let (first, last) = super::oblique_impact::first_and_last(ctx, "impact", &scene)?;
+    let (first, last) = ctx.first_and_last("impact", &scene)?;
     for (i, j) in [(0, 1), (0, 2), (1, 2)] {
         if overlap(&last, i, j) >= 0.0 {
             return Err(TampError::Other(format!(

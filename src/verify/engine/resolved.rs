@@ -2,8 +2,10 @@
 //! left to tamp's generators or estimates. Every particle is explicit (inserted and
 //! deposited ones placed), the step is `time_step.fixed` and the length `run.steps`,
 //! every default is written out, `output` says what to record, and `resolved_from`
-//! keeps the original scene's name and hash. `tamp run` on it runs the same steps as on
-//! the original scene, bit for bit.
+//! keeps the original scene's name and hash. A growth stage stays, with each particle at
+//! its final radius: the stage is a rule of the run (every radius a known function of
+//! time), not a generator. `tamp run` on it runs the same steps as on the original
+//! scene, bit for bit.
 
 use super::Refusal;
 use crate::scene::schema::{OutputSpec, ParticleSpec, ResolvedFrom, RunSpec, TimeStepSpec};
@@ -47,12 +49,6 @@ impl Resolved {
 /// of particles and steps cannot say what it does.
 pub fn resolve(scene: &Scene, spec: RecordSpec) -> Result<Resolved, Refusal> {
     let refuse = |field: &str, why: &str| Err(Refusal::NotExpressible(format!("{field}: {why}")));
-    if scene.growth.is_some() {
-        return refuse(
-            "growth",
-            "radii that grow during the run are not a fixed list of particles",
-        );
-    }
     let original = serde_json::to_vec(scene).expect("a scene serialises");
     let built = scene::build(scene)?;
     let sim = &built.sim;
@@ -71,7 +67,11 @@ pub fn resolve(scene: &Scene, spec: RecordSpec) -> Result<Resolved, Refusal> {
             let prescribed = p.prescribed[i];
             ParticleSpec {
                 position: p.position[i].into(),
-                radius: p.radius[i],
+                // The final radius: a growth stage starts from its fraction of it.
+                radius: match scene.growth {
+                    Some(_) => sim.state.target_radius[i],
+                    None => p.radius[i],
+                },
                 material: sim.model.materials[p.material[i]].name.clone(),
                 velocity: (!prescribed).then(|| p.velocity[i].into()),
                 omega: scene.rotation.is_some().then(|| p.omega[i].into()),
@@ -161,15 +161,38 @@ mod tests {
     }
 
     #[test]
-    fn what_a_fixed_list_of_particles_and_steps_cannot_say_is_named() {
-        let mut s = scene(INSERTED);
-        s.growth = Some(crate::scene::schema::GrowthSpec {
-            duration: 1e-4,
+    fn a_growth_stage_resolves_to_the_final_radii_and_runs_the_same_steps() {
+        let mut original = scene(INSERTED);
+        original.growth = Some(crate::scene::schema::GrowthSpec {
+            duration: 2e-4,
             initial_fraction: 0.5,
         });
+        let r = resolve(&original, RecordSpec::EVERY_STEP).unwrap();
+        assert!(r.scene.particles.iter().all(|p| p.radius == 1e-3));
+        let growth = r.scene.growth.as_ref().expect("the growth stage kept");
+        assert_eq!((growth.duration, growth.initial_fraction), (2e-4, 0.5));
+        let (mut a, mut b) = (
+            scene::build(&original).unwrap().sim,
+            scene::build(&scene(&r.json)).unwrap().sim,
+        );
+        for _ in 0..400 {
+            a.step().unwrap();
+            b.step().unwrap();
+        }
+        assert!(!a.is_growing(), "the run must outlast the growth stage");
+        assert_eq!(a.state.particles.radius, b.state.particles.radius);
+        assert_eq!(a.state.particles.position, b.state.particles.position);
+        assert_eq!(a.state.particles.velocity, b.state.particles.velocity);
+    }
+
+    #[test]
+    fn what_a_fixed_list_of_particles_and_steps_cannot_say_is_named() {
+        let mut s = scene(INSERTED);
+        s.insert[0].schedule =
+            Some(serde_json::from_str(r#"{"every": 1e-4, "per_event": 1}"#).unwrap());
         let Err(Refusal::NotExpressible(why)) = resolve(&s, RecordSpec::EVERY_STEP) else {
-            panic!("growth resolved")
+            panic!("a pouring schedule resolved")
         };
-        assert!(why.starts_with("growth:"), "{why}");
+        assert!(why.starts_with("insert[].schedule:"), "{why}");
     }
 }
