@@ -71,6 +71,8 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("oblique_wall_impact_liggghts", oblique_impact::wall),
     ("oblique_wall_impact_lammps_mindlin", oblique_impact::wall),
     ("oblique_wall_impact_lammps_linear", oblique_impact::wall),
+    ("moving_wall_impact_liggghts", oblique_impact::wall),
+    ("moving_wall_impact_lammps", oblique_impact::wall),
     ("oblique_pair_impact_liggghts", oblique_impact::pair),
     ("oblique_pair_impact_lammps", oblique_impact::pair),
     ("three_sphere_impact_liggghts", three_sphere_impact::run),

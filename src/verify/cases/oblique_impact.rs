@@ -29,6 +29,12 @@
 //! - Two spheres: the pair's angular momentum about its centre of mass (orbital plus
 //!   spin) is conserved when the two lever arms add up to the centre distance.
 //!
+//! A plane that moves at a constant velocity W (its `motion`) gives the same impacts in
+//! its own frame (Galilean invariance): each sphere starts at v + W, and every velocity
+//! is measured relative to the wall, so the same references hold, and a code that left
+//! the wall's velocity out of the relative velocity of the contact (normal or
+//! tangential) would fail them.
+//!
 //! Velocities and spins are read from the first and the last recorded frame, once the
 //! spheres have separated (no force acts after that).
 
@@ -37,7 +43,7 @@ use crate::particles::Vec3;
 use crate::plot::{Panel, Series, write_svg};
 use crate::scene::Scene;
 use crate::scene::schema::ContactSpec;
-use crate::scene::walls::ShapeSpec;
+use crate::scene::walls::{MotionSpec, ShapeSpec};
 use crate::verify::{CaseContext, Measured, measure};
 use serde::Deserialize;
 use std::fmt::Write as _;
@@ -63,16 +69,20 @@ struct Law {
 
 /// The wall impacts: the scene's one sphere above its one plane, repeated side by side
 /// along the wall (far enough apart never to touch), one per angle, each at the
-/// scene's speed.
+/// scene's speed relative to the wall.
 pub fn wall(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let p: Parameters = ctx.parameters()?;
     let base = ctx.scene()?;
-    let sphere = match (base.walls.as_slice(), base.particles.as_slice()) {
+    let (sphere, wall_velocity) = match (base.walls.as_slice(), base.particles.as_slice()) {
         ([w], [s])
             if matches!(w.shape, ShapeSpec::Plane { point, normal }
             if point == [0.0; 3] && normal == [0.0, 0.0, 1.0]) =>
         {
-            s
+            match w.motion {
+                MotionSpec::Fixed => (s, Vec3::zeros()),
+                MotionSpec::Velocity { velocity } => (s, Vec3::from(velocity)),
+                _ => return Err(plane_needed()),
+            }
         }
         _ => return Err(plane_needed()),
     };
@@ -93,7 +103,8 @@ pub fn wall(ctx: &CaseContext) -> Result<Vec<Measured>> {
                 let (sin, cos) = angle.to_radians().sin_cos();
                 let mut each = sphere.clone();
                 each.position[1] += 4.0 * sphere.radius * k as f64;
-                each.velocity = Some([speed * sin, 0.0, -speed * cos]);
+                let v = Vec3::new(speed * sin, 0.0, -speed * cos) + wall_velocity;
+                each.velocity = Some(v.into());
                 each
             })
             .collect();
@@ -104,15 +115,18 @@ pub fn wall(ctx: &CaseContext) -> Result<Vec<Measured>> {
         let mut curve = Vec::new();
         for (k, angle) in p.angles_deg.iter().enumerate() {
             let (b0, b1) = (&first.bodies[k], &last.bodies[k]);
-            if b1.position.z - b1.radius <= 0.0 || b1.velocity.z <= 0.0 {
+            // In the wall's frame: positions from the wall's height now, velocities less W.
+            let height = b1.position.z - wall_velocity.z * last.time;
+            let (u0, u1) = (b0.velocity - wall_velocity, b1.velocity - wall_velocity);
+            if height - b1.radius <= 0.0 || u1.z <= 0.0 {
                 return Err(TampError::Other(format!(
                     "{} at {angle}°: the sphere has not left the wall by step {}",
                     law.label, last.step
                 )));
             }
-            let (v_t, v_n) = (b0.velocity.x, -b0.velocity.z);
-            let e = b1.velocity.z / v_n;
-            let dv_t = v_t - b1.velocity.x;
+            let (v_t, v_n) = (u0.x, -u0.z);
+            let e = u1.z / v_n;
+            let dv_t = v_t - u1.x;
             let omega_r = b1.omega.y * b1.radius;
             let ratio = omega_r / (2.5 * dv_t);
             spin += omega_r;
@@ -123,11 +137,11 @@ pub fn wall(ctx: &CaseContext) -> Result<Vec<Measured>> {
             if sliding {
                 sliding_ratio = Some(farther_from_one(sliding_ratio, slide));
             }
-            curve.push((*angle, b1.velocity.x / v_t));
+            curve.push((*angle, u1.x / v_t));
             let _ = writeln!(
                 table,
                 "{},{angle},{v_t:.17e},{v_n:.17e},{e:.17e},{:.17e},{omega_r:.17e},{ratio:.17e},{sliding},{slide:.17e}",
-                law.label, b1.velocity.x
+                law.label, u1.x
             );
         }
         out.push(Measured::new(
@@ -211,7 +225,7 @@ pub fn pair(ctx: &CaseContext) -> Result<Vec<Measured>> {
 
 fn plane_needed() -> TampError {
     TampError::Other(
-        "the scene must hold one sphere and one plane wall through the origin with normal (0, 0, 1)".into(),
+        "the scene must hold one sphere and one plane wall through the origin with normal (0, 0, 1), fixed or moving at a constant velocity".into(),
     )
 }
 
