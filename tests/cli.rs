@@ -281,6 +281,28 @@ fn export_liggghts_refuses_what_liggghts_cannot_express_naming_every_field() {
     );
 }
 
+/// LIGGGHTS's cylinders take R* = R: a "mean" cylinder would export as another contact.
+#[test]
+fn export_liggghts_refuses_a_mean_curvature_cylinder() {
+    let scene: serde_json::Value = serde_json::from_str(include_str!(
+        "../verification/cylinder_wall_impact_lammps.scene.json"
+    ))
+    .unwrap();
+    let (_dir, path, out) = scene_in_tempdir(&scene);
+    let o = tamp(&[
+        "export-liggghts",
+        path.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("walls[0].shape.curvature: cannot export to LIGGGHTS 3.8"),
+        "{err}"
+    );
+}
+
 #[test]
 fn export_liggghts_writes_a_deck_with_the_same_particles() {
     let mut scene = base();

@@ -38,7 +38,7 @@ use crate::document::Document;
 use crate::error::{Result, TampError};
 use crate::material::{effective_mass, effective_modulus, effective_radius};
 use crate::particles::Vec3;
-use crate::scene::walls::MotionSpec;
+use crate::scene::walls::{Curvature, MotionSpec, ShapeSpec};
 use crate::scene::{self, Scene};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -239,6 +239,16 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
         }
     }
     for (k, w) in scene.walls.iter().enumerate() {
+        if let ShapeSpec::Cylinder {
+            curvature: Curvature::Mean,
+            ..
+        } = w.shape
+        {
+            refuse(
+                &format!("walls[{k}].shape.curvature"),
+                "LIGGGHTS's cylinder walls (primitive or mesh) give a sphere the effective radius R, as against a plane: tamp's \"flat\" cylinder, not \"mean\"",
+            );
+        }
         match &w.motion {
             MotionSpec::Fixed | MotionSpec::Velocity { .. } => {}
             MotionSpec::Displacement { .. } => refuse(

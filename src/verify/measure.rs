@@ -1,5 +1,5 @@
 //! Measurements of recorded runs that more than one case makes: a collision between two
-//! particles, or between a particle and a fixed plane, read from the frames of every
+//! particles, or between a particle and a fixed plane or cylinder, read from the frames of every
 //! step; the momenta and kinetic energy of a frame. The arithmetic is `collision::CollisionWatch`'s, the one a simulation uses as
 //! it steps, so the tamp engine's recording gives the values of a live measurement to
 //! the bit.
@@ -43,6 +43,34 @@ pub fn plane(rec: &Recording, i: usize, point: Vec3, normal: Vec3) -> Result<Col
         rec,
         frames,
         &format!("particle {i} and the plane"),
+        i,
+        overlap,
+        approach,
+    )
+}
+
+/// The first collision of particle `i` with the inside of the cylinder of `radius` R_c
+/// about the line through `origin` along the unit `axis`; the overlap is
+/// R_i − (R_c − ρ_i), ρ_i the distance of the centre from the axis, and the approach
+/// speed the velocity along the outward radial direction.
+pub fn cylinder_inside(
+    rec: &Recording,
+    i: usize,
+    origin: Vec3,
+    axis: Vec3,
+    radius: f64,
+) -> Result<Collision> {
+    let frames = frames(rec, i, "a wall collision")?;
+    let outward = |f: &Frame| {
+        let d = f.bodies[i].position - origin;
+        d - axis * d.dot(&axis)
+    };
+    let overlap = |f: &Frame| f.bodies[i].radius - (radius - outward(f).norm());
+    let approach = |f: &Frame| f.bodies[i].velocity.dot(&outward(f).normalize());
+    watch(
+        rec,
+        frames,
+        &format!("particle {i} and the cylinder"),
         i,
         overlap,
         approach,

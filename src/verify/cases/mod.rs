@@ -7,6 +7,7 @@ mod ballistic_deposition_2d;
 mod binary_packing;
 mod compacted_deposit;
 mod compaction_2d;
+mod cylinder_wall_impact;
 mod density_segregation;
 mod die_compaction_replay;
 mod die_specimen;
@@ -18,8 +19,6 @@ mod hertz_rigid_wall_impact;
 mod hertz_yield_onset;
 mod hollomon_constants;
 mod kuwabara_kono_restitution;
-mod lammps_cylinder_wall_impact;
-mod liggghts_inputs;
 mod linear_damped_collision;
 mod linear_restitution;
 mod mdr_curve;
@@ -71,6 +70,8 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("oblique_wall_impact_liggghts", oblique_impact::wall),
     ("oblique_wall_impact_lammps_mindlin", oblique_impact::wall),
     ("oblique_wall_impact_lammps_linear", oblique_impact::wall),
+    ("cylinder_wall_impact_liggghts", cylinder_wall_impact::run),
+    ("cylinder_wall_impact_lammps", cylinder_wall_impact::run),
     ("moving_wall_impact_liggghts", oblique_impact::wall),
     ("moving_wall_impact_lammps", oblique_impact::wall),
     ("oblique_pair_impact_liggghts", oblique_impact::pair),
@@ -104,10 +105,6 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ),
     ("liggghts_die_compaction", die_compaction_replay::liggghts),
     ("lammps_die_compaction_small", die_compaction_replay::lammps),
-    (
-        "lammps_cylinder_wall_impact",
-        lammps_cylinder_wall_impact::cylinder,
-    ),
     ("lammps_settled_packing", settled_packing::lammps),
     ("lammps_moving_wall", trajectory_replay::run),
 ];
