@@ -35,7 +35,6 @@ mod storakers_unloading;
 mod thornton_restitution;
 mod three_sphere_compression;
 mod three_sphere_impact;
-mod trajectory_replay;
 mod two_body;
 mod two_sphere_compression;
 mod van_der_waals_force;
@@ -72,6 +71,7 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("oblique_wall_impact_lammps_linear", oblique_impact::wall),
     ("cylinder_wall_impact_liggghts", cylinder_wall_impact::run),
     ("cylinder_wall_impact_lammps", cylinder_wall_impact::run),
+    ("moving_cylinder_impact_lammps", cylinder_wall_impact::run),
     ("moving_wall_impact_liggghts", oblique_impact::wall),
     ("moving_wall_impact_lammps", oblique_impact::wall),
     ("oblique_pair_impact_liggghts", oblique_impact::pair),
@@ -106,7 +106,6 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("liggghts_die_compaction", die_compaction_replay::liggghts),
     ("lammps_die_compaction_small", die_compaction_replay::lammps),
     ("lammps_settled_packing", settled_packing::lammps),
-    ("lammps_moving_wall", trajectory_replay::run),
 ];
 
 pub fn find(name: &str) -> Option<CaseFn> {
