@@ -38,7 +38,11 @@ fn verify(dir: &Path, args: &[&str]) -> (Output, Vec<serde_json::Value>) {
     (out, v["cases"].as_array().unwrap().clone())
 }
 
-/// The quick cases whose files do not say `tamp_only`.
+/// Runs too long for a test: 8 min in-process and as long again through the adapter on
+/// the 2-core machine (its run through `tamp_run.sh`, Δ 0, is in docs/engines.md).
+const TOO_LONG: [&str; 1] = ["binary_packing_ratio10_quick"];
+
+/// The quick cases whose files do not say `tamp_only`, but those `TOO_LONG` for a test.
 fn cases_for_every_engine() -> Vec<String> {
     let mut names = Vec::new();
     for entry in std::fs::read_dir(root().join("verification")).unwrap() {
@@ -49,8 +53,9 @@ fn cases_for_every_engine() -> Vec<String> {
         }
         let case: serde_json::Value =
             serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
-        if case["tier"] == "quick" && case.get("tamp_only").is_none() {
-            names.push(case["name"].as_str().unwrap().to_string());
+        let name = case["name"].as_str().unwrap();
+        if case["tier"] == "quick" && case.get("tamp_only").is_none() && !TOO_LONG.contains(&name) {
+            names.push(name.to_string());
         }
     }
     names.sort();
