@@ -466,9 +466,9 @@ fn check_initial_overlaps(
         }
     }
     for (k, wall) in walls.iter().enumerate() {
-        for i in 0..p.len() {
-            let overlap = wall.deepest_overlap(&wall.initial_pose(), &p.position[i], radius[i]);
-            if overlap / radius[i] > tolerance {
+        for (i, (x, &r)) in p.position.iter().zip(&radius).enumerate() {
+            let overlap = wall.deepest_overlap(&wall.initial_pose(), x, r);
+            if overlap / r > tolerance {
                 errors.push(TampError::input(
                     path(i),
                     format!(
