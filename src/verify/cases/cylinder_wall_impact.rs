@@ -27,33 +27,14 @@
 //! measurement of `measure::cylinder_inside`), the oblique runs at their first and last
 //! step, once every sphere has left the wall.
 
+use super::oblique_impact::Parameters;
 use crate::contact::normal::hertz::{hertz_contact_duration, hertz_max_overlap};
 use crate::error::{Result, TampError};
 use crate::measure::region::ball_volume;
 use crate::particles::Vec3;
-use crate::scene::schema::ContactSpec;
 use crate::scene::walls::{Curvature, MotionSpec, ShapeSpec};
 use crate::verify::recording::{Frame, RecordSpec};
 use crate::verify::{CaseContext, Measured, measure};
-use serde::Deserialize;
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct Parameters {
-    /// Incidence angles of the oblique runs from the wall's normal, degrees.
-    angles_deg: Vec<f64>,
-    /// Each contact law of the oblique runs, one scene each.
-    laws: Vec<Law>,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct Law {
-    /// The law's name in the quantities (`kinetic_energy_ratio_<label>`).
-    label: String,
-    /// Replaces the scene's `contact`.
-    contact: ContactSpec,
-}
 
 /// The cylinder's axis point, unit axis, radius, curvature rule and velocity.
 struct Cylinder {
@@ -66,6 +47,9 @@ struct Cylinder {
 
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let p: Parameters = ctx.parameters()?;
+    if p.angles_deg.is_empty() {
+        return Err(TampError::Other("parameters.angles_deg: no angle".into()));
+    }
     let base = ctx.scene()?;
     let needed = || {
         TampError::Other(
@@ -108,25 +92,15 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         }
         _ => return Err(needed()),
     };
-    let [material] = base.materials.as_slice() else {
-        return Err(needed());
-    };
-    let (Some(density), Some(e), Some(nu)) = (
-        material.density,
-        material.youngs_modulus,
-        material.poisson_ratio,
-    ) else {
-        return Err(TampError::Other(
-            "the material must give a density, E and nu".into(),
-        ));
-    };
+    let super::one_material::OneMaterial {
+        density,
+        effective_modulus: e_star,
+    } = super::one_material::of(&base)?;
     let r = sphere.radius;
     let r_eff = match cylinder.curvature {
         Curvature::Flat => r,
         Curvature::Mean => 2.0 * r * cylinder.radius / (2.0 * cylinder.radius - r),
     };
-    let compliance = (1.0 - nu * nu) / e;
-    let e_star = 1.0 / (compliance + compliance);
     let mass = density * ball_volume(r);
     // The head-on velocity relative to the wall (the radial approach, which the
     // collision measurement reads, is the same in the lab: W runs along the axis).
@@ -158,19 +132,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     for law in &p.laws {
         let mut s = base.clone();
         s.contact = law.contact.clone();
-        s.particles = p
-            .angles_deg
-            .iter()
-            .enumerate()
-            .map(|(k, angle)| {
-                let (sin, cos) = angle.to_radians().sin_cos();
-                let mut each = sphere.clone();
-                let along = cylinder.axis * (4.0 * r * k as f64);
-                each.position = (Vec3::from(sphere.position) + along).into();
-                each.velocity = Some((speed * (sin * t - cos * n) + cylinder.velocity).into());
-                each
-            })
-            .collect();
+        s.particles = p.spheres_at_angles(sphere, cylinder.axis, n, t, cylinder.velocity);
         let (first, last) = ctx.first_and_last(&law.label, &s)?;
         for (k, b) in last.bodies.iter().enumerate() {
             let d = b.position - cylinder.origin;

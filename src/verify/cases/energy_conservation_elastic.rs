@@ -28,31 +28,15 @@ const SAMPLE_STEPS: f64 = 250.0;
 /// What the energy of a frame needs from the scene: one material, fixed planes.
 struct Energy {
     density: f64,
-    pair_modulus: f64,
-    wall_modulus: f64,
+    /// E* of every contact, sphere–sphere and sphere–wall alike.
+    modulus: f64,
     /// A point of each wall plane and its unit normal towards the spheres.
     planes: Vec<(Vec3, Vec3)>,
 }
 
 impl Energy {
     fn of(scene: &Scene) -> Result<Energy> {
-        let [material] = scene.materials.as_slice() else {
-            return Err(TampError::Other(
-                "the scene must have one material, the spheres' and the walls'".into(),
-            ));
-        };
-        let (Some(density), Some(e), Some(nu)) = (
-            material.density,
-            material.youngs_modulus,
-            material.poisson_ratio,
-        ) else {
-            return Err(TampError::Other(
-                "the material must give a density, E and nu".into(),
-            ));
-        };
-        // 1/E* = (1 − ν₁²)/E₁ + (1 − ν₂²)/E₂, one material on both sides.
-        let compliance = (1.0 - nu * nu) / e;
-        let modulus = 1.0 / (compliance + compliance);
+        let material = super::one_material::of(scene)?;
         let planes = scene
             .walls
             .iter()
@@ -67,9 +51,8 @@ impl Energy {
             })
             .collect::<Result<_>>()?;
         Ok(Energy {
-            density,
-            pair_modulus: modulus,
-            wall_modulus: modulus,
+            density: material.density,
+            modulus: material.effective_modulus,
             planes,
         })
     }
@@ -83,14 +66,14 @@ impl Energy {
                 let overlap = a.radius + b.radius - (a.position - b.position).norm();
                 if overlap > 0.0 {
                     let r_eff = a.radius * b.radius / (a.radius + b.radius);
-                    stored += hertz_energy(overlap, r_eff, self.pair_modulus);
+                    stored += hertz_energy(overlap, r_eff, self.modulus);
                     touching = true;
                 }
             }
             for (point, normal) in &self.planes {
                 let overlap = a.radius - (a.position - point).dot(normal);
                 if overlap > 0.0 {
-                    stored += hertz_energy(overlap, a.radius, self.wall_modulus);
+                    stored += hertz_energy(overlap, a.radius, self.modulus);
                     touching = true;
                 }
             }

@@ -25,6 +25,7 @@ mod mdr_curve;
 mod momentum_conservation;
 mod nial_die_compaction;
 mod oblique_impact;
+mod one_material;
 pub mod probe;
 mod restitution_laws;
 mod rojek_models;

@@ -42,29 +42,59 @@ use crate::error::{Result, TampError};
 use crate::particles::Vec3;
 use crate::plot::{Panel, Series, write_svg};
 use crate::scene::Scene;
-use crate::scene::schema::ContactSpec;
+use crate::scene::schema::{ContactSpec, ParticleSpec};
 use crate::scene::walls::{MotionSpec, ShapeSpec};
 use crate::verify::{CaseContext, Measured, measure};
 use serde::Deserialize;
 use std::fmt::Write as _;
 
+/// The case file's `parameters` of the impacts of a sphere on a wall at several
+/// angles, once per contact law (this module's and `cylinder_wall_impact`'s).
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
-struct Parameters {
+pub(super) struct Parameters {
     /// Incidence angles from the wall's normal, degrees (wall impacts only).
     #[serde(default)]
-    angles_deg: Vec<f64>,
+    pub angles_deg: Vec<f64>,
     /// Each contact law in turn, one scene each.
-    laws: Vec<Law>,
+    pub laws: Vec<Law>,
 }
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
-struct Law {
-    /// The law's name in the quantities (`spin_ratio_<label>`).
-    label: String,
+pub(super) struct Law {
+    /// The law's name in the quantities (`spin_ratio_<label>`, …).
+    pub label: String,
     /// Replaces the scene's `contact`.
-    contact: ContactSpec,
+    pub contact: ContactSpec,
+}
+
+impl Parameters {
+    /// The scene's `sphere` once per angle, side by side 4R apart along `along`, each
+    /// moving at its own speed towards the wall whose unit normal `n` points at it, at its
+    /// angle from −n, its tangential part along `t`; plus the wall's velocity `w`.
+    pub fn spheres_at_angles(
+        &self,
+        sphere: &ParticleSpec,
+        along: Vec3,
+        n: Vec3,
+        t: Vec3,
+        w: Vec3,
+    ) -> Vec<ParticleSpec> {
+        let speed = Vec3::from(sphere.velocity.unwrap_or([0.0; 3])).norm();
+        self.angles_deg
+            .iter()
+            .enumerate()
+            .map(|(k, angle)| {
+                let (sin, cos) = angle.to_radians().sin_cos();
+                let mut each = sphere.clone();
+                let shift = along * (4.0 * sphere.radius * k as f64);
+                each.position = (Vec3::from(sphere.position) + shift).into();
+                each.velocity = Some((speed * (sin * t - cos * n) + w).into());
+                each
+            })
+            .collect()
+    }
 }
 
 /// The wall impacts: the scene's one sphere above its one plane, repeated side by side
@@ -86,7 +116,6 @@ pub fn wall(ctx: &CaseContext) -> Result<Vec<Measured>> {
         }
         _ => return Err(plane_needed()),
     };
-    let speed = Vec3::from(sphere.velocity.unwrap_or([0.0; 3])).norm();
     let mut out = Vec::new();
     let mut table = String::from(
         "law,angle_deg,tangential_speed,normal_speed,restitution,rebound_vt,omega_r,spin_ratio,sliding,sliding_ratio\n",
@@ -95,19 +124,13 @@ pub fn wall(ctx: &CaseContext) -> Result<Vec<Measured>> {
     for law in &p.laws {
         let mut s = base.clone();
         s.contact = law.contact.clone();
-        s.particles = p
-            .angles_deg
-            .iter()
-            .enumerate()
-            .map(|(k, angle)| {
-                let (sin, cos) = angle.to_radians().sin_cos();
-                let mut each = sphere.clone();
-                each.position[1] += 4.0 * sphere.radius * k as f64;
-                let v = Vec3::new(speed * sin, 0.0, -speed * cos) + wall_velocity;
-                each.velocity = Some(v.into());
-                each
-            })
-            .collect();
+        s.particles = p.spheres_at_angles(
+            sphere,
+            Vec3::new(0.0, 1.0, 0.0),
+            Vec3::new(0.0, 0.0, 1.0),
+            Vec3::new(1.0, 0.0, 0.0),
+            wall_velocity,
+        );
         let (first, last) = ctx.first_and_last(&law.label, &s)?;
         let mu = friction(&s)?;
         let mut sliding_ratio: Option<f64> = None;
