@@ -156,6 +156,8 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         drift_and_order(&ctx.scene()?, |label, s, spec| ctx.record(label, s, spec))?;
     Ok(vec![
         Measured::new("energy_drift", drift, 0.0),
-        Measured::new("energy_drift_order", order, 2.0),
+        // At least second order: the lower bound is what the case guards; the upper one
+        // only catches a measurement gone wrong (see the case file).
+        Measured::between("energy_drift_order", order, 1.5, 3.0),
     ])
 }
