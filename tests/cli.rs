@@ -11,6 +11,23 @@ fn tamp(args: &[&str]) -> std::process::Output {
     common::tamp().args(args).output().unwrap()
 }
 
+/// `tamp COMMAND SCENE --out OUT` with `scene` written to a temporary directory: the exit
+/// code, stderr, OUT, and the directory (kept alive while OUT is read).
+fn on_scene(
+    command: &str,
+    scene: &Value,
+) -> (Option<i32>, String, std::path::PathBuf, tempfile::TempDir) {
+    let (dir, path, out) = scene_in_tempdir(scene);
+    let o = tamp(&[
+        command,
+        path.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let stderr = String::from_utf8_lossy(&o.stderr).into_owned();
+    (o.status.code(), stderr, out, dir)
+}
+
 #[test]
 fn run_writes_summary_series_and_vtk_with_provenance() {
     let (_dir, scene, out) = scene_in_tempdir(&base());
@@ -170,15 +187,8 @@ fn energy_created_before_the_first_periodic_check_stops_the_run() {
         "run": {"steps": 90},
         "stability": {"check_every": 100}
     });
-    let (_dir, scene, out) = scene_in_tempdir(&s);
-    let o = tamp(&[
-        "run",
-        scene.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    let stderr = String::from_utf8_lossy(&o.stderr);
-    assert_eq!(o.status.code(), Some(3), "{stderr}");
+    let (code, stderr, out, _dir) = on_scene("run", &s);
+    assert_eq!(code, Some(3), "{stderr}");
     assert!(
         stderr.contains("unstable at step 90") && stderr.contains("mechanical energy grew"),
         "{stderr}"
@@ -254,15 +264,8 @@ fn export_liggghts_refuses_what_liggghts_cannot_express_naming_every_field() {
         .unwrap()
         .push(json!({"name": "die", "rigid": true}));
     scene["walls"][0]["material"] = json!("die");
-    let (_dir, path, out) = scene_in_tempdir(&scene);
-    let o = tamp(&[
-        "export-liggghts",
-        path.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    let err = String::from_utf8_lossy(&o.stderr);
-    assert_eq!(o.status.code(), Some(2), "{err}");
+    let (code, err, out, _dir) = on_scene("export-liggghts", &scene);
+    assert_eq!(code, Some(2), "{err}");
     for field in [
         "contact.normal.law",
         "contact.tangential.law",
@@ -288,18 +291,15 @@ fn export_liggghts_refuses_a_mean_curvature_cylinder() {
         "../verification/cylinder_wall_impact_lammps.scene.json"
     ))
     .unwrap();
-    let (_dir, path, out) = scene_in_tempdir(&scene);
-    let o = tamp(&[
-        "export-liggghts",
-        path.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    let err = String::from_utf8_lossy(&o.stderr);
-    assert_eq!(o.status.code(), Some(2), "{err}");
+    let (code, err, out, _dir) = on_scene("export-liggghts", &scene);
+    assert_eq!(code, Some(2), "{err}");
     assert!(
         err.contains("walls[0].shape.curvature: cannot export to LIGGGHTS 3.8"),
         "{err}"
+    );
+    assert!(
+        !out.join("in.tamp").exists(),
+        "a refused export writes nothing"
     );
 }
 
@@ -345,15 +345,8 @@ fn each_exporter_refuses_the_other_peers_lever_arms_naming_the_field() {
         ("export-lammps", "mid_overlap", "LAMMPS"),
     ] {
         scene["contact"]["lever_arm"] = json!(arms);
-        let (_dir, path, out) = scene_in_tempdir(&scene);
-        let o = tamp(&[
-            command,
-            path.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ]);
-        let err = String::from_utf8_lossy(&o.stderr);
-        assert_eq!(o.status.code(), Some(2), "{command}: {err}");
+        let (code, err, out, _dir) = on_scene(command, &scene);
+        assert_eq!(code, Some(2), "{command}: {err}");
         assert!(
             err.contains(&format!("contact.lever_arm: cannot export to {peer}")),
             "{command}: {err}"

@@ -394,11 +394,6 @@ impl<'a> CaseContext<'a> {
         }
     }
 
-    /// The rows of `reference_data/liggghts/<case>/results.csv` (at least one).
-    pub fn liggghts_results<T: serde::de::DeserializeOwned>(&self) -> Result<Vec<T>> {
-        self.peer_results("liggghts")
-    }
-
     /// The rows of `reference_data/<peer>/<case>/results.csv` (at least one), `peer`
     /// being `liggghts` or `lammps`.
     pub fn peer_results<T: serde::de::DeserializeOwned>(&self, peer: &str) -> Result<Vec<T>> {

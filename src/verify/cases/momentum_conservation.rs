@@ -8,7 +8,7 @@
 use crate::error::{Result, TampError};
 use crate::particles::Vec3;
 use crate::scene;
-use crate::verify::recording::{Frame, RecordSpec};
+use crate::verify::recording::Frame;
 use crate::verify::{CaseContext, Measured};
 
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
@@ -16,11 +16,8 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let built = scene::build(&scene)?;
     let p = &built.sim.state.particles;
     let (mass, inertia) = (p.mass.clone(), p.inertia.clone());
-    let first_and_last = RecordSpec::every(built.steps.max(1), false);
-    let rec = ctx.record("cloud", &scene, first_and_last)?;
-    let (Some(first), Some(last)) = (rec.frames.first(), rec.frames.last()) else {
-        return Err(TampError::Other("the recording has no frames".into()));
-    };
+    let (first, last) = ctx.first_and_last("cloud", &scene)?;
+    let (first, last) = (&first, &last);
     let linear = |f: &Frame| -> Vec3 {
         f.bodies
             .iter()
