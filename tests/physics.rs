@@ -144,3 +144,49 @@ fn free_sphere_step_estimate(damping: serde_json::Value, x_gamma_t: f64) -> f64 
     .dt_estimate
     .expect("a linear law has a stiffness")
 }
+
+/// A prescribed velocity that changes during the run: the particle moves at the old
+/// velocity through the step the change falls on and at the new one after it, and the
+/// kinetic energy the change gives it is counted as the prescribing body's work, so
+/// the energy book stays balanced (nothing is dissipated without contacts).
+#[test]
+fn prescribed_velocity_changes_at_its_step_and_keeps_the_energy_book() {
+    let dt = 1e-6;
+    let mut b = build(json!({
+        "materials": [{"name": "m", "density": 2500, "youngs_modulus": 1e7, "poisson_ratio": 0.3}],
+        "contact": {"normal": {"law": "hertz"}},
+        "particles": [{"position": [0, 0, 0], "radius": 0.001, "material": "m",
+                       "prescribed_velocity": [0.1, 0, 0],
+                       "prescribed_velocity_changes": [
+                           {"time": 10e-6, "velocity": [-0.3, 0, 0]},
+                           {"time": 25e-6, "velocity": [0, 0.2, 0]}]}],
+        "time_step": {"fixed": dt},
+        "run": {"steps": 40}
+    }));
+    let sim = &mut b.sim;
+    let mut x = Vec::new();
+    for _ in 0..40 {
+        sim.step().unwrap();
+        x.push(sim.state.particles.position[0]);
+    }
+    let expect = |n: f64| {
+        let [a, c] = [n.min(10.0), (n.min(25.0) - 10.0).max(0.0)];
+        [0.1 * a * dt - 0.3 * c * dt, 0.2 * (n - 25.0).max(0.0) * dt]
+    };
+    for (k, p) in x.iter().enumerate() {
+        let [ex, ey] = expect(k as f64 + 1.0);
+        assert!(
+            (p.x - ex).abs() < 1e-15 && (p.y - ey).abs() < 1e-15,
+            "step {}: at {p:?}, expected x {ex:e}, y {ey:e}",
+            k + 1
+        );
+    }
+    let kinetic = sim.kinetic_energy();
+    let mass = 2500.0 * 4.0 / 3.0 * std::f64::consts::PI * 1e-9;
+    assert!((kinetic - 0.5 * mass * 0.04).abs() < 1e-12 * kinetic);
+    assert!(
+        sim.dissipated_energy().abs() < 1e-12 * kinetic,
+        "dissipated {:e} J of {kinetic:e} J",
+        sim.dissipated_energy()
+    );
+}

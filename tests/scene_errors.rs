@@ -934,3 +934,54 @@ fn bad_funnel_fillings_are_named() {
         ],
     );
 }
+
+#[test]
+fn velocity_changes_need_a_prescribed_particle() {
+    let mut s = base();
+    s["particles"][0]["prescribed_velocity_changes"] =
+        json!([{"time": 1e-6, "velocity": [0, 0, 0]}]);
+    expect_input_error(
+        s,
+        &["particles[0].prescribed_velocity_changes: needs prescribed_velocity"],
+    );
+}
+
+#[test]
+fn velocity_changes_come_in_time_order() {
+    let mut s = base();
+    s["particles"][0]
+        .as_object_mut()
+        .unwrap()
+        .remove("velocity");
+    s["particles"][0]["prescribed_velocity"] = json!([0, 0, 0]);
+    s["particles"][0]["prescribed_velocity_changes"] = json!([
+        {"time": 2e-6, "velocity": [0, 0, 0]},
+        {"time": 1e-6, "velocity": [0, 0, 0]}
+    ]);
+    expect_input_error(
+        s,
+        &["particles[0].prescribed_velocity_changes[1].time: must be finite and later than 2e-6 s"],
+    );
+}
+
+#[test]
+fn velocity_changes_need_a_step_each() {
+    let mut s = base();
+    s["particles"][0]
+        .as_object_mut()
+        .unwrap()
+        .remove("velocity");
+    s["particles"][0]["prescribed_velocity"] = json!([0, 0, 0]);
+    s["time_step"] = json!({"fixed": 1e-6});
+    s["particles"][0]["prescribed_velocity_changes"] = json!([
+        {"time": 1e-6, "velocity": [0, 0, 0]},
+        {"time": 1.2e-6, "velocity": [0, 0, 0]}
+    ]);
+    expect_input_error(
+        s,
+        &[
+            "particles[0].prescribed_velocity_changes[1].time: 1.2e-6 s is step 1",
+            "a step of its own after step 1",
+        ],
+    );
+}

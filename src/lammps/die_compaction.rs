@@ -352,6 +352,7 @@ mod tests {
                 velocity: None,
                 omega: None,
                 prescribed_velocity: None,
+                prescribed_velocity_changes: Vec::new(),
             }],
             fill_time: 0.0,
             fill_at_rest: true,

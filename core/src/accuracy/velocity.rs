@@ -7,6 +7,7 @@
 //!
 //! - the largest relative speed of two particles' initial or prescribed velocities
 //!   (exact over all pairs up to `EXACT_PAIRS` particles, else the bound 2 max|v|);
+//! - a prescribed velocity that changes during the run: twice its later speeds;
 //! - a particle against a wall: |v_i − v_wall| with the wall's constant velocity;
 //! - poured particles: twice the sources' entry speed (two poured spheres meeting);
 //! - free fall under gravity over the domain's height H along g (the extent of the
@@ -82,6 +83,16 @@ pub fn implied(sim: &Simulation) -> Implied {
             format!(
                 "twice the fastest particle's speed (particle {}; {n} particles, too many to pair)",
                 p.id[i]
+            ),
+        );
+    }
+    for change in &sim.model.velocity_changes {
+        offer_to(
+            &mut best,
+            2.0 * change.velocity.norm(),
+            format!(
+                "twice the speed particle {} is prescribed from step {}",
+                change.id, change.step
             ),
         );
     }

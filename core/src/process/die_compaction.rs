@@ -239,6 +239,7 @@ fn carried(sim: &Simulation, material: &str) -> Vec<ParticleSpec> {
             velocity: Some(p.velocity[i].into()),
             omega: Some(p.omega[i].into()),
             prescribed_velocity: None,
+            prescribed_velocity_changes: Vec::new(),
         })
         .collect()
 }
@@ -357,6 +358,7 @@ fn loose_cloud(
             velocity: None,
             omega: None,
             prescribed_velocity: None,
+            prescribed_velocity_changes: Vec::new(),
         })
         .collect();
     Ok((particles, height))

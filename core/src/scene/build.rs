@@ -9,7 +9,7 @@ use crate::error::{Result, TampError};
 use crate::growth::Growth;
 use crate::material::Material;
 use crate::particles::Vec3;
-use crate::simulation::{Model, Simulation};
+use crate::simulation::{Model, Simulation, VelocityChange};
 
 /// A built scene: the simulation ready to step, and what its build found.
 pub struct BuiltScene {
@@ -93,8 +93,17 @@ fn check_range(scene: &Scene, sim: &Simulation, dt: f64, steps: u64) -> Result<(
 /// was sized for.
 fn check_speeds(scene: &Scene, sim: &Simulation) -> Result<Vec<String>> {
     let p = &sim.state.particles;
+    // A prescribed velocity that comes later counts as the particle's speed.
+    let later = |i: usize| {
+        sim.model
+            .velocity_changes
+            .iter()
+            .filter(|c| c.id == p.id[i])
+            .map(|c| c.velocity.norm())
+            .fold(0.0, f64::max)
+    };
     let Some((i, speed)) = (0..p.len())
-        .map(|i| (i, p.velocity[i].norm()))
+        .map(|i| (i, p.velocity[i].norm().max(later(i))))
         .max_by(|a, b| a.1.total_cmp(&b.1))
     else {
         return Ok(Vec::new());
@@ -127,6 +136,30 @@ fn check_speeds(scene: &Scene, sim: &Simulation) -> Result<Vec<String>> {
         ));
     }
     Ok(warnings)
+}
+
+/// The scene's `prescribed_velocity_changes` at the step `dt` puts them on (step 0 for
+/// an infinite `dt`: the velocities alone, before the step is chosen).
+fn velocity_changes(scene: &Scene, dt: f64) -> Result<Vec<VelocityChange>> {
+    let steps = if dt.is_finite() {
+        super::particles::velocity_change_steps(scene, dt)?
+    } else {
+        let all = scene.particles.iter().enumerate().flat_map(|(k, p)| {
+            p.prescribed_velocity_changes
+                .iter()
+                .map(move |c| (0, k, v3(&c.velocity)))
+        });
+        all.collect()
+    };
+    Ok(steps
+        .into_iter()
+        .map(|(step, k, velocity)| VelocityChange {
+            step,
+            // Explicit particles are placed first: particles[k] has id k + 1.
+            id: k as u64 + 1,
+            velocity,
+        })
+        .collect())
 }
 
 /// The simulation a validated scene describes, its time step chosen, and what the
@@ -190,7 +223,7 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
             .iter_mut()
             .for_each(|r| *r *= g.initial_fraction);
     }
-    let model = Model {
+    let mut model = Model {
         materials,
         pair_table,
         law,
@@ -202,7 +235,10 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
         growth: None,
         detection,
         limits: scene.stability.limits(),
+        velocity_changes: Vec::new(),
     };
+    // The later velocities, which the step is sized for too; their steps follow from it.
+    model.velocity_changes = velocity_changes(scene, f64::INFINITY)?;
     let mut sim = Simulation::new(model, particles)?;
     if let Some(g) = &scene.growth {
         let growth = Growth {
@@ -324,6 +360,7 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
     }
     check_range(scene, &sim, dt, steps)?;
     sim.set_time_step(dt)?;
+    sim.model.velocity_changes = velocity_changes(scene, dt)?;
     super::memory::check(scene, Some(steps))?;
     warnings.extend(check_speeds(scene, &sim)?);
     Ok(BuiltScene {

@@ -43,6 +43,20 @@ pub struct ParticleSpec {
     /// When set, the particle moves at this velocity whatever the forces (m/s).
     #[serde(default)]
     pub prescribed_velocity: Option<[f64; 3]>,
+    /// Later prescribed velocities, each from its time on (needs `prescribed_velocity`).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub prescribed_velocity_changes: Vec<VelocityChangeSpec>,
+}
+
+/// A prescribed particle's new velocity from a time on: a displacement-controlled
+/// loading that turns back (load, unload, reload).
+#[derive(Clone, Debug, Deserialize, Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct VelocityChangeSpec {
+    /// From this time on (the step nearest it at the scene's time step), s.
+    pub time: f64,
+    /// The velocity from then on, m/s.
+    pub velocity: [f64; 3],
 }
 
 /// Random sequential insertion of `count` non-overlapping spheres into a box.
@@ -152,6 +166,62 @@ pub struct BoxRegion {
     pub upper: [f64; 3],
 }
 
+/// A particle's `prescribed_velocity_changes`: only with `prescribed_velocity`, at
+/// positive, finite, increasing times, with finite velocities. That no two changes
+/// fall on one step is checked once the step is known (`velocity_change_steps`).
+fn validate_velocity_changes(p: &ParticleSpec, path: &str, e: &mut Errors) {
+    if p.prescribed_velocity_changes.is_empty() {
+        return;
+    }
+    if p.prescribed_velocity.is_none() {
+        e.push(
+            format!("{path}.prescribed_velocity_changes"),
+            "needs prescribed_velocity: only a prescribed particle's velocity can be changed",
+        );
+    }
+    let mut before = 0.0;
+    for (c, change) in p.prescribed_velocity_changes.iter().enumerate() {
+        let at = format!("{path}.prescribed_velocity_changes[{c}]");
+        if !(change.time > before && change.time.is_finite()) {
+            e.push(
+                format!("{at}.time"),
+                format!(
+                    "must be finite and later than {before:e} s (the start, or the change before), got {:e}",
+                    change.time
+                ),
+            );
+        }
+        before = change.time;
+        e.finite3(format!("{at}.velocity"), &change.velocity);
+    }
+}
+
+/// The step from which each `prescribed_velocity_changes` entry applies, the step
+/// nearest its time at step `dt`, as (step, particles[k] index, velocity); exit 2
+/// naming the entry when one falls on step 0 or on the step of the change before it.
+pub fn velocity_change_steps(scene: &Scene, dt: f64) -> Result<Vec<(u64, usize, Vec3)>> {
+    let mut steps = Vec::new();
+    for (k, p) in scene.particles.iter().enumerate() {
+        let mut before = 0;
+        for (c, change) in p.prescribed_velocity_changes.iter().enumerate() {
+            let step = (change.time / dt).round();
+            if !(step >= 1.0 && step > before as f64 && step < u64::MAX as f64) {
+                return Err(TampError::input(
+                    format!("particles[{k}].prescribed_velocity_changes[{c}].time"),
+                    format!(
+                        "{:e} s is step {step} at the time step {dt:e} s, and each change needs a step of its own after step {before}",
+                        change.time
+                    ),
+                ));
+            }
+            before = step as u64;
+            steps.push((before, k, v3(&change.velocity)));
+        }
+    }
+    steps.sort_by_key(|&(step, k, _)| (step, k));
+    Ok(steps)
+}
+
 /// The rules of `particles`, `insert` and `deposit`, and that the scene has at least
 /// one particle.
 pub fn validate(scene: &Scene, names: &MaterialNames, e: &mut Errors) {
@@ -171,6 +241,7 @@ pub fn validate(scene: &Scene, names: &MaterialNames, e: &mut Errors) {
                 "needs \"rotation\" in the scene: without it spins never change",
             );
         }
+        validate_velocity_changes(p, &format!("particles[{k}]"), e);
         for (field, v) in [
             ("velocity", &p.velocity),
             ("omega", &p.omega),

@@ -8,6 +8,7 @@ pub use super::contact::{ContactSpec, FrictionPair, FrictionSpec};
 pub use super::materials::{HollomonSpec, MaterialSpec};
 pub use super::particles::{
     BoxRegion, DepositSpec, InsertSpec, ParticleSpec, RadiusSpec, ScheduleSpec, UniformRadius,
+    VelocityChangeSpec,
 };
 pub use super::physics::{GrowthSpec, PeriodicSpec, RotationSpec};
 pub use super::run::{

@@ -36,6 +36,7 @@ use workspace::Workspace;
 pub use limits::StabilityLimits;
 pub use model::Model;
 pub use state::State;
+pub use velocity_changes::VelocityChange;
 
 mod contact_pass;
 mod contacts;
@@ -49,6 +50,7 @@ mod pour;
 mod records;
 mod resume;
 mod state;
+mod velocity_changes;
 mod workspace;
 
 /// One DEM run: its model, its state, and the step's scratch.
@@ -140,6 +142,9 @@ impl Simulation {
 
     /// `step`; with `records`, also the contacts of the step (`step_recording_contacts`).
     fn advance(&mut self, records: Option<&mut Vec<ContactRecord>>) -> Result<()> {
+        if !self.model.velocity_changes.is_empty() {
+            self.change_prescribed_velocities();
+        }
         let dt = self.state.dt;
         let growing = self.is_growing();
         let gravity = self.active_gravity();

@@ -14,6 +14,7 @@ use crate::growth::Growth;
 use crate::material::{Material, PairTable};
 use crate::particles::Vec3;
 
+use super::VelocityChange;
 use super::contacts::NewStates;
 
 /// What a scene fixes for its run (see the module documentation).
@@ -44,6 +45,8 @@ pub struct Model {
     pub detection: Detection,
     /// The safeguards that stop an unstable run.
     pub limits: StabilityLimits,
+    /// Prescribed velocities that change during the run, by step (`velocity_changes`).
+    pub velocity_changes: Vec<VelocityChange>,
 }
 
 impl Model {

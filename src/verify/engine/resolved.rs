@@ -76,6 +76,11 @@ pub fn resolve(scene: &Scene, spec: RecordSpec) -> Result<Resolved, Refusal> {
                 velocity: (!prescribed).then(|| p.velocity[i].into()),
                 omega: scene.rotation.is_some().then(|| p.omega[i].into()),
                 prescribed_velocity: prescribed.then(|| p.velocity[i].into()),
+                // Explicit particles come first, id k + 1 for particles[k].
+                prescribed_velocity_changes: scene
+                    .particles
+                    .get(p.id[i] as usize - 1)
+                    .map_or(Vec::new(), |s| s.prescribed_velocity_changes.clone()),
             }
         })
         .collect();
