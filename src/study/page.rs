@@ -375,6 +375,12 @@ pub fn write(out: &Path) -> Result<()> {
     let scenes = case_scenes();
     let mut inverse = Vec::new();
     let mut plots = Vec::new();
+    // Sweeps of cases that no longer exist are not shown.
+    let names: Vec<String> = crate::verify::load_specs(&crate::verify::verification_dir())?
+        .into_iter()
+        .map(|s| s.name)
+        .collect();
+    by_case.retain(|case, _| names.contains(case));
     for (case, rows) in &by_case {
         let f = case_section(&mut body, &img_dir, case, rows)?;
         let scene = scenes.iter().find(|(n, _)| n == case).map(|(_, s)| s);
