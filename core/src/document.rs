@@ -4,7 +4,7 @@
 //! by whether it has a `die_compaction` block; then it is parsed as that kind, with
 //! every error naming its JSON path and rule.
 
-use crate::error::Result;
+use crate::error::{Result, TampError};
 use crate::process::die_compaction_file::DieCompactionFile;
 use crate::scene::{self, Scene};
 use std::path::Path;
@@ -20,11 +20,25 @@ pub enum Document {
 
 /// Parse and validate a file's JSON text as the kind it is.
 pub fn parse(text: &str) -> Result<Document> {
-    if scene::is_process(text)? {
-        let file = DieCompactionFile::parse_known(text)?;
-        Ok(Document::DieCompaction(Box::new(file)))
-    } else {
-        Ok(Document::Scene(Box::new(scene::parse_known_scene(text)?)))
+    let process = || {
+        Ok(Document::DieCompaction(Box::new(
+            DieCompactionFile::parse_known(text)?,
+        )))
+    };
+    match scene::is_process(text) {
+        Some(true) => process(),
+        Some(false) => Ok(Document::Scene(Box::new(scene::parse_known_scene(text)?))),
+        // Malformed: the scene reader names the error's path, unless the file is a
+        // process, which it finds before the error as an unknown `die_compaction`.
+        None => match scene::parse_known_scene(text) {
+            Err(TampError::Input { rule, .. })
+                if rule.starts_with("unknown field `die_compaction`") =>
+            {
+                process()
+            }
+            Err(e) => Err(e),
+            Ok(_) => unreachable!("malformed JSON parses as no scene"),
+        },
     }
 }
 

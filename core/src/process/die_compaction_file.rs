@@ -112,7 +112,7 @@ impl DieCompactionFile {
     /// JSON path and the rule, as a scene's do; a scene file is refused naming
     /// `die_compaction`.
     pub fn parse(text: &str) -> Result<Self> {
-        if !crate::scene::is_process(text)? {
+        if crate::scene::is_process(text) == Some(false) {
             return Err(crate::error::TampError::input(
                 "die_compaction",
                 "is required: this file is a scene, not a die-compaction process",

@@ -2,6 +2,7 @@
 
 pub mod build;
 pub mod contact;
+mod json_error;
 pub mod materials;
 pub mod memory;
 pub mod particles;
@@ -21,7 +22,7 @@ use sha2::{Digest, Sha256};
 /// anything after the scene's JSON is an error too, not ignored. A die-compaction file
 /// is not a scene: it is refused naming `die_compaction` (`document::parse` reads either).
 pub fn parse(text: &str) -> Result<Scene> {
-    if is_process(text)? {
+    if is_process(text) == Some(true) {
         return Err(TampError::input(
             "die_compaction",
             "makes this file a die-compaction process, not a scene: `tamp run` runs it, and `process::die_compaction_file::DieCompactionFile` reads it",
@@ -38,16 +39,17 @@ pub(crate) fn parse_known_scene(text: &str) -> Result<Scene> {
 }
 
 /// Whether a file's JSON object has a `die_compaction` block, which makes it a process
-/// document rather than a scene. Every other value is skipped unchecked, so this pass
-/// fails only on malformed JSON (named as `parse_json` names it, with its line and
-/// column).
-pub fn is_process(text: &str) -> Result<bool> {
+/// document rather than a scene; `None` when the JSON is malformed, so that the kind
+/// cannot be told. Every other value is skipped unchecked, so this pass cannot name
+/// the path of an error inside one: the reader of the file's kind names it instead.
+pub fn is_process(text: &str) -> Option<bool> {
     #[derive(serde::Deserialize)]
     struct Kind {
         #[serde(default)]
         die_compaction: Option<serde::de::IgnoredAny>,
     }
-    Ok(parse_json::<Kind>(text)?.die_compaction.is_some())
+    let kind: Kind = serde_json::from_str(text).ok()?;
+    Some(kind.die_compaction.is_some())
 }
 
 /// One JSON object of type `T` from a file's text, unvalidated. Errors name the JSON
@@ -64,16 +66,23 @@ pub fn parse_json<T: serde::de::DeserializeOwned>(text: &str) -> Result<T> {
     let value: T = serde_path_to_error::deserialize(&mut *de).map_err(|e| {
         let path = e.path().to_string();
         let inner = e.into_inner();
-        // `.` is the top level; `?` is where a syntax error left the path unknown.
-        let path = if path == "." || path == "?" {
+        let (path, rule) = if inner.is_syntax() || inner.is_eof() {
+            (path, format!("malformed JSON: {inner}"))
+        } else {
+            let rule = inner.to_string();
+            (json_error::refine(text, &path, &rule), rule)
+        };
+        // `.` is the top level; `?` is a key a syntax error cut short, so the path
+        // ends at the object that holds it.
+        let path = path
+            .split('.')
+            .filter(|part| !part.is_empty() && *part != "?")
+            .collect::<Vec<_>>()
+            .join(".");
+        let path = if path.is_empty() {
             "scene".to_string()
         } else {
             path
-        };
-        let rule = if inner.is_syntax() || inner.is_eof() {
-            format!("malformed JSON: {inner}")
-        } else {
-            inner.to_string()
         };
         TampError::input(path, rule)
     })?;

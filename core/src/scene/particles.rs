@@ -90,7 +90,7 @@ fn default_attempts() -> usize {
 }
 
 /// A radius as the scene gives it: one value (m), `{"min", "max"}` or a size law.
-#[derive(Clone, Debug, Deserialize, Serialize)]
+#[derive(Clone, Debug, Serialize)]
 #[serde(untagged)]
 pub enum RadiusSpec {
     /// Every particle this radius, m.
@@ -99,6 +99,29 @@ pub enum RadiusSpec {
     Uniform(UniformRadius),
     /// Any `generate::distribution::SizeDistribution`, tagged by `law`.
     Law(SizeDistribution),
+}
+
+/// Read by its shape (a number, an object with `law`, another object), so that an
+/// error names what is wrong inside the form given; serde's untagged reading only says
+/// that no form matched.
+impl<'de> Deserialize<'de> for RadiusSpec {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
+        use serde::de::Error;
+        let value = serde_json::Value::deserialize(d)?;
+        let read = match &value {
+            serde_json::Value::Number(_) => serde_json::from_value(value).map(RadiusSpec::Fixed),
+            serde_json::Value::Object(o) if o.contains_key("law") => {
+                serde_json::from_value(value).map(RadiusSpec::Law)
+            }
+            serde_json::Value::Object(_) => serde_json::from_value(value).map(RadiusSpec::Uniform),
+            _ => {
+                return Err(D::Error::custom(
+                    "must be a radius (m), {\"min\", \"max\"} or a size law {\"law\": …}",
+                ));
+            }
+        };
+        read.map_err(D::Error::custom)
+    }
 }
 
 impl RadiusSpec {
