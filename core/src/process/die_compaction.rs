@@ -181,6 +181,7 @@ fn stage_scene(
         duration: Some(duration),
         steps: None,
         until: None,
+        max_wall_time: base.run.max_wall_time,
     };
     // A carried bed is in contact: its overlaps are state, not input mistakes.
     s.stability.initial_overlap_tolerance = s.stability.max_overlap_fraction;

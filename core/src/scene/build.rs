@@ -37,7 +37,7 @@ pub(super) fn v3(a: &[f64; 3]) -> Vec3 {
 /// reach (its initial speeds and the characteristic velocity, plus |g| times its
 /// duration) stay inside the range of a double, with a margin of 10⁶ for sums over
 /// many particles and steps. Otherwise some output would be inf or NaN.
-fn check_range(scene: &Scene, sim: &Simulation, dt: f64, steps: u64) -> Result<()> {
+fn check_range(scene: &Scene, sim: &Simulation, dt: f64, steps: f64) -> Result<()> {
     const MARGIN: f64 = 1e-6 * f64::MAX;
     let p = &sim.state.particles;
     for i in 0..p.len() {
@@ -59,7 +59,7 @@ fn check_range(scene: &Scene, sim: &Simulation, dt: f64, steps: u64) -> Result<(
             format!("gives a step of {:e} s: it must be > 0 and finite", dt),
         ));
     }
-    let duration = steps as f64 * dt;
+    let duration = steps * dt;
     let fall = scene
         .gravity
         .map_or(0.0, |g| Vec3::new(g[0], g[1], g[2]).norm() * duration);
@@ -136,6 +136,47 @@ fn check_speeds(scene: &Scene, sim: &Simulation) -> Result<Vec<String>> {
         ));
     }
     Ok(warnings)
+}
+
+/// The run's step count `steps` at the step `dt`, refused (exit 2, naming the fields that set it) beyond
+/// `run::MAX_STEPS` or when its predicted wall time exceeds `run.max_wall_time`.
+fn check_length(scene: &Scene, sim: &Simulation, dt: f64, steps: f64) -> Result<()> {
+    let step_source = if scene.time_step.fixed.is_some() {
+        "time_step.fixed"
+    } else {
+        "the time step tamp chose (time_step)"
+    };
+    let (path, said) = match scene.run.duration {
+        Some(d) if scene.run.steps.is_none() => (
+            "run.duration",
+            format!("{d:e} s at a step of {dt:e} s ({step_source})"),
+        ),
+        _ => ("run.steps", "the run".to_string()),
+    };
+    if steps.is_nan() || steps > super::run::MAX_STEPS {
+        return Err(TampError::input(
+            path,
+            format!(
+                "{said} is {steps:e} steps, more than 2^53 = {:e}: beyond it the times n·Δt are not all distinct doubles",
+                super::run::MAX_STEPS
+            ),
+        ));
+    }
+    let bodies = (sim.state.particles.len() + sim.state.still_to_pour()).max(1);
+    let predicted = steps * bodies as f64 * COST_PER_PARTICLE_STEP;
+    let limit = scene
+        .run
+        .max_wall_time
+        .unwrap_or(super::run::DEFAULT_MAX_WALL_TIME);
+    if predicted > limit {
+        return Err(TampError::input(
+            path,
+            format!(
+                "{said} is {steps:e} steps of {bodies} particles, predicted to take {predicted:.3e} s of wall time ({COST_PER_PARTICLE_STEP:e} s per particle-step), more than run.max_wall_time = {limit:e} s; raise run.max_wall_time if the run is meant to be this long"
+            ),
+        ));
+    }
+    Ok(())
 }
 
 /// The scene's `prescribed_velocity_changes` at the step `dt` puts them on (step 0 for
@@ -334,11 +375,16 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
         };
         (dt_estimate, dt, None)
     };
-    let steps = match (scene.run.steps, scene.run.duration) {
-        (Some(s), _) => s,
-        (None, Some(d)) => (d / dt).ceil() as u64,
+    let planned = match (scene.run.steps, scene.run.duration) {
+        (Some(s), _) => s as f64,
+        (None, Some(d)) => (d / dt).ceil(),
         (None, None) => unreachable!("validated"),
     };
+    if dt > 0.0 && dt.is_finite() {
+        check_length(scene, &sim, dt, planned)?;
+    }
+    check_range(scene, &sim, dt, planned)?;
+    let steps = planned as u64;
     if let Some((a, choice, said)) = &chosen {
         let (a, choice) = (*a, *choice);
         let bodies = sim.state.particles.len() + sim.state.still_to_pour();
@@ -358,7 +404,6 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
             COST_PER_PARTICLE_STEP,
         ));
     }
-    check_range(scene, &sim, dt, steps)?;
     sim.set_time_step(dt)?;
     sim.model.velocity_changes = velocity_changes(scene, dt)?;
     super::memory::check(scene, Some(steps))?;

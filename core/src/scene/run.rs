@@ -75,7 +75,19 @@ pub struct RunSpec {
     /// stays its maximum (docs/scene-format.md).
     #[serde(default)]
     pub until: Option<UntilSpec>,
+    /// The longest run the scene may ask for, s of predicted wall time; absent:
+    /// `DEFAULT_MAX_WALL_TIME` (docs/scene-format.md, "Run length").
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_wall_time: Option<f64>,
 }
+
+/// A run predicted to take longer than this (30 days) is refused unless the scene
+/// raises `run.max_wall_time`: it is almost certainly a mistake of units.
+pub const DEFAULT_MAX_WALL_TIME: f64 = 30.0 * 86_400.0;
+
+/// The largest step count whose times t = n·Δt are all exact multiples: beyond 2^53
+/// a double cannot hold every integer, so steps would share a time.
+pub const MAX_STEPS: f64 = 9_007_199_254_740_992.0;
 
 /// Contact detection: which detector, and its Verlet skin.
 #[derive(Clone, Debug, Deserialize, Serialize)]
@@ -289,6 +301,9 @@ pub fn validate_length(run: &RunSpec, e: &mut Errors) {
             e.positive("run.until.max_speed", v);
         }
         e.non_negative("run.until.held_for", u.held_for);
+    }
+    if let Some(w) = run.max_wall_time {
+        e.positive("run.max_wall_time", w);
     }
 }
 
