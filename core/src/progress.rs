@@ -37,9 +37,13 @@ pub struct Progress {
     started: Instant,
     show: bool,
     shown: bool,
-    /// Log lines instead of a bar (stderr is not a terminal), and when the last was.
+    /// Log lines instead of a bar (stderr is not a terminal), and when the last was
+    /// written, at which position.
     log: bool,
     logged: Instant,
+    logged_at: u64,
+    /// Units per second between the last two log lines.
+    last_rate: Option<f64>,
 }
 
 impl Progress {
@@ -64,6 +68,8 @@ impl Progress {
             shown: false,
             log: !quiet && !terminal,
             logged: Instant::now(),
+            logged_at: 0,
+            last_rate: None,
         }
     }
 
@@ -74,12 +80,15 @@ impl Progress {
             self.shown = true;
         }
         self.bar.set_position(position);
-        if self.log && self.logged.elapsed() >= LOG_EVERY && position > 0 {
+        if self.log && self.logged.elapsed() >= LOG_EVERY && position > self.logged_at {
+            let rate = (position - self.logged_at) as f64 / self.logged.elapsed().as_secs_f64();
             self.logged = Instant::now();
+            self.logged_at = position;
             let elapsed = self.started.elapsed().as_secs_f64();
-            let eta = elapsed * (self.len.saturating_sub(position)) as f64 / position as f64;
+            let eta = eta(self.len.saturating_sub(position), rate, self.last_rate);
+            self.last_rate = Some(rate);
             eprintln!(
-                "{}: {position}/{} after {elapsed:.0} s, ETA {eta:.0} s",
+                "{}: {position}/{} after {elapsed:.0} s, {eta}",
                 self.stage, self.len
             );
         }
@@ -88,5 +97,32 @@ impl Progress {
     /// Remove the bar from the terminal at the end of the stage.
     pub fn finish(self) {
         self.bar.finish_and_clear();
+    }
+}
+
+/// The time left for `remaining` units at the present `rate` (units/s, over the last
+/// interval). A stage whose rate falls (random sequential insertion slows as the
+/// packing nears its jamming limit) can only be bounded below by it: the ETA is then
+/// given as "at least".
+fn eta(remaining: u64, rate: f64, before: Option<f64>) -> String {
+    let left = remaining as f64 / rate;
+    match before {
+        Some(r) if rate < 0.95 * r => {
+            format!("ETA at least {left:.0} s (the rate fell from {r:.3e} to {rate:.3e} per s)")
+        }
+        _ => format!("ETA {left:.0} s"),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn a_falling_rate_gives_a_lower_bound_not_a_date() {
+        assert_eq!(super::eta(100, 10.0, None), "ETA 10 s");
+        assert_eq!(super::eta(100, 10.0, Some(10.2)), "ETA 10 s");
+        assert_eq!(
+            super::eta(100, 5.0, Some(10.0)),
+            "ETA at least 20 s (the rate fell from 1.000e1 to 5.000e0 per s)"
+        );
     }
 }

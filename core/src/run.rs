@@ -133,8 +133,11 @@ pub fn run_scene(
     for w in &built.warnings {
         eprintln!("warning: {w}");
     }
-    for n in &built.notes {
-        eprintln!("{n}");
+    // How the step was chosen is information, not a warning: `--quiet` keeps it off.
+    if !quiet {
+        for n in &built.notes {
+            eprintln!("{n}");
+        }
     }
     let mut sim = built.sim;
     let keep: &[&str] = if resume { &[CHECKPOINT] } else { &[] };
@@ -318,7 +321,7 @@ pub fn run_scene(
         });
     }
     output::write_atomic(&out_dir.join("series.csv"), &series.to_csv()?)?;
-    let json = serde_json::to_vec_pretty(&summary).expect("summary serialises");
+    let json = output::json_bytes(&summary);
     output::write_atomic(&out_dir.join("summary.json"), &json)?;
     output::write_atomic(
         &out_dir.join("quantities.csv"),

@@ -980,10 +980,7 @@ pub fn run_cases(
     let json_path = json
         .map(Path::to_path_buf)
         .unwrap_or_else(|| report_dir.join("verification.json"));
-    crate::output::write_atomic(
-        &json_path,
-        &serde_json::to_vec_pretty(&report).expect("report serialises"),
-    )?;
+    crate::output::write_atomic(&json_path, &crate::output::json_bytes(&report))?;
     crate::output::write_atomic(
         &report_dir.join("verification.md"),
         report::markdown(&report).as_bytes(),

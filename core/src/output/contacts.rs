@@ -4,6 +4,7 @@
 //! contact point), with the forces as cell data, so ParaView's Tube filter scaled by
 //! `normal_force` draws the force chains.
 
+use super::Sci;
 use crate::contact::record::{ContactRecord, Partner};
 use crate::error::{Result, TampError};
 use crate::simulation::Simulation;
@@ -31,20 +32,20 @@ pub fn to_csv(sim: &Simulation, records: &[ContactRecord]) -> String {
         let (x, n, t) = (r.point, r.normal, r.tangential_force);
         let _ = writeln!(
             out,
-            "{},{},{j},{wall},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e}",
+            "{},{},{j},{wall},{},{},{},{},{},{},{},{},{},{},{}",
             sim.state.step,
             sim.state.particles.id[r.i],
-            x.x,
-            x.y,
-            x.z,
-            n.x,
-            n.y,
-            n.z,
-            r.normal_force,
-            t.x,
-            t.y,
-            t.z,
-            r.overlap
+            Sci(x.x),
+            Sci(x.y),
+            Sci(x.z),
+            Sci(n.x),
+            Sci(n.y),
+            Sci(n.z),
+            Sci(r.normal_force),
+            Sci(t.x),
+            Sci(t.y),
+            Sci(t.z),
+            Sci(r.overlap)
         );
     }
     out

@@ -13,6 +13,36 @@ use crate::error::{Result, TampError};
 use serde::Serialize;
 use std::path::Path;
 
+/// A number as the text outputs write it: `{:e}`, the shortest form that reads back to
+/// the same double, and a zero without a sign (−0 is rounding's, not the physics', and
+/// readers in other languages disagree on it).
+#[derive(Clone, Copy, Debug)]
+pub struct Sci(pub f64);
+
+impl std::fmt::Display for Sci {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        // x + 0 is x for every double but −0, which it turns into +0.
+        write!(f, "{:e}", self.0 + 0.0)
+    }
+}
+
+/// `value` as indented JSON, each zero without a sign (`Sci`).
+pub fn json_bytes<T: Serialize>(value: &T) -> Vec<u8> {
+    fn unsigned_zeros(v: &mut serde_json::Value) {
+        match v {
+            serde_json::Value::Number(n) if n.as_f64() == Some(0.0) && n.is_f64() => {
+                *n = serde_json::Number::from_f64(0.0).expect("finite");
+            }
+            serde_json::Value::Array(items) => items.iter_mut().for_each(unsigned_zeros),
+            serde_json::Value::Object(map) => map.values_mut().for_each(unsigned_zeros),
+            _ => {}
+        }
+    }
+    let mut v = serde_json::to_value(value).expect("outputs serialise");
+    unsigned_zeros(&mut v);
+    serde_json::to_vec_pretty(&v).expect("a JSON value serialises")
+}
+
 /// Write `bytes` to `path` through a temporary file in the same directory and a rename,
 /// so `path` holds either its old content or all of the new.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {

@@ -3,6 +3,7 @@
 //! `quantities.csv` (`quantity,value` rows) and `trajectory.csv` (one row per particle and
 //! recorded step, full precision).
 
+use super::Sci;
 use crate::particles::Vec3;
 use std::fmt::Write as _;
 
@@ -10,7 +11,7 @@ use std::fmt::Write as _;
 pub fn quantities_csv(quantities: &[(String, f64)]) -> String {
     let mut s = String::from("quantity,value\n");
     for (q, v) in quantities {
-        let _ = writeln!(s, "{q},{v:e}");
+        let _ = writeln!(s, "{q},{}", Sci(*v));
     }
     s
 }
@@ -25,7 +26,16 @@ pub const TRAJECTORY_FORCE_COLUMNS: &str = ",fx,fy,fz,tx,ty,tz";
 pub fn trajectory_row(out: &mut String, step: u64, id: u64, r: f64, x: &Vec3, v: &Vec3, w: &Vec3) {
     let _ = writeln!(
         out,
-        "{step},{id},{r:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e}",
-        x.x, x.y, x.z, v.x, v.y, v.z, w.x, w.y, w.z
+        "{step},{id},{},{},{},{},{},{},{},{},{},{}",
+        Sci(r),
+        Sci(x.x),
+        Sci(x.y),
+        Sci(x.z),
+        Sci(v.x),
+        Sci(v.y),
+        Sci(v.z),
+        Sci(w.x),
+        Sci(w.y),
+        Sci(w.z)
     );
 }

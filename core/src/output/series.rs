@@ -86,7 +86,7 @@ impl Series {
         let err = |e: csv::Error| TampError::Other(format!("writing series.csv: {e}"));
         w.write_record(&self.header).map_err(err)?;
         for row in &self.rows {
-            w.write_record(row.iter().map(|v| format!("{v:e}")))
+            w.write_record(row.iter().map(|v| super::Sci(*v).to_string()))
                 .map_err(err)?;
         }
         w.into_inner()

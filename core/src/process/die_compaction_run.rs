@@ -159,7 +159,7 @@ pub fn run_scene(
         press_steps: pressing.steps,
         last,
     };
-    let json = serde_json::to_vec_pretty(&summary).expect("summary serialises");
+    let json = crate::output::json_bytes(&summary);
     output::write_atomic(&out_dir.join("summary.json"), &json)?;
     output::write_atomic(
         &out_dir.join("quantities.csv"),
