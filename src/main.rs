@@ -479,6 +479,25 @@ fn run(
     quiet: bool,
     resume: bool,
 ) -> tamp::error::Result<u8> {
+    // Refused input leaves no output directory this run made: an empty directory
+    // could be taken for a run's result.
+    let fresh = !out.exists();
+    let result = run_document(scene_path, out, quiet, resume);
+    if fresh
+        && let Err(tamp::error::TampError::Input { .. } | tamp::error::TampError::InputMany(_)) =
+            &result
+    {
+        let _ = std::fs::remove_dir(out);
+    }
+    result
+}
+
+fn run_document(
+    scene_path: &std::path::Path,
+    out: &std::path::Path,
+    quiet: bool,
+    resume: bool,
+) -> tamp::error::Result<u8> {
     use tamp::document::Document;
     match tamp::document::load(scene_path)? {
         (Document::DieCompaction(file), sha) => {

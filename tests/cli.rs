@@ -566,3 +566,39 @@ fn readme_front_door_is_one_screen_and_names_existing_files() {
         );
     }
 }
+
+/// A lone particle stores no energy and feels no contact: the zeros its run writes
+/// have no sign (summary.json once said `"stored_energy": -0.0`).
+#[test]
+fn outputs_write_no_negative_zero() {
+    let mut scene = common::base();
+    scene["particles"] =
+        serde_json::json!([{"position": [0, 0, 0.5], "radius": 0.001, "material": "glass"}]);
+    scene["run"] = serde_json::json!({"steps": 10});
+    scene["output"] = serde_json::json!({"trajectory_every": 1});
+    let (_dir, path, out) = common::scene_in_tempdir(&scene);
+    let run = common::run(&path, &out, &[]);
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    for file in [
+        "summary.json",
+        "series.csv",
+        "quantities.csv",
+        "trajectory.csv",
+    ] {
+        let text = std::fs::read_to_string(out.join(file)).unwrap();
+        for (k, line) in text.lines().enumerate() {
+            for field in line.split([',', ' ', ':']) {
+                let field = field.trim();
+                assert!(
+                    !(field.starts_with("-0") && field.parse::<f64>() == Ok(0.0)),
+                    "{file} line {}: {line}",
+                    k + 1
+                );
+            }
+        }
+    }
+}

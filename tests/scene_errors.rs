@@ -7,21 +7,38 @@ fn base() -> Value {
     serde_json::from_str(include_str!("scenes/base.json")).unwrap()
 }
 
-/// Run `tamp run` on `text`; return (exit code, stderr).
+/// Run `tamp run --quiet` on `text`; return (exit code, stderr).
 fn run_text(text: &str) -> (i32, String) {
+    run_with(text, &["--quiet"])
+}
+
+/// `run_text` without `--quiet`: what the run says of how it chose its step.
+fn run_text_loud(text: &str) -> (i32, String) {
+    run_with(text, &[])
+}
+
+fn run_with(text: &str, extra: &[&str]) -> (i32, String) {
     let dir = tempfile::tempdir().unwrap();
     let scene = dir.path().join("scene.json");
     std::fs::write(&scene, text).unwrap();
+    let out_dir = dir.path().join("out");
     let out = Command::new(env!("CARGO_BIN_EXE_tamp"))
         .args([
             "run",
             scene.to_str().unwrap(),
             "--out",
-            dir.path().join("out").to_str().unwrap(),
-            "--quiet",
+            out_dir.to_str().unwrap(),
         ])
+        .args(extra)
         .output()
         .unwrap();
+    if out.status.code() == Some(2) {
+        assert!(
+            !out_dir.exists(),
+            "exit 2 left {} behind",
+            out_dir.display()
+        );
+    }
     (
         out.status.code().unwrap_or(-1),
         String::from_utf8_lossy(&out.stderr).to_string(),
@@ -256,7 +273,7 @@ fn hertz_accuracy_without_characteristic_velocity_states_its_step() {
     let mut s = base();
     s["time_step"] = json!({"accuracy": 1e-4});
     s["contact"].as_object_mut().unwrap().remove("damping");
-    let (code, stderr) = run_text(&s.to_string());
+    let (code, stderr) = run_text_loud(&s.to_string());
     assert_eq!(code, 0, "{stderr}");
     for said in [
         "accuracy 1e-4",
@@ -268,6 +285,17 @@ fn hertz_accuracy_without_characteristic_velocity_states_its_step() {
     }
 }
 
+/// `--quiet` keeps its promise: how the step was chosen is not printed.
+#[test]
+fn quiet_runs_print_nothing_on_stderr() {
+    let mut s = base();
+    s["time_step"] = json!({"accuracy": 1e-4});
+    s["contact"].as_object_mut().unwrap().remove("damping");
+    s["run"] = json!({"steps": 10});
+    let (code, stderr) = run_text(&s.to_string());
+    assert_eq!((code, stderr.as_str()), (0, ""));
+}
+
 /// The implied velocity names particles by their scene id (1-based, trajectory.csv's),
 /// not by their 0-based place in memory.
 #[test]
@@ -277,7 +305,7 @@ fn implied_velocity_names_particles_by_scene_id() {
     s.as_object_mut().unwrap().remove("gravity");
     s["particles"][1]["velocity"] = json!([0, 0, -1]);
     s["run"] = json!({"steps": 1});
-    let (code, stderr) = run_text(&s.to_string());
+    let (code, stderr) = run_text_loud(&s.to_string());
     assert_eq!(code, 0, "{stderr}");
     assert!(
         stderr.contains("the relative speed of particles 1 and 2"),
@@ -300,7 +328,7 @@ fn a_pressed_punch_implies_its_speed() {
                    "ramp_time": 0.01, "mass": 1e-3}
     }));
     s["run"] = json!({"steps": 1});
-    let (code, stderr) = run_text(&s.to_string());
+    let (code, stderr) = run_text_loud(&s.to_string());
     assert_eq!(code, 0, "{stderr}");
     assert!(
         stderr.contains("characteristic velocity 4.5000e-1 m/s: the mean speed at which punch 'punch' would close the bed's height 4.500e-3 m"),
@@ -485,10 +513,13 @@ fn walton_braun_unloading_must_be_stiffer() {
 fn tangential_parameters_must_match_the_law() {
     let mut s = base();
     s["contact"]["tangential"] = json!({"law": "coulomb", "friction": 0.3, "stiffness": 1e3});
-    expect_input_error(s, &["contact.tangential: unknown field `stiffness`"]);
+    expect_input_error(
+        s,
+        &["contact.tangential.stiffness: unknown field `stiffness`"],
+    );
     let mut s = base();
     s["contact"]["tangential"] = json!({"law": "haff_werner", "friction": 0.3});
-    expect_input_error(s, &["contact.tangential: missing field `damping`"]);
+    expect_input_error(s, &["contact.tangential.damping: missing field `damping`"]);
     let mut s = base();
     s["contact"]["tangential"] = json!({"law": "haff_werner", "friction": 0.3, "damping": -1});
     expect_input_error(s, &["contact.tangential.damping: must be > 0 and finite"]);
@@ -504,7 +535,10 @@ fn tangential_parameters_must_match_the_law() {
     );
     let mut s = base();
     s["contact"]["tangential"] = json!({"law": "lammps_linear_nohistory", "friction": 0.3, "stiffness": 1e3, "x_gamma_t": 1});
-    expect_input_error(s, &["contact.tangential: unknown field `stiffness`"]);
+    expect_input_error(
+        s,
+        &["contact.tangential.stiffness: unknown field `stiffness`"],
+    );
     let mut s = base();
     s["contact"]["tangential"] =
         json!({"law": "lammps_mindlin", "variant": "mindlin", "friction": 0.3, "x_gamma_t": -0.5});
@@ -624,7 +658,10 @@ fn liggghts_history_needs_liggghts_normal_law_damping_and_rotation() {
     s["contact"]["tangential"] =
         json!({"law": "liggghts_history", "friction": 0.3, "stiffness": 1e3});
     s["contact"]["damping"] = json!({"kind": "liggghts_restitution", "restitution": 0.5});
-    expect_input_error(s, &["contact.tangential: unknown field `stiffness`"]);
+    expect_input_error(
+        s,
+        &["contact.tangential.stiffness: unknown field `stiffness`"],
+    );
 }
 
 #[test]
@@ -984,4 +1021,106 @@ fn velocity_changes_need_a_step_each() {
             "a step of its own after step 1",
         ],
     );
+}
+
+/// `text` with the JSON number `number` at its first occurrence replaced by `literal`
+/// (Python's `json.dump` writes `NaN` and `Infinity` for non-finite floats).
+fn with_literal(scene: &Value, number: &str, literal: &str) -> String {
+    let text = serde_json::to_string_pretty(scene).unwrap();
+    assert!(text.contains(number), "{number} not in the scene");
+    text.replacen(number, literal, 1)
+}
+
+fn expect_text_error(text: &str, needles: &[&str]) {
+    let (code, stderr) = run_text(text);
+    assert_eq!(code, 2, "stderr: {stderr}");
+    for n in needles {
+        assert!(stderr.contains(n), "expected '{n}' in: {stderr}");
+    }
+}
+
+#[test]
+fn a_non_finite_literal_is_named_by_its_full_path_in_every_block() {
+    let mut s = base();
+    s["contact"]["damping"]["xi"] = json!(0.123456);
+    s["walls"][0]["shape"]["normal"] = json!([0, 0, 0.987654]);
+    s["run"]["duration"] = json!(0.345678);
+    s["time_step"]["alpha"] = json!(0.234567);
+    for (number, literal, path) in [
+        ("0.001", "NaN", "particles[0].radius: malformed JSON"),
+        ("2500", "Infinity", "materials[0].density: malformed JSON"),
+        ("0.234567", "NaN", "time_step.alpha: malformed JSON"),
+        ("0.123456", "NaN", "contact.damping.xi: malformed JSON"),
+        (
+            "0.987654",
+            "-Infinity",
+            "walls[0].shape.normal[2]: malformed JSON",
+        ),
+        ("0.345678", "NaN", "run.duration: malformed JSON"),
+    ] {
+        expect_text_error(&with_literal(&s, number, literal), &[path, "line"]);
+    }
+}
+
+#[test]
+fn a_value_inside_a_tagged_or_flattened_block_is_named_by_its_full_path() {
+    let mut s = base();
+    s["contact"]["tangential"]["law"] = json!("mindlin");
+    expect_input_error(s, &["contact.tangential.law: unknown variant `mindlin`"]);
+    let mut s = base();
+    s["contact"]["damping"]["xi"] = json!("high");
+    expect_input_error(
+        s,
+        &["contact.damping.xi: invalid type: string \"high\", expected f64"],
+    );
+    let mut s = base();
+    s["contact"]["tangential"]["stiffness"] = json!(true);
+    expect_input_error(s, &["contact.tangential.stiffness: invalid type: boolean"]);
+    let mut s = base();
+    s["walls"][0]["shape"]["point"] = json!([0, "x", 0]);
+    expect_input_error(s, &["walls[0].shape.point[1]: invalid type: string \"x\""]);
+    let mut s = base();
+    s["contact"]["damping"]
+        .as_object_mut()
+        .unwrap()
+        .remove("xi");
+    expect_input_error(s, &["contact.damping.xi: missing field `xi`"]);
+    let mut s = base();
+    s["insert"] = json!([{"count": 2, "material": "glass", "radius": {"min": "small", "max": 1e-3},
+                          "region": {"lower": [0, 0, 0], "upper": [0.01, 0.01, 0.01]}}]);
+    expect_input_error(s, &["insert[0].radius.min: invalid type: string \"small\""]);
+}
+
+#[test]
+fn runs_too_long_to_finish_are_refused_naming_what_set_their_length() {
+    let mut s = base();
+    s["run"] = json!({"duration": 1e308});
+    expect_input_error(s, &["run.duration: 1e308 s at a step of", "more than 2^53"]);
+    let mut s = base();
+    s["run"] = json!({"steps": 1_000_000_000_000_000_000u64});
+    expect_input_error(s, &["run.steps: the run is 1e18 steps, more than 2^53"]);
+    let mut s = base();
+    s["time_step"] = json!({"fixed": 5e-324});
+    expect_input_error(s, &["run.duration:", "(time_step.fixed)", "more than 2^53"]);
+    // 1e15 steps of two particles: about 1.4e8 s predicted, beyond 30 days.
+    let mut s = base();
+    s["run"] = json!({"steps": 1_000_000_000_000_000u64});
+    expect_input_error(
+        s,
+        &[
+            "run.steps: the run is 1e15 steps of 2 particles, predicted to take",
+            "run.max_wall_time = 2.592e6 s",
+        ],
+    );
+}
+
+#[test]
+fn a_user_who_means_a_long_run_raises_its_wall_time_limit() {
+    let mut s = base();
+    s["run"] = json!({"steps": 1_000_000_000_000_000u64, "max_wall_time": 1e9});
+    let text = s.to_string();
+    let scene = tamp::scene::parse(&text).unwrap();
+    assert!(tamp::scene::build(&scene).is_ok());
+    s["run"]["max_wall_time"] = json!(-1);
+    expect_input_error(s, &["run.max_wall_time: must be > 0"]);
 }

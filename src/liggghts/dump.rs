@@ -167,7 +167,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Vec<Frame>> {
         let frc = [col("fx"), col("fy"), col("fz")];
         frame.has_force = frc.iter().all(Option::is_some);
         let cm = col("mass");
-        let mut rows: Vec<Atom> = Vec::with_capacity(n);
+        let mut rows: Vec<Atom> = Vec::with_capacity(n.min(lines.len()));
         for r in 0..n {
             let at = k + 9 + r;
             let line = lines

@@ -83,7 +83,10 @@ fn at(rec: &Recording, step: u64) -> Result<&Frame> {
 
 /// The largest divisor of `n` up to 1000: frames that far apart include step `n`.
 fn sparse_every(n: u64) -> u64 {
-    (1..=1000.min(n)).rev().find(|k| n.is_multiple_of(*k)).unwrap_or(1)
+    (1..=1000.min(n))
+        .rev()
+        .find(|k| n.is_multiple_of(*k))
+        .unwrap_or(1)
 }
 
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
