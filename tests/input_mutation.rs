@@ -271,16 +271,7 @@ fn tamp_run_refuses_mutated_scenes_without_leaving_an_output_directory() {
         let dir = tempfile::tempdir().unwrap();
         let (scene, out) = (dir.path().join("scene.json"), dir.path().join("out"));
         std::fs::write(&scene, &mutated).unwrap();
-        let run = common::tamp()
-            .args([
-                "run",
-                scene.to_str().unwrap(),
-                "--out",
-                out.to_str().unwrap(),
-                "--quiet",
-            ])
-            .output()
-            .unwrap();
+        let run = common::run(&scene, &out, &[]);
         let stderr = String::from_utf8_lossy(&run.stderr);
         match run.status.code() {
             Some(2) => {

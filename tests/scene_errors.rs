@@ -983,14 +983,16 @@ fn velocity_changes_need_a_prescribed_particle() {
     );
 }
 
+/// The base scene with its first particle prescribed at rest.
+fn prescribed_base() -> Value {
+    let mut s = base();
+    s["particles"][0]["prescribed_velocity"] = json!([0, 0, 0]);
+    s
+}
+
 #[test]
 fn velocity_changes_come_in_time_order() {
-    let mut s = base();
-    s["particles"][0]
-        .as_object_mut()
-        .unwrap()
-        .remove("velocity");
-    s["particles"][0]["prescribed_velocity"] = json!([0, 0, 0]);
+    let mut s = prescribed_base();
     s["particles"][0]["prescribed_velocity_changes"] = json!([
         {"time": 2e-6, "velocity": [0, 0, 0]},
         {"time": 1e-6, "velocity": [0, 0, 0]}
@@ -1003,12 +1005,7 @@ fn velocity_changes_come_in_time_order() {
 
 #[test]
 fn velocity_changes_need_a_step_each() {
-    let mut s = base();
-    s["particles"][0]
-        .as_object_mut()
-        .unwrap()
-        .remove("velocity");
-    s["particles"][0]["prescribed_velocity"] = json!([0, 0, 0]);
+    let mut s = prescribed_base();
     s["time_step"] = json!({"fixed": 1e-6});
     s["particles"][0]["prescribed_velocity_changes"] = json!([
         {"time": 1e-6, "velocity": [0, 0, 0]},

@@ -144,7 +144,7 @@ fn check_length(scene: &Scene, sim: &Simulation, dt: f64, steps: f64) -> Result<
     let step_source = if scene.time_step.fixed.is_some() {
         "time_step.fixed"
     } else {
-        "the time step tamp chose (time_step)"
+        "chosen from time_step"
     };
     let (path, said) = match scene.run.duration {
         Some(d) if scene.run.steps.is_none() => (
