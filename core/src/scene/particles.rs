@@ -220,7 +220,7 @@ fn validate_velocity_changes(p: &ParticleSpec, path: &str, e: &mut Errors) {
 }
 
 /// The step from which each `prescribed_velocity_changes` entry applies, the step
-/// nearest its time at step `dt`, as (step, particles[k] index, velocity); exit 2
+/// nearest its time at step `dt`, as (step, index k of `particles[k]`, velocity); exit 2
 /// naming the entry when one falls on step 0 or on the step of the change before it.
 pub fn velocity_change_steps(scene: &Scene, dt: f64) -> Result<Vec<(u64, usize, Vec3)>> {
     let mut steps = Vec::new();
