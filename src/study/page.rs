@@ -200,14 +200,10 @@ fn case_section(page: &mut String, img_dir: &Path, case: &str, rows: &[Row]) -> 
         alpha: r.first().alpha,
         gain: s.first().wall_s / r.first().wall_s,
     });
-    let commit = step_runs
-        .first()
-        .map(|r| r.first().commit.as_str())
-        .filter(|c| !c.is_empty())
-        .unwrap_or("unrecorded");
+    // The commit that ran the sweep is provenance of the data: it stays in the CSV.
     let _ = writeln!(
         page,
-        "\nObserved order (most step-sensitive quantity): {order}. Run by commit {commit}.\n"
+        "\nObserved order (most step-sensitive quantity): {order}. Rerun with `tamp study accuracy-cost --case {case} --out docs`.\n"
     );
     let line = match (rec, setting, &recommended) {
         _ if step_runs.len() < 2 => {
@@ -407,9 +403,8 @@ pub fn write(out: &Path) -> Result<()> {
     let mut page = String::from(INTRO);
     let _ = writeln!(
         page,
-        "\nWritten by tamp {} (commit {}).\n",
-        crate::VERSION,
-        crate::GIT_COMMIT
+        "\nWritten by tamp {}; the commit that ran each sweep is in its CSV under docs/accuracy-cost/.\n",
+        crate::VERSION
     );
     if !calibration.is_empty() {
         page.push_str(&super::accuracy_calibration::section(&calibration));
