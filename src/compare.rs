@@ -201,82 +201,184 @@ fn read_quantities(path: &Path) -> Result<BTreeMap<String, f64>> {
 /// read as untrusted: a missing required column, a value that is not a finite number
 /// and a (step, id) given twice are each refused naming the row and the column.
 pub fn read_trajectory(path: &Path) -> Result<BTreeMap<(u64, u64), State>> {
-    let mut reader = csv_reader(path)?;
-    let headers = reader
-        .headers()
-        .map_err(|e| input_err(path, e.to_string()))?
-        .clone();
-    let col = |n: &str| headers.iter().position(|h| h == n);
-    let need = |n: &str| {
-        col(n).ok_or_else(|| input_err(path, format!("a trajectory file needs the column '{n}'")))
-    };
-    let (cs, ci, cr) = (need("step")?, need("id")?, need("radius")?);
-    let cx = [need("x")?, need("y")?, need("z")?];
-    let cv = [col("vx"), col("vy"), col("vz")];
-    let cw = [col("omegax"), col("omegay"), col("omegaz")];
-    let cf = [col("fx"), col("fy"), col("fz")];
+    let mut table = Table::open(path, "a trajectory file")?;
+    let (cs, ci, cr) = (
+        table.need("step")?,
+        table.need("id")?,
+        table.need("radius")?,
+    );
+    let cx = [table.need("x")?, table.need("y")?, table.need("z")?];
+    let [cv, cw, cf] = [
+        ["vx", "vy", "vz"],
+        ["omegax", "omegay", "omegaz"],
+        ["fx", "fy", "fz"],
+    ]
+    .map(|names| names.map(|n| table.col(n)));
     let mut out = BTreeMap::new();
-    for (k, rec) in reader.records().enumerate() {
-        let row = k + 2;
-        let rec = rec.map_err(|e| input_err(path, format!("row {row}: {e}")))?;
-        let cell = |c: usize| -> Result<&str> {
-            rec.get(c).ok_or_else(|| {
-                input_err(
-                    path,
-                    format!("row {row}: no value in column '{}'", &headers[c]),
-                )
-            })
-        };
-        let num = |c: usize| -> Result<f64> {
-            let text = cell(c)?;
-            match text.parse::<f64>() {
-                Ok(v) if v.is_finite() => Ok(v),
-                _ => Err(input_err(
-                    path,
-                    format!(
-                        "row {row}, column '{}': '{text}' is not a finite number",
-                        &headers[c]
-                    ),
-                )),
-            }
-        };
-        let int = |c: usize| -> Result<u64> {
-            let text = cell(c)?;
-            text.parse().map_err(|_| {
-                input_err(
-                    path,
-                    format!(
-                        "row {row}, column '{}': '{text}' is not a non-negative integer",
-                        &headers[c]
-                    ),
-                )
-            })
-        };
-        let vec = |cs: [Option<usize>; 3]| -> Result<Option<Vec3>> {
-            match cs {
-                [Some(a), Some(b), Some(c)] => Ok(Some(Vec3::new(num(a)?, num(b)?, num(c)?))),
-                _ => Ok(None),
-            }
-        };
-        let key = (int(cs)?, int(ci)?);
+    table.rows(|row| {
+        let key = (row.int(cs)?, row.int(ci)?);
         let state = State {
-            radius: num(cr)?,
-            position: Vec3::new(num(cx[0])?, num(cx[1])?, num(cx[2])?),
-            velocity: vec(cv)?,
-            omega: vec(cw)?,
-            force: vec(cf)?,
+            radius: row.num(cr)?,
+            position: row.vec(cx)?,
+            velocity: row.optional_vec(cv)?,
+            omega: row.optional_vec(cw)?,
+            force: row.optional_vec(cf)?,
         };
-        if out.insert(key, state).is_some() {
-            return Err(input_err(
-                path,
+        match out.insert(key, state) {
+            None => Ok(()),
+            Some(_) => Err(row.error(format!(
+                "step {} and id {} were given before (one row per particle and step)",
+                key.0, key.1
+            ))),
+        }
+    })?;
+    Ok(out)
+}
+
+/// One wall at one step of walls.csv: its displacement from where the scene puts it
+/// and the force the particles exert on it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WallRow {
+    pub displacement: Vec3,
+    pub force: Vec3,
+}
+
+/// The rows of a walls.csv (`step,wall,dx,dy,dz,fx,fy,fz`), keyed by (step, wall), read
+/// as untrusted like a trajectory.
+pub fn read_walls(path: &Path) -> Result<BTreeMap<(u64, u64), WallRow>> {
+    let mut table = Table::open(path, "a walls file")?;
+    let (cs, cw) = (table.need("step")?, table.need("wall")?);
+    let cd = [table.need("dx")?, table.need("dy")?, table.need("dz")?];
+    let cf = [table.need("fx")?, table.need("fy")?, table.need("fz")?];
+    let mut out = BTreeMap::new();
+    table.rows(|row| {
+        let key = (row.int(cs)?, row.int(cw)?);
+        let wall = WallRow {
+            displacement: row.vec(cd)?,
+            force: row.vec(cf)?,
+        };
+        match out.insert(key, wall) {
+            None => Ok(()),
+            Some(_) => Err(row.error(format!(
+                "step {} and wall {} were given before (one row per wall and step)",
+                key.0, key.1
+            ))),
+        }
+    })?;
+    Ok(out)
+}
+
+/// A CSV file read by column name, every cell checked: a missing column, a value that
+/// is not a finite number or not a non-negative integer is refused naming the row and
+/// the column.
+struct Table<'p> {
+    path: &'p Path,
+    what: &'static str,
+    reader: csv::Reader<std::fs::File>,
+    headers: csv::StringRecord,
+}
+
+/// One row of a `Table`: its line number and its cells.
+struct TableRow<'t> {
+    path: &'t Path,
+    headers: &'t csv::StringRecord,
+    row: usize,
+    record: csv::StringRecord,
+}
+
+impl<'p> Table<'p> {
+    fn open(path: &'p Path, what: &'static str) -> Result<Self> {
+        let mut reader = csv_reader(path)?;
+        let headers = reader
+            .headers()
+            .map_err(|e| input_err(path, e.to_string()))?
+            .clone();
+        Ok(Table {
+            path,
+            what,
+            reader,
+            headers,
+        })
+    }
+
+    fn col(&self, name: &str) -> Option<usize> {
+        self.headers.iter().position(|h| h == name)
+    }
+
+    fn need(&self, name: &str) -> Result<usize> {
+        self.col(name).ok_or_else(|| {
+            input_err(
+                self.path,
+                format!("{} needs the column '{name}'", self.what),
+            )
+        })
+    }
+
+    /// Call `each` on every row, stopping at the first error.
+    fn rows(&mut self, mut each: impl FnMut(&TableRow) -> Result<()>) -> Result<()> {
+        for (k, record) in self.reader.records().enumerate() {
+            let row = k + 2;
+            let record = record.map_err(|e| input_err(self.path, format!("row {row}: {e}")))?;
+            each(&TableRow {
+                path: self.path,
+                headers: &self.headers,
+                row,
+                record,
+            })?;
+        }
+        Ok(())
+    }
+}
+
+impl TableRow<'_> {
+    fn error(&self, rule: String) -> TampError {
+        input_err(self.path, format!("row {}: {rule}", self.row))
+    }
+
+    fn cell(&self, c: usize) -> Result<&str> {
+        self.record
+            .get(c)
+            .ok_or_else(|| self.error(format!("no value in column '{}'", &self.headers[c])))
+    }
+
+    fn num(&self, c: usize) -> Result<f64> {
+        let text = self.cell(c)?;
+        match text.parse::<f64>() {
+            Ok(v) if v.is_finite() => Ok(v),
+            _ => Err(input_err(
+                self.path,
                 format!(
-                    "row {row}: step {} and id {} were given before (one row per particle and step)",
-                    key.0, key.1
+                    "row {}, column '{}': '{text}' is not a finite number",
+                    self.row, &self.headers[c]
                 ),
-            ));
+            )),
         }
     }
-    Ok(out)
+
+    fn int(&self, c: usize) -> Result<u64> {
+        let text = self.cell(c)?;
+        text.parse().map_err(|_| {
+            input_err(
+                self.path,
+                format!(
+                    "row {}, column '{}': '{text}' is not a non-negative integer",
+                    self.row, &self.headers[c]
+                ),
+            )
+        })
+    }
+
+    fn vec(&self, c: [usize; 3]) -> Result<Vec3> {
+        Ok(Vec3::new(self.num(c[0])?, self.num(c[1])?, self.num(c[2])?))
+    }
+
+    /// A vector whose three columns are all present, else none.
+    fn optional_vec(&self, c: [Option<usize>; 3]) -> Result<Option<Vec3>> {
+        match c {
+            [Some(a), Some(b), Some(c)] => self.vec([a, b, c]).map(Some),
+            _ => Ok(None),
+        }
+    }
 }
 
 /// The frames of a LIGGGHTS or LAMMPS dump, keyed by (step, id).
@@ -576,6 +678,37 @@ pub fn run_cli(a: &Path, b: &Path, tolerances: Option<&Path>) -> Result<u8> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_walls_file_is_read_as_untrusted_input() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("walls.csv");
+        let read = |text: &str| {
+            std::fs::write(&path, text).unwrap();
+            read_walls(&path).map_err(|e| e.to_string())
+        };
+        let rows = read("step,wall,dx,dy,dz,fx,fy,fz\n0,1,0,0,-1e-6,0,0,2.5\n").unwrap();
+        assert_eq!(rows[&(0, 1)].displacement.z, -1e-6);
+        assert_eq!(rows[&(0, 1)].force.z, 2.5);
+        for (text, expected) in [
+            ("step,wall,dx,dy,dz,fx,fy\n", "needs the column 'fz'"),
+            (
+                "step,wall,dx,dy,dz,fx,fy,fz\n0,1,0,0,0,0,0,inf\n",
+                "row 2, column 'fz': 'inf'",
+            ),
+            (
+                "step,wall,dx,dy,dz,fx,fy,fz\n0,-1,0,0,0,0,0,0\n",
+                "column 'wall': '-1'",
+            ),
+            (
+                "step,wall,dx,dy,dz,fx,fy,fz\n0,1,0,0,0,0,0,0\n0,1,0,0,0,0,0,0\n",
+                "row 3: step 0 and wall 1 were given before",
+            ),
+        ] {
+            let e = read(text).unwrap_err();
+            assert!(e.contains(expected), "{text:?}: {e}");
+        }
+    }
 
     fn run_with(x: f64) -> Run {
         let mut r = Run::default();

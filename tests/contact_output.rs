@@ -211,3 +211,74 @@ fn contact_forces_add_up_to_the_force_and_torque_columns() {
         "walls {walls}, |F_t| {largest_t:e}"
     );
 }
+
+/// `output.walls`: at every step of trajectory.csv, walls.csv gives each wall's
+/// displacement (the lid's, a known function of time) and the force the particles
+/// exert on it. Pair forces cancel, so by Newton's third law the walls' forces add up to
+/// minus the particles' total force less their weight, to round-off.
+#[test]
+fn wall_forces_balance_the_particles_forces_at_every_recorded_step() {
+    let mut s = common::base();
+    s["walls"].as_array_mut().unwrap().push(json!({
+        "name": "lid", "material": "glass",
+        "shape": {"kind": "plane", "point": [0, 0, 0.0062], "normal": [0, 0, -1]},
+        "motion": {"kind": "velocity", "velocity": [0, 0, -0.01]}
+    }));
+    s["run"] = json!({"duration": 0.05});
+    s["output"] = json!({"forces": true, "trajectory_every": 500, "walls": true});
+    let (_dir, scene, out) = common::scene_in_tempdir(&s);
+    let o = common::run(&scene, &out, &[]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let summary: Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let dt = summary["provenance"]["dt"].as_f64().unwrap();
+    let trajectory = csv(&out.join("trajectory.csv"));
+    let walls = csv(&out.join("walls.csv"));
+    let steps: std::collections::BTreeSet<u64> = trajectory
+        .iter()
+        .map(|r| r["step"].parse().unwrap())
+        .collect();
+    assert_eq!(
+        walls.len(),
+        2 * steps.len(),
+        "a row per wall and recorded step"
+    );
+    let glass = 2500.0 * 4.0 / 3.0 * std::f64::consts::PI * 1e-9;
+    let mut touched = 0;
+    for &step in &steps {
+        let at = |rows: &[BTreeMap<String, String>]| -> Vec<BTreeMap<String, String>> {
+            rows.iter()
+                .filter(|r| r["step"] == step.to_string())
+                .cloned()
+                .collect()
+        };
+        let (bodies, walls_now) = (at(&trajectory), at(&walls));
+        let mut net = [0.0; 3];
+        for b in &bodies {
+            let f = vec3(b, ["fx", "fy", "fz"]);
+            net = [net[0] + f[0], net[1] + f[1], net[2] + f[2] + 9.81 * glass];
+        }
+        let mut on_walls = [0.0; 3];
+        for (k, w) in walls_now.iter().enumerate() {
+            assert_eq!(w["wall"], (k + 1).to_string());
+            let f = vec3(w, ["fx", "fy", "fz"]);
+            on_walls = [on_walls[0] + f[0], on_walls[1] + f[1], on_walls[2] + f[2]];
+        }
+        let scale = 9.81 * glass;
+        for a in 0..3 {
+            assert!(
+                (net[a] + on_walls[a]).abs() <= 1e-9 * scale,
+                "step {step}, axis {a}: particles {net:?}, walls {on_walls:?}"
+            );
+        }
+        touched += usize::from(on_walls[2].abs() > 0.1 * scale);
+        let lid = vec3(&walls_now[1], ["dx", "dy", "dz"]);
+        assert_eq!(lid[..2], [0.0, 0.0]);
+        let expected = -0.01 * step as f64 * dt;
+        assert!(
+            (lid[2] - expected).abs() <= 1e-12 * expected.abs().max(1e-12),
+            "step {step}: {lid:?}"
+        );
+    }
+    assert!(touched >= 2, "the check needs steps with the floor loaded");
+}

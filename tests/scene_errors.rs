@@ -811,6 +811,17 @@ fn every_step_rows_need_a_trajectory() {
     );
 }
 
+/// walls.csv is written at the steps of trajectory.csv, of the scene's walls.
+#[test]
+fn wall_rows_need_a_trajectory_and_walls() {
+    let mut s = base();
+    s["output"] = json!({"walls": true});
+    expect_input_error(s.clone(), &["output.walls", "output.trajectory_every >= 1"]);
+    s["output"] = json!({"walls": true, "trajectory_every": 10});
+    s["walls"] = json!([]);
+    expect_input_error(s, &["output.walls", "no walls to record"]);
+}
+
 /// A rigid wall material: no density or elastic constants (a value given would never
 /// be used, so it is refused), and never a particle's material.
 #[test]

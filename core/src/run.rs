@@ -28,6 +28,9 @@ struct RunState<'a> {
     sim: Cow<'a, State>,
     series_rows: Cow<'a, [Vec<f64>]>,
     trajectory: Cow<'a, str>,
+    /// walls.csv so far (empty without `output.walls`).
+    #[serde(default, skip_serializing_if = "str::is_empty")]
+    walls: Cow<'a, str>,
     vtk_frames: usize,
     /// `run.until`'s unbroken stretch below its thresholds (absent without `until`,
     /// so the checkpoints of other scenes are unchanged).
@@ -61,6 +64,19 @@ fn record_trajectory(sim: &Simulation, out: &mut String, forces: bool) {
     }
 }
 
+/// Append one walls.csv row per wall at the current step.
+fn record_walls(sim: &Simulation, out: &mut String) {
+    for (k, (pose, force)) in sim
+        .state
+        .walls
+        .iter()
+        .zip(&sim.state.wall_force)
+        .enumerate()
+    {
+        crate::output::run_files::walls_row(out, sim.state.step, k + 1, &pose.displacement, force);
+    }
+}
+
 fn write_frame(vtk_dir: &Path, index: usize, sim: &Simulation, forces: bool) -> Result<()> {
     let path = vtk_dir.join(format!("frame_{index:06}.vtk"));
     output::write_atomic(&path, output::vtk::to_ascii(sim, forces)?.as_bytes())
@@ -87,6 +103,7 @@ const OUTPUTS: &[&str] = &[
     "series.csv",
     "quantities.csv",
     "trajectory.csv",
+    "walls.csv",
     CHECKPOINT,
 ];
 const CHECKPOINT: &str = "checkpoint.json";
@@ -162,6 +179,8 @@ pub fn run_scene(
     let checkpoint_path = out_dir.join(CHECKPOINT);
     let mut series = Series::new(&scene.output.series, &sim);
     let mut trajectory = String::new();
+    let record_wall_rows = scene.output.walls;
+    let mut walls = String::new();
     let mut frames = 0usize;
     let mut until = scene.run.until.clone().map(Until::new);
     if resume && checkpoint_path.exists() {
@@ -178,6 +197,7 @@ pub fn run_scene(
         sim.resume(state.sim.into_owned())?;
         series.rows = state.series_rows.into_owned();
         trajectory = state.trajectory.into_owned();
+        walls = state.walls.into_owned();
         frames = state.vtk_frames;
         if let Some(u) = &mut until {
             u.held_since = state.settled_since;
@@ -203,6 +223,11 @@ pub fn run_scene(
             }
             trajectory.push('\n');
             record_trajectory(&sim, &mut trajectory, forces);
+        }
+        if record_wall_rows {
+            walls.push_str(crate::output::run_files::WALLS_HEADER);
+            walls.push('\n');
+            record_walls(&sim, &mut walls);
         }
         if vtk_every > 0 {
             // Frames of an earlier run must not mix with this one's. A resumed run
@@ -237,6 +262,9 @@ pub fn run_scene(
         let dense = dense_from.is_some_and(|from| sim.state.step >= from);
         if trajectory_every > 0 && (sim.state.step % trajectory_every == 0 || last || dense) {
             record_trajectory(&sim, &mut trajectory, forces);
+            if record_wall_rows {
+                record_walls(&sim, &mut walls);
+            }
         }
         if vtk_every > 0 && sim.state.step % vtk_every == 0 {
             write_frame(&vtk_dir, frames, &sim, forces)?;
@@ -248,6 +276,7 @@ pub fn run_scene(
                 sim: Cow::Borrowed(&sim.state),
                 series_rows: Cow::Borrowed(&series.rows),
                 trajectory: Cow::Borrowed(&trajectory),
+                walls: Cow::Borrowed(&walls),
                 vtk_frames: frames,
                 settled_since: until.as_ref().and_then(|u| u.held_since),
             };
@@ -329,6 +358,9 @@ pub fn run_scene(
     )?;
     if trajectory_every > 0 {
         output::write_atomic(&out_dir.join("trajectory.csv"), trajectory.as_bytes())?;
+    }
+    if record_wall_rows {
+        output::write_atomic(&out_dir.join("walls.csv"), walls.as_bytes())?;
     }
     Ok(summary)
 }

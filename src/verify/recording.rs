@@ -20,6 +20,8 @@ pub struct RecordSpec {
     pub forces: bool,
     /// From this step to the last, every step is recorded too.
     pub every_step_from: Option<u64>,
+    /// Whether each frame holds the walls' displacements and forces (walls.csv).
+    pub walls: bool,
 }
 
 impl RecordSpec {
@@ -28,6 +30,7 @@ impl RecordSpec {
         trajectory_every: 1,
         forces: false,
         every_step_from: None,
+        walls: false,
     };
 
     /// Every `k` steps (and the last).
@@ -36,6 +39,15 @@ impl RecordSpec {
             trajectory_every: k,
             forces,
             every_step_from: None,
+            walls: false,
+        }
+    }
+
+    /// The same frames, each with the walls' displacements and forces.
+    pub fn with_walls(self) -> RecordSpec {
+        RecordSpec {
+            walls: true,
+            ..self
         }
     }
 
@@ -46,6 +58,7 @@ impl RecordSpec {
             trajectory_every: k,
             forces,
             every_step_from: Some(from),
+            walls: false,
         }
     }
 
@@ -75,13 +88,18 @@ pub struct Body {
     pub force: Option<Vec3>,
 }
 
-/// The particles after one step, in the order of the resolved scene (id = index + 1).
+/// One wall in one frame.
+pub type WallState = crate::compare::WallRow;
+
+/// The particles after one step, in the order of the resolved scene (id = index + 1),
+/// and the walls in the scene's order when the case asked for them.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Frame {
     pub step: u64,
     /// Simulated time, s: the engine's own clock in-process, step · Δt from files.
     pub time: f64,
     pub bodies: Vec<Body>,
+    pub walls: Vec<WallState>,
 }
 
 /// The frames of one run, by increasing step.
@@ -168,9 +186,41 @@ impl Recording {
                 step,
                 time: step as f64 * dt,
                 bodies,
+                walls: Vec::new(),
             });
         }
         Ok(Recording { dt, frames })
+    }
+
+    /// Give each frame its walls from the rows of `file` keyed by (step, wall): every
+    /// frame needs a row for each of the walls 1..=`walls`, and no row may name another
+    /// step or wall. Steps between frames are allowed and left out.
+    pub fn attach_walls(
+        &mut self,
+        file: &str,
+        rows: &BTreeMap<(u64, u64), WallState>,
+        walls: usize,
+    ) -> Result<()> {
+        let bad = |rule: String| TampError::input(file.to_string(), rule);
+        let n = walls as u64;
+        if let Some((step, wall)) = rows.keys().find(|(_, w)| *w == 0 || *w > n) {
+            return Err(bad(format!(
+                "step {step} has wall {wall}, and the scene has walls 1 to {walls}"
+            )));
+        }
+        for frame in &mut self.frames {
+            frame.walls = (1..=n)
+                .map(|wall| {
+                    rows.get(&(frame.step, wall)).copied().ok_or_else(|| {
+                        bad(format!(
+                            "has no row for step {} and wall {wall} (a row for each wall 1 to {walls} at every step of trajectory.csv)",
+                            frame.step
+                        ))
+                    })
+                })
+                .collect::<Result<_>>()?;
+        }
+        Ok(())
     }
 }
 
@@ -227,6 +277,33 @@ mod tests {
         rows.insert((1, 3), state(9.0));
         let stranger = Recording::from_rows("t.csv", &rows, 2, 0.5, 2, spec).unwrap_err();
         assert!(stranger.to_string().contains("particle id 3"), "{stranger}");
+    }
+
+    #[test]
+    fn every_frame_needs_every_wall_and_no_other() {
+        let rows: BTreeMap<_, _> = [((0, 1), state(0.0)), ((2, 1), state(0.0))]
+            .into_iter()
+            .collect();
+        let spec = RecordSpec::every(2, false).with_walls();
+        let mut rec = Recording::from_rows("t.csv", &rows, 1, 1.0, 2, spec).unwrap();
+        let wall = WallState {
+            displacement: Vec3::new(0.0, 0.0, -1.0),
+            force: Vec3::new(0.0, 0.0, 2.0),
+        };
+        let mut walls: BTreeMap<_, _> = [((0, 1), wall), ((1, 1), wall), ((2, 1), wall)]
+            .into_iter()
+            .collect();
+        rec.attach_walls("w.csv", &walls, 1).unwrap();
+        assert_eq!(rec.frames[1].walls, [wall]);
+        let e = rec.attach_walls("w.csv", &walls, 2).unwrap_err();
+        assert!(
+            e.to_string()
+                .contains("w.csv: has no row for step 0 and wall 2"),
+            "{e}"
+        );
+        walls.insert((2, 3), wall);
+        let e = rec.attach_walls("w.csv", &walls, 2).unwrap_err();
+        assert!(e.to_string().contains("step 2 has wall 3"), "{e}");
     }
 
     #[test]

@@ -22,6 +22,26 @@ pub const TRAJECTORY_HEADER: &str = "step,id,radius,x,y,z,vx,vy,vz,omegax,omegay
 /// gravity) and torque at that step. `tamp compare` reads columns by name and ignores them.
 pub const TRAJECTORY_FORCE_COLUMNS: &str = ",fx,fy,fz,tx,ty,tz";
 
+/// Header of `walls.csv`: per recorded step and wall (`wall` = k + 1 for the scene's
+/// `walls[k]`), its displacement from where the scene puts it and the force the
+/// particles exert on it.
+pub const WALLS_HEADER: &str = "step,wall,dx,dy,dz,fx,fy,fz";
+
+/// One `walls.csv` row; full precision.
+pub fn walls_row(out: &mut String, step: u64, wall: usize, displacement: &Vec3, force: &Vec3) {
+    let (d, f) = (displacement, force);
+    let _ = writeln!(
+        out,
+        "{step},{wall},{},{},{},{},{},{}",
+        Sci(d.x),
+        Sci(d.y),
+        Sci(d.z),
+        Sci(f.x),
+        Sci(f.y),
+        Sci(f.z)
+    );
+}
+
 /// One `trajectory.csv` row; full precision (Rust's shortest round-trip form).
 pub fn trajectory_row(out: &mut String, step: u64, id: u64, r: f64, x: &Vec3, v: &Vec3, w: &Vec3) {
     let _ = writeln!(

@@ -27,7 +27,8 @@
 //!    with `die_curvature` (flat by default, as in the fill and flatten; `mean` for
 //!    LAMMPS's cylinder wall, `boundary::Boundary::effective_radius`). The time step is
 //!    re-estimated every `dt_every` steps from the contacts as they stiffen (Rojek
-//!    §3.4: α times the critical step). At `records` equal pressure increments the
+//!    §3.4: α times the critical step), or fixed by `time_step` (every record on a
+//!    step), as a run an engine records needs. At `records` equal pressure increments the
 //!    height H (the punch face), ΔH/H₀, both densities (the RVE centred at H/2) and
 //!    the forces on punch, floor and die wall are recorded.
 
@@ -597,7 +598,7 @@ pub fn press_scene(file: &DieCompactionFile, specimen: &Specimen) -> Result<Scen
     if let ShapeSpec::Cylinder { curvature, .. } = &mut die.shape {
         *curvature = dc.die_curvature;
     }
-    stage_scene(
+    let mut stage = stage_scene(
         scene,
         "press",
         &scene.contact,
@@ -605,7 +606,13 @@ pub fn press_scene(file: &DieCompactionFile, specimen: &Specimen) -> Result<Scen
         vec![die, floor_wall(dc), punch_wall(dc, specimen.h0, motion)],
         gravity(scene)?,
         dc.press.ramp_time,
-    )
+    )?;
+    if let Some((dt, per_record)) = dc.press.fixed_step() {
+        stage.time_step.fixed = Some(dt);
+        stage.run.duration = None;
+        stage.run.steps = Some(per_record * dc.press.records as u64);
+    }
+    Ok(stage)
 }
 
 /// Stop after a whole step of a stage that is not checkpointed when a signal came.
@@ -640,7 +647,7 @@ pub fn press(
     let area = PI * (0.5 * dc.die_diameter).powi(2);
     let die_radius = 0.5 * dc.die_diameter;
     let alpha = scene.time_step.alpha();
-    let fixed = scene.time_step.fixed;
+    let fixed = stage.time_step.fixed;
     let ramp = dc.press.ramp_time;
     let records = dc.press.records;
     let record = |sim: &Simulation, out: &mut Pressing| -> Result<()> {

@@ -353,6 +353,24 @@ pub struct PressSpec {
     /// Steps between re-estimates of the time step as contacts stiffen (Rojek §3.4).
     #[serde(default = "default_dt_every")]
     pub dt_every: u64,
+    /// A fixed step for the press instead of the re-estimated one, s, shortened to the
+    /// nearest step that divides the record interval `ramp_time / records`, so that
+    /// every record falls on a step: a run an engine records has one step and a step
+    /// count fixed in advance (docs/engines.md).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub time_step: Option<f64>,
+}
+
+impl PressSpec {
+    /// With `time_step`: the step the press takes and the steps between records.
+    pub fn fixed_step(&self) -> Option<(f64, u64)> {
+        self.time_step.map(|dt| {
+            let interval = self.ramp_time / self.records as f64;
+            // A step that divides the interval up to round-off is kept as it is.
+            let per_record = (interval / dt * (1.0 - 1e-12)).ceil().max(1.0);
+            (interval / per_record, per_record as u64)
+        })
+    }
 }
 
 fn default_records() -> usize {
@@ -423,6 +441,18 @@ impl DieCompactionSpec {
         }
         if self.press.dt_every == 0 {
             e.push(at("press.dt_every"), "must be >= 1, got 0");
+        }
+        if let Some(dt) = self.press.time_step {
+            e.positive(at("press.time_step"), dt);
+            let interval = self.press.ramp_time / self.press.records as f64;
+            if dt > 0.0 && interval / dt > 1e9 {
+                e.push(
+                    at("press.time_step"),
+                    format!(
+                        "gives more than 1e9 steps per record (record interval {interval:e} s, step {dt:e} s)"
+                    ),
+                );
+            }
         }
         if !(self.rve_diameter > 0.0 && self.rve_diameter < self.die_diameter) {
             e.push(

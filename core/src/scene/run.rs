@@ -245,6 +245,10 @@ pub struct OutputSpec {
     /// `.vtk`: pairs and wall contacts with point, normal, forces, overlap); 0 writes none.
     #[serde(default)]
     pub contacts_every: u64,
+    /// walls.csv beside trajectory.csv, at the same steps: each wall's displacement from
+    /// where the scene puts it and the force the particles exert on it.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub walls: bool,
 }
 
 /// The rules of `time_step`, `run`, `broad_phase`, `stability` and `output`.
@@ -337,6 +341,15 @@ pub fn validate_detection_limits_and_output(scene: &Scene, e: &mut Errors) {
             "output.trajectory_every_step_from",
             "needs output.trajectory_every >= 1 (it adds rows to trajectory.csv)",
         );
+    }
+    if scene.output.walls && scene.output.trajectory_every == 0 {
+        e.push(
+            "output.walls",
+            "needs output.trajectory_every >= 1 (walls.csv is written at the steps of trajectory.csv)",
+        );
+    }
+    if scene.output.walls && scene.walls.is_empty() {
+        e.push("output.walls", "the scene has no walls to record");
     }
     for (k, c) in scene.output.series.iter().enumerate() {
         if !SERIES_COLUMNS.contains(&c.as_str()) {

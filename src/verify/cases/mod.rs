@@ -24,6 +24,7 @@ mod linear_restitution;
 mod mdr_curve;
 mod momentum_conservation;
 mod nial_die_compaction;
+mod nial_die_compaction_small;
 mod oblique_impact;
 mod one_material;
 pub mod probe;
@@ -80,7 +81,7 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("three_sphere_impact_liggghts", three_sphere_impact::run),
     ("three_sphere_impact_lammps", three_sphere_impact::run),
     ("van_der_waals_force", van_der_waals_force::run),
-    ("nial_die_compaction_small", nial_die_compaction::small),
+    ("nial_die_compaction_small", nial_die_compaction_small::run),
     ("nial_die_compaction", nial_die_compaction::full),
     ("scott_random_packing_quick", scott_random_packing::run),
     ("scott_random_packing", scott_random_packing::run),

@@ -2,18 +2,10 @@
 //! fill, flatten and press (`process::die_compaction`), then the density–pressure
 //! curves.
 //!
-//! `nial_die_compaction_small` (quick): ≈ 300 particles of the derived size
-//! distribution (reference_data/nial/README.md) in a die scaled to keep the paper's
-//! H₀/D, pressed under frictionless Hertz–Mindlin–Deresiewicz. It checks what must
-//! hold of any die compaction, whatever the packing:
-//! - the specimen density never falls while the pressure rises (the RVE density may:
-//!   its sphere follows the specimen's centre down, and in a 28 µm RVE one particle
-//!   of up to 18 µm entering or leaving moves it by 4e-3, which seed 1 shows);
-//! - the punch carries the applied pressure, and the floor and die wall carry what
-//!   the punch transmits (Newton's third law through the bed, up to the bed's and
-//!   punch's inertia);
-//! - no particle centre leaves the die;
-//! - the settled density does not depend on the gravity scale used to fill.
+//! `nial_die_compaction_small` (quick, `nial_die_compaction_small.rs`): ≈ 300
+//! particles of the derived size distribution (reference_data/nial/README.md) in a die
+//! scaled to keep the paper's H₀/D, pressed on any engine; it shares this file's
+//! records, curves and plots.
 //!
 //! `nial_die_compaction` (full): the paper's specimen (1751 particles, 58 µm die,
 //! 54 µm RVE), filled and flattened once, then pressed under Hertz–Mindlin–
@@ -213,7 +205,7 @@ fn at(pressing: &Pressing, p: f64, column: fn(&PressRecord) -> f64) -> Result<f6
 }
 
 /// Largest fall of a column between consecutive records (0 when it never falls).
-fn largest_drop(pressing: &Pressing, column: fn(&PressRecord) -> f64) -> f64 {
+pub(super) fn largest_drop(pressing: &Pressing, column: fn(&PressRecord) -> f64) -> f64 {
     pressing
         .records
         .windows(2)
@@ -223,7 +215,7 @@ fn largest_drop(pressing: &Pressing, column: fn(&PressRecord) -> f64) -> f64 {
 
 /// Largest |a − b| over the records past the start of the ramp, as a fraction of
 /// the final pressure.
-fn largest_imbalance(pressing: &Pressing, gap: fn(&PressRecord) -> f64) -> f64 {
+pub(super) fn largest_imbalance(pressing: &Pressing, gap: fn(&PressRecord) -> f64) -> f64 {
     let p_max = pressing.records.last().map_or(1.0, |r| r.pressure);
     pressing
         .records
@@ -233,78 +225,25 @@ fn largest_imbalance(pressing: &Pressing, gap: fn(&PressRecord) -> f64) -> f64 {
         .fold(0.0, f64::max)
 }
 
-fn mpa(points: &[PressRecord], column: fn(&PressRecord) -> f64) -> Vec<(f64, f64)> {
+pub(super) fn mpa(points: &[PressRecord], column: fn(&PressRecord) -> f64) -> Vec<(f64, f64)> {
     points
         .iter()
         .map(|r| (r.pressure / 1e6, column(r)))
         .collect()
 }
 
-/// The force chains at the full pressure (Zhong 2009 §5 lists them among a DEM
-/// system's views): the contacts of the pressing's last step whose contact point lies
-/// in a slab through the die's axis, |y| < the specimen's mean particle radius, drawn
-/// to scale in the x–z plane from centre to centre (to the contact point for the
-/// walls), each line 1–8 px wide in proportion to its normal force.
-fn write_force_chains(
-    ctx: &CaseContext,
-    scene: &DieCompactionFile,
-    specimen: &Specimen,
-    pressing: &Pressing,
-) -> Result<()> {
-    let last = pressing
-        .records
-        .last()
-        .ok_or_else(|| TampError::Other("a pressing without records".into()))?;
-    let die_radius = 0.5 * scene.die_compaction.die_diameter;
-    let n = specimen.particles.len().max(1) as f64;
-    let half_width = specimen.particles.iter().map(|p| p.radius).sum::<f64>() / n;
-    let slice: Vec<_> = pressing
-        .last_contacts
-        .iter()
-        .filter(|c| c.point.y.abs() < half_width)
-        .collect();
-    let largest = slice
-        .iter()
-        .map(|c| c.normal_force.abs())
-        .fold(0.0, f64::max);
-    let um = 1e6;
-    let segments: Vec<([(f64, f64); 2], u32)> = slice
-        .iter()
-        .map(|c| {
-            let width = 1.0 + 7.0 * c.normal_force.abs() / largest.max(f64::MIN_POSITIVE);
-            (
-                [
-                    (c.centre.x * um, c.centre.z * um),
-                    (c.other_end.x * um, c.other_end.z * um),
-                ],
-                width.round() as u32,
-            )
-        })
-        .collect();
-    crate::plot::write_segments_svg(
-        &ctx.report_dir
-            .join(format!("{}_force_chains.svg", ctx.spec.name)),
-        &format!(
-            "Force chains at {:.0} MPa: {} contacts with |y| < {:.2} µm (of {}), x–z in µm, width by normal force (largest {:.2e} N)",
-            last.pressure / 1e6,
-            slice.len(),
-            half_width * um,
-            pressing.last_contacts.len(),
-            largest
-        ),
-        (-die_radius * um, die_radius * um, 0.0, last.height * um),
-        &segments,
-    )
-}
-
-fn poured_point() -> Series {
+pub(super) fn poured_point() -> Series {
     Series::points(
         "experiment: poured density, Rojek Table 1 (the curve of Fig 5 is not available)",
         vec![(0.0, POURED_DENSITY)],
     )
 }
 
-fn write_curves_csv(ctx: &CaseContext, labels: &[&str], pressings: &[Pressing]) -> Result<()> {
+pub(super) fn write_curves_csv(
+    ctx: &CaseContext,
+    labels: &[&str],
+    pressings: &[Pressing],
+) -> Result<()> {
     let mut csv = String::from(
         "model,pressure_pa,punch_reaction_pa,floor_reaction_pa,die_friction_pa,height_m,height_reduction,density_specimen,density_rve,contact_count\n",
     );
@@ -328,62 +267,6 @@ fn write_curves_csv(ctx: &CaseContext, labels: &[&str], pressings: &[Pressing]) 
         &ctx.report_dir.join(format!("{}_curves.csv", ctx.spec.name)),
         csv.as_bytes(),
     )
-}
-
-pub fn small(ctx: &CaseContext) -> Result<Vec<Measured>> {
-    let scene = ctx.die_compaction()?;
-    let specimen = super::die_specimen::prepare(&scene)?;
-    let pressing = die_compaction::press(&scene, &specimen, true, None, 0, &mut |_| Ok(()))?;
-
-    // The same fill under ten times the gravity: the settled density must not move
-    // beyond the packing's own randomness.
-    let mut stronger = scene.clone();
-    stronger.die_compaction.fill.gravity_scale *= 10.0;
-    let specimen_stronger = die_compaction::prepare(&stronger, true)?;
-
-    write_curves_csv(ctx, &["hertz"], std::slice::from_ref(&pressing))?;
-    write_force_chains(ctx, &scene, &specimen, &pressing)?;
-    let name = &ctx.spec.name;
-    write_svg(
-        &ctx.report_dir.join(format!("{name}.svg")),
-        &[Panel {
-            title: "NiAl die compaction, 300 particles, Hertz, frictionless",
-            x_label: "pressure (MPa)",
-            y_label: "relative density",
-            log_x: false,
-            log_y: false,
-            series: &[
-                Series::line("specimen", mpa(&pressing.records, |r| r.density_specimen)),
-                Series::line("RVE", mpa(&pressing.records, |r| r.density_rve)),
-                poured_point(),
-            ],
-        }],
-    )?;
-    Ok(vec![
-        Measured::new(
-            "largest_density_drop_specimen",
-            largest_drop(&pressing, |r| r.density_specimen),
-            0.0,
-        ),
-        Measured::new(
-            "punch_reaction_minus_applied",
-            largest_imbalance(&pressing, |r| r.punch_reaction - r.pressure),
-            0.0,
-        ),
-        Measured::new(
-            "floor_and_die_minus_punch",
-            largest_imbalance(&pressing, |r| {
-                r.floor_reaction + r.die_friction - r.punch_reaction
-            }),
-            0.0,
-        ),
-        Measured::new("particles_left_die", pressing.escaped.len() as f64, 0.0),
-        Measured::new(
-            "settled_density_change_gravity_x10",
-            specimen_stronger.density_specimen - specimen.density_specimen,
-            0.0,
-        ),
-    ])
 }
 
 pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {

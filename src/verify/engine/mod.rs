@@ -191,7 +191,23 @@ pub fn read_recording(
         )));
     }
     let rows = crate::compare::read_trajectory(path)?;
-    Ok(resolved.recording(path, &rows)?)
+    let mut recording = resolved.recording(path, &rows)?;
+    if resolved.spec.walls {
+        let walls = path.with_file_name("walls.csv");
+        if !walls.is_file() {
+            return Err(Refusal::Failed(TampError::input(
+                walls.display().to_string(),
+                "was not written (the case records the walls: the scene sets output.walls, docs/engines.md)",
+            )));
+        }
+        let rows = crate::compare::read_walls(&walls)?;
+        recording.attach_walls(
+            &walls.display().to_string(),
+            &rows,
+            resolved.scene.walls.len(),
+        )?;
+    }
+    Ok(recording)
 }
 
 /// The last lines of a program's output, for a message.

@@ -27,6 +27,11 @@ pub fn export(peer: Peer, resolved: &Resolved, dir: &Path) -> Result<String, Ref
         }
         e => Refusal::Failed(e),
     })?;
+    if resolved.spec.walls {
+        return Err(Refusal::NotExpressible(
+            "output.walls: the exported deck records no wall displacements and forces".into(),
+        ));
+    }
     Ok(super::peer_record::deck_sha256(dir)?)
 }
 

@@ -100,6 +100,7 @@ pub fn resolve(scene: &Scene, spec: RecordSpec) -> Result<Resolved, Refusal> {
             trajectory_every: spec.trajectory_every,
             trajectory_every_step_from: spec.every_step_from,
             forces: spec.forces,
+            walls: spec.walls,
             ..OutputSpec::default()
         },
         resolved_from: Some(ResolvedFrom {

@@ -6,17 +6,17 @@
 use crate::error::Result;
 use crate::scene::{self, Scene};
 use crate::simulation::Simulation;
-use crate::verify::recording::{Body, Frame, RecordSpec, Recording};
+use crate::verify::recording::{Body, Frame, RecordSpec, Recording, WallState};
 
 /// Run `scene` to its end, recording the frames `spec` asks for.
 pub fn record(scene: &Scene, spec: RecordSpec) -> Result<Recording> {
     let built = scene::build(scene)?;
     let mut sim = built.sim;
-    let mut frames = vec![frame(&sim, spec.forces)];
+    let mut frames = vec![frame(&sim, spec)];
     while sim.state.step < built.steps {
         sim.step()?;
         if spec.records(sim.state.step, built.steps) {
-            frames.push(frame(&sim, spec.forces));
+            frames.push(frame(&sim, spec));
         }
     }
     sim.check_energy_at_end()?;
@@ -26,8 +26,9 @@ pub fn record(scene: &Scene, spec: RecordSpec) -> Result<Recording> {
     })
 }
 
-/// The particles now, in id order.
-fn frame(sim: &Simulation, forces: bool) -> Frame {
+/// The particles now, in id order, and the walls when `spec` asks for them.
+fn frame(sim: &Simulation, spec: RecordSpec) -> Frame {
+    let forces = spec.forces;
     let p = &sim.state.particles;
     let mut order: Vec<usize> = (0..p.len()).collect();
     order.sort_by_key(|&i| p.id[i]);
@@ -44,5 +45,14 @@ fn frame(sim: &Simulation, forces: bool) -> Frame {
                 force: forces.then(|| p.force[i]),
             })
             .collect(),
+        walls: match spec.walls {
+            true => (sim.state.walls.iter().zip(&sim.state.wall_force))
+                .map(|(pose, force)| WallState {
+                    displacement: pose.displacement,
+                    force: *force,
+                })
+                .collect(),
+            false => Vec::new(),
+        },
     }
 }
