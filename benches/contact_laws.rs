@@ -84,6 +84,7 @@ fn law(
         tangential,
         cohesion,
         lever_arm: Default::default(),
+        no_pull: false,
     }
 }
 

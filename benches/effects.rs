@@ -59,6 +59,7 @@ fn bed(variant: &str) -> Value {
             v["contact"]["tangential"] =
                 json!({"law": "cundall_strack", "friction": 0.5, "stiffness": 1e3})
         }
+        "+no_pull" => v["contact"]["damping"]["limit"] = json!(true),
         "+cohesion" => {
             v["contact"]["cohesion"] = json!({"law": "van_der_waals", "hamaker": 6.5e-20,
                 "min_separation": 4e-10, "cutoff": 1e-7})
@@ -111,6 +112,7 @@ fn effects(c: &mut Criterion) {
         "+friction(cundall_strack)",
         "+rotation",
         "+friction+rotation",
+        "+no_pull",
         "+cohesion",
     ] {
         let sim = simulation(&bed(name), 1000);

@@ -24,6 +24,7 @@ fn every_law() -> Vec<ContactLaw> {
                 tangential: t,
                 cohesion: None,
                 lever_arm: Default::default(),
+                no_pull: false,
             });
         }
     }
@@ -322,6 +323,7 @@ fn frictionless_tangential_laws_keep_the_normal_memory() {
             tangential: Some(t),
             cohesion: None,
             lever_arm: Default::default(),
+            no_pull: false,
         };
         let v = Vec3::new(1e-3, 0.0, 0.0);
         let path: Vec<_> = [1e-6, 2e-6, 1.5e-6]

@@ -196,6 +196,26 @@ fn accuracy_refuses_laws_without_an_error_model() {
     }
 }
 
+/// A clamped dashpot (`contact.damping.limit`) ends the contact at another restitution
+/// than the calibrated one: an accuracy is refused naming the clamp, and a damping block
+/// with a limit that is not a boolean is refused at its path.
+#[test]
+fn accuracy_refuses_a_clamped_dashpot_and_the_limit_is_a_boolean() {
+    let mut s = base();
+    s["contact"]["damping"]["limit"] = json!(true);
+    s["time_step"] = json!({"accuracy": 1e-3, "characteristic_velocity": 1.0});
+    expect_input_error(
+        s,
+        &[
+            "time_step.accuracy",
+            "limited to no pull) has no error model",
+        ],
+    );
+    let mut s = base();
+    s["contact"]["damping"]["limit"] = json!("yes");
+    expect_input_error(s, &["contact.damping.limit"]);
+}
+
 /// The laws calibrated since (docs/accuracy-cost.md) are refused beyond their
 /// calibration: Kuwabara–Kono rebounding below e = 0.1 (A = 0.1 ms on the base scene's
 /// soft glass: c ≈ 5, e ≈ 0.07), Hertz with a constant γ_n so strong that the

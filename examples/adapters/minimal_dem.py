@@ -43,7 +43,8 @@ What it implements
   δ = R_i + R_j − |x_i − x_j| (contact when δ > 0). The force pushes i along
   n = (x_i − x_j)/|x_i − x_j| and j the other way.
 - No damping, or `contact.damping` of kind `constant`: F_d = γ_n dδ/dt = −γ_n (v_i − v_j)·n.
-  It is not clipped, so at the end of a contact the total normal force may pull, as in tamp.
+  It is not clipped, so at the end of a contact the total normal force may pull, as in tamp,
+  unless `contact.damping.limit` is true: then the total normal force is clamped at zero.
 - Velocity Verlet, as in tamp's core/src/integrate.rs. All pairs are tested every step
   (brute force), which is fine for a few spheres.
 
@@ -211,7 +212,7 @@ def read_contact(contact):
         )
 
     damping = contact.get("damping")
-    gamma_n = 0.0
+    gamma_n, no_pull = 0.0, False
     if damping is not None:
         damping = obj(damping, "contact.damping")
         kind = damping.get("kind")
@@ -220,8 +221,14 @@ def read_contact(contact):
                 "contact.damping.kind",
                 f"this example adapter implements only 'constant', not {json.dumps(kind)}",
             )
+        for key in damping:
+            if key not in ("kind", "gamma_n", "limit"):
+                raise Unsupported(f"contact.damping.{key}", "is not a field this example adapter knows")
         gamma_n = number(damping.get("gamma_n"), "contact.damping.gamma_n", non_negative=True)
-    return normal_law, gamma_n
+        no_pull = damping.get("limit", False)
+        if not isinstance(no_pull, bool):
+            raise BadScene("contact.damping.limit", f"must be true or false, got {json.dumps(no_pull)}")
+    return normal_law, gamma_n, no_pull
 
 
 def read_materials(materials):
@@ -291,7 +298,7 @@ def read_particles(particles, materials, law):
 def read_scene(scene):
     scene = obj(scene, "scene")
     check_top_level(scene)
-    normal_law, gamma_n = read_contact(scene.get("contact"))
+    normal_law, gamma_n, no_pull = read_contact(scene.get("contact"))
     materials = read_materials(scene.get("materials"))
     particles = read_particles(scene.get("particles"), materials, normal_law[0])
 
@@ -324,6 +331,7 @@ def read_scene(scene):
     return {
         "law": normal_law,
         "gamma_n": gamma_n,
+        "no_pull": no_pull,
         "particles": particles,
         "dt": dt,
         "steps": steps,
@@ -353,7 +361,7 @@ def build_pairs(particles, law):
     return pairs
 
 
-def compute_forces(x, v, pairs, hertz, gamma_n, n):
+def compute_forces(x, v, pairs, hertz, gamma_n, no_pull, n):
     f = [[0.0, 0.0, 0.0] for _ in range(n)]
     for i, j, reach, a, b in pairs:
         xi, xj = x[i], x[j]
@@ -376,9 +384,11 @@ def compute_forces(x, v, pairs, hertz, gamma_n, n):
         if gamma_n:
             vi, vj = v[i], v[j]
             # dδ/dt > 0 while approaching, so the dashpot pushes then, and pulls while
-            # the spheres separate; tamp does not clip the sum at zero and neither do we.
+            # the spheres separate; the sum is clamped at zero only when the scene says so.
             rate = -((vi[0] - vj[0]) * nx + (vi[1] - vj[1]) * ny + (vi[2] - vj[2]) * nz)
             fn += gamma_n * rate
+            if no_pull and fn < 0.0:
+                fn = 0.0
         fx, fy, fz = fn * nx, fn * ny, fn * nz
         fi, fj = f[i], f[j]
         fi[0] += fx
@@ -407,6 +417,7 @@ def run(s, rows):
     with_forces = s["forces"]
     hertz = s["law"][0] == "hertz"
     gamma_n = s["gamma_n"]
+    no_pull = s["no_pull"]
     pairs = build_pairs(particles, s["law"])
     x = [list(p["x"]) for p in particles]
     v = [list(p["v"]) for p in particles]
@@ -415,7 +426,7 @@ def run(s, rows):
 
     def forces_at(step):
         try:
-            return compute_forces(x, v, pairs, hertz, gamma_n, n)
+            return compute_forces(x, v, pairs, hertz, gamma_n, no_pull, n)
         except ZeroDivisionError as e:
             i, j = e.args[0]
             if step == 0:

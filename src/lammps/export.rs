@@ -16,7 +16,9 @@
 //!   `lammps_linear_history` and `lammps_linear_nohistory` have one); a scene without
 //!   friction writes `tangential linear_nohistory 0 0`, a force of exactly zero. With spins and friction the scene must take LAMMPS's lever
 //!   arms (`contact.lever_arm` = `lammps`).
-//! - `limit_damping` is not written: off, as tamp's damping (the force may pull).
+//! - `limit_damping` is written after the pair and wall models exactly when the scene
+//!   sets `contact.damping.limit` (the total normal force clamped at zero); otherwise
+//!   the force may pull at the end of a contact in both codes.
 //! - Fixed planes normal to an axis are `fix wall/gran granular` with the pair model and
 //!   the wall material's E and ν (`xplane lo NULL` or `NULL hi`), a fixed closed box one
 //!   such fix per axis (`xplane lo hi`, `wall_fixes`); LAMMPS gives the wall and the
@@ -57,7 +59,7 @@ pub(super) fn pair_model(scene: &Scene) -> std::result::Result<String, Vec<(Stri
         .lammps()
         .map_err(|why| refused.push(("contact.normal.law".to_string(), why.0)))
         .ok();
-    let damping = match (&scene.contact.damping, normal) {
+    let damping = match (&scene.contact.dashpot(), normal) {
         // LAMMPS 22 Jul 2025 refuses `damping none` ("Must specify damping granular
         // model"); `velocity` with η = 0 adds a force of exactly zero.
         (None, _) => Some(("velocity", 0.0)),
@@ -86,7 +88,11 @@ pub(super) fn pair_model(scene: &Scene) -> std::result::Result<String, Vec<(Stri
                     format!("hooke {} {}", g(stiffness), g(coefficient))
                 }
             };
-            Ok(format!("{normal} damping {kw} tangential {t}"))
+            let limit = match scene.contact.damping.is_some_and(|d| d.limit) {
+                true => " limit_damping",
+                false => "",
+            };
+            Ok(format!("{normal} damping {kw} tangential {t}{limit}"))
         }
         _ => Err(refused),
     }
@@ -765,7 +771,7 @@ pub fn export(
     deck.push_str("newton       off\ncomm_modify  vel yes\nread_data    particles.data\n");
     let _ = writeln!(deck, "neighbor     {} bin\nneigh_modify delay 0", g(skin));
     deck.push_str(
-        "# limit_damping is off (not written), as tamp's damping.\npair_style   granular\n",
+        "# limit_damping as contact.damping.limit: the total normal force clamped at zero, or free to pull.\npair_style   granular\n",
     );
     let has_friction_pairs = scene
         .contact

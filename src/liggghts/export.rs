@@ -69,7 +69,7 @@ pub(super) struct ContactModel {
 /// LIGGGHTS's restitution for the scene's damping, or why there is none.
 fn restitution(scene: &Scene) -> std::result::Result<f64, (String, String)> {
     let hertz = scene.contact.normal.liggghts() == Some(LiggghtsModel::Hertz);
-    let e = match &scene.contact.damping {
+    let e = match &scene.contact.dashpot() {
         None => 1.0,
         Some(Damping::LiggghtsRestitution(LiggghtsRestitution { restitution })) => *restitution,
         Some(Damping::CriticalFraction(CriticalFraction { xi })) => {
@@ -143,7 +143,7 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
         }
         Some(Ok(_)) => {}
     }
-    match &scene.contact.damping {
+    match &scene.contact.dashpot() {
         Some(Damping::Constant(_)) | None => {}
         _ => {
             if let Err((path, why)) = restitution(scene) {
@@ -365,11 +365,11 @@ fn deck_scene<'a>(
         _ => vec![0.0; types * types],
     };
     LiggghtsScene {
-        damping: scene.contact.damping.as_ref(),
+        damping: scene.contact.damping.as_ref().map(|d| &d.kind),
         tangential: scene.contact.tangential.is_some(),
         types,
         friction,
-        restitution: match &scene.contact.damping {
+        restitution: match &scene.contact.dashpot() {
             Some(Damping::Constant(_)) => None,
             _ => restitution(scene).ok(),
         },
@@ -422,11 +422,16 @@ pub(super) fn contact_model(
         ));
     }
     let tangential = "tangential history";
-    let pair_style = if deck.options.is_empty() {
+    let mut pair_style = if deck.options.is_empty() {
         format!("model {} {tangential}", deck.model)
     } else {
         format!("model {} {tangential} {}", deck.model, deck.options)
     };
+    // The no-pull clamp, after the models as every model keyword (walls take this
+    // line too).
+    if scene.contact.damping.is_some_and(|d| d.limit) {
+        pair_style.push_str(" limitForce on");
+    }
     Ok(ContactModel {
         pair_style,
         properties,
@@ -630,7 +635,7 @@ pub(super) fn deck_head(
     }
     let _ = writeln!(
         deck,
-        "# limitForce off and tangential_damping on are the 3.8 defaults and tamp's behaviour."
+        "# limitForce as contact.damping.limit (off, the 3.8 default: the force may pull); tangential_damping on, the 3.8 default and tamp's behaviour."
     );
     let _ = writeln!(
         deck,

@@ -15,6 +15,9 @@
 //! - LAMMPS's `viscoelastic` (viscous.rs): η = η_n0 m* √(R* δ), Kuwabara–Kono's form
 //!   without the clamp.
 //!
+//! Any of them with the total force clamped at zero (`contact.damping.limit`, LAMMPS's
+//! `limit_damping`, LIGGGHTS's `limitForce on`) is `unit_impact_no_pull`.
+//!
 //! With δ = δ_s x, t = (δ_s/v) τ and δ_s = (m* v²/K)^{2/5} it becomes
 //!
 //!   x'' = −x^{3/2} − c x^q x',   x(0) = 0, x'(0) = 1,
@@ -89,7 +92,18 @@ pub fn critical_fraction_c(xi: f64) -> f64 {
 /// The impact of x'' = −x^{3/2} − c x^q x' from x = 0, x' = 1. `None` when the bodies
 /// do not separate within τ = 100 (overdamped).
 pub fn unit_impact(dashpot: Dashpot, c: f64) -> Option<Unit> {
-    unit_impact_with(dashpot, c, 1.0 / STEPS_PER_UNIT)
+    unit_impact_with(
+        dashpot,
+        c,
+        dashpot == Dashpot::KuwabaraKono,
+        1.0 / STEPS_PER_UNIT,
+    )
+}
+
+/// The same impact with the total force clamped at zero: once it vanishes the bodies
+/// coast apart through the rest of the overlap.
+pub fn unit_impact_no_pull(dashpot: Dashpot, c: f64) -> Option<Unit> {
+    unit_impact_with(dashpot, c, true, 1.0 / STEPS_PER_UNIT)
 }
 
 /// The c at which the unit impact rebounds at `restitution` (e falls as c grows), by
@@ -106,17 +120,13 @@ pub fn c_for_restitution(dashpot: Dashpot, restitution: f64, c_max: f64) -> f64 
     0.5 * (lo + hi)
 }
 
-fn unit_impact_with(dashpot: Dashpot, c: f64, h: f64) -> Option<Unit> {
+fn unit_impact_with(dashpot: Dashpot, c: f64, no_pull: bool, h: f64) -> Option<Unit> {
     // The force vanishes outside contact (x < 0): the equation is only integrated to
     // the crossing, but an RK4 stage may look just beyond it.
     let force = |x: f64, v: f64| {
         let x = x.max(0.0);
         let f = x * x.sqrt() + c * dashpot.power(x) * v;
-        if dashpot == Dashpot::KuwabaraKono {
-            f.max(0.0)
-        } else {
-            f
-        }
+        if no_pull { f.max(0.0) } else { f }
     };
     let accel = |x: f64, v: f64| -force(x, v);
     let (mut x, mut v, mut t) = (0.0f64, 1.0f64, 0.0f64);
@@ -245,9 +255,13 @@ mod tests {
             (Dashpot::KuwabaraKono, [0.1, 1.0, 4.5]),
             (Dashpot::Constant, [0.1, 0.5, 0.9]),
         ] {
-            for c in cs {
-                let a = unit_impact_with(dashpot, c, 1.0 / STEPS_PER_UNIT).unwrap();
-                let b = unit_impact_with(dashpot, c, 0.5 / STEPS_PER_UNIT).unwrap();
+            // Each dashpot as its law has it, and clamped at zero (`no_pull`).
+            for (c, clamp) in cs
+                .into_iter()
+                .flat_map(|c| [(c, dashpot == Dashpot::KuwabaraKono), (c, true)])
+            {
+                let a = unit_impact_with(dashpot, c, clamp, 1.0 / STEPS_PER_UNIT).unwrap();
+                let b = unit_impact_with(dashpot, c, clamp, 0.5 / STEPS_PER_UNIT).unwrap();
                 let moves = [
                     (a.max_overlap, b.max_overlap),
                     (a.max_force, b.max_force),
@@ -256,7 +270,7 @@ mod tests {
                 ]
                 .map(|(p, q)| (p / q - 1.0).abs());
                 eprintln!(
-                    "{dashpot:?} c = {c}: moves {:?}",
+                    "{dashpot:?} c = {c}, clamped {clamp}: moves {:?}",
                     moves.map(|m| format!("{m:.1e}"))
                 );
                 assert!(

@@ -67,6 +67,11 @@ impl ErrorModel {
 /// no impact closed form, pure Storåkers, cohesion). Friction does not enter: it does
 /// not change a head-on impact.
 pub fn for_law(law: &ContactLaw) -> Option<&'static ErrorModel> {
+    // The error models are calibrated on dashpots that pull at the end of a contact;
+    // the clamp ends the contact earlier, at another restitution.
+    if law.no_pull {
+        return None;
+    }
     let name = match (law.normal, law.damping, law.cohesion) {
         (_, _, Some(_)) => return None,
         (NormalLaw::Linear(_), None, None) => "linear",

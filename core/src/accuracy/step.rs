@@ -71,9 +71,10 @@ pub fn choose(
     }
     let model = for_law(law).ok_or_else(|| {
         format!(
-            "the contact law ({}{}{}) has no error model: only linear (undamped, or with constant or critical_fraction damping), hertz (undamped, or with critical_fraction, liggghts_restitution, tsuji or constant damping), kuwabara_kono, walton_braun, thornton (unloading thornton_1997) and storakers with min_with_hertz, without cohesion, are calibrated (docs/accuracy-cost.md); give time_step.alpha or time_step.fixed",
+            "the contact law ({}{}{}{}) has no error model: only linear (undamped, or with constant or critical_fraction damping), hertz (undamped, or with critical_fraction, liggghts_restitution, tsuji or constant damping), kuwabara_kono, walton_braun, thornton (unloading thornton_1997) and storakers with min_with_hertz, without cohesion and without contact.damping.limit, are calibrated (docs/accuracy-cost.md); give time_step.alpha or time_step.fixed",
             law.normal.name(),
             law.damping.map_or(String::new(), |d| format!(" + {} damping", d.name())),
+            if law.no_pull { " limited to no pull" } else { "" },
             law.cohesion.map_or("", |_| " + cohesion"),
         )
     })?;

@@ -106,6 +106,9 @@ pub struct ContactLaw {
     pub cohesion: Option<Cohesion>,
     /// Where the contact acts on spinning spheres (`contact.lever_arm`).
     pub lever_arm: lever_arm::LeverArm,
+    /// Whether the elastic plus damping normal force is clamped at zero
+    /// (`contact.damping.limit`).
+    pub no_pull: bool,
 }
 
 impl ContactLaw {
@@ -131,6 +134,7 @@ impl ContactLaw {
             tangential,
             cohesion,
             lever_arm: lever_arm::LeverArm::default(),
+            no_pull: false,
         }
     }
 
@@ -236,12 +240,14 @@ impl ContactLaw {
                 damping,
                 tangential,
                 cohesion: NoCohesion,
+                no_pull: self.no_pull,
             }),
             Some(Cohesion::VanDerWaals(cohesion)) => v.visit(Composed {
                 normal,
                 damping,
                 tangential,
                 cohesion,
+                no_pull: self.no_pull,
             }),
         }
     }
@@ -263,7 +269,50 @@ mod tests {
             damping: CriticalFraction { xi: 0.3 },
             tangential: CundallStrack { stiffness: 1e5 },
             cohesion: NoCohesion,
+            no_pull: false,
         }
+    }
+
+    /// Parting fast at a small overlap, the dashpot outpulls the spring: the total
+    /// normal force is negative, or zero with the clamp, and then no friction acts.
+    #[test]
+    fn the_clamp_keeps_the_normal_force_from_pulling() {
+        let parting = |sign: f64| ContactGeometry {
+            normal: Vec3::z(),
+            overlap: 1e-9,
+            effective_radius: 1e-3,
+            effective_mass: 1e-3,
+            relative_velocity: Vec3::new(0.05, 0.0, sign),
+        };
+        let free = [1.0, -1.0]
+            .map(|s| law().evaluate(&parting(s), &pair(), &mut Default::default(), 1e-6));
+        let k = free
+            .iter()
+            .position(|f| f.normal < 0.0)
+            .expect("one way pulls");
+        let clamped = Composed {
+            no_pull: true,
+            ..law()
+        }
+        .evaluate(
+            &parting([1.0, -1.0][k]),
+            &pair(),
+            &mut Default::default(),
+            1e-6,
+        );
+        assert_eq!(clamped.normal, 0.0);
+        assert_eq!(clamped.tangential, Vec3::zeros());
+        // Pushing (the other direction), the clamp changes nothing.
+        let pushing = parting([1.0, -1.0][1 - k]);
+        let with = Composed {
+            no_pull: true,
+            ..law()
+        }
+        .evaluate(&pushing, &pair(), &mut Default::default(), 1e-6);
+        assert_eq!(
+            (with.normal, with.tangential),
+            (free[1 - k].normal, free[1 - k].tangential)
+        );
     }
 
     fn pair() -> PairProperties {

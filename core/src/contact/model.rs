@@ -472,6 +472,9 @@ pub struct Composed<N, D, T, C> {
     pub tangential: T,
     /// The attraction (`NoCohesion` when off).
     pub cohesion: C,
+    /// Whether the elastic plus damping normal force is clamped at zero: a branch
+    /// fixed for the run, not a type, as it only compares one number.
+    pub no_pull: bool,
 }
 
 /// The state a composed law keeps per contact.
@@ -551,6 +554,11 @@ impl<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel> Comp
             };
             if D::ACTIVE {
                 force.normal += damping * rate;
+                // LAMMPS's `limit_damping`, LIGGGHTS's `limitForce on`: the clamp comes
+                // before the friction law reads the normal force, as in both.
+                if self.no_pull && force.normal < 0.0 {
+                    force.normal = 0.0;
+                }
             }
             if T::ACTIVE {
                 let input =

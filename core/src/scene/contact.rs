@@ -33,7 +33,7 @@ pub struct ContactSpec {
     pub normal: NormalLaw,
     /// The normal dashpot; absent means none.
     #[serde(default)]
-    pub damping: Option<Damping>,
+    pub damping: Option<DampingSpec>,
     /// The tangential law with its friction; absent means frictionless.
     #[serde(default)]
     pub tangential: Option<FrictionSpec>,
@@ -51,13 +51,39 @@ impl ContactSpec {
     pub fn law(&self) -> ContactLaw {
         ContactLaw {
             lever_arm: self.lever_arm,
+            no_pull: self.damping.is_some_and(|d| d.limit),
             ..ContactLaw::new(
                 self.normal,
-                self.damping,
+                self.dashpot(),
                 self.tangential.as_ref().map(|t| t.law),
                 self.cohesion,
             )
         }
+    }
+
+    /// The dashpot's kind and coefficient, if there is one.
+    pub fn dashpot(&self) -> Option<Damping> {
+        self.damping.map(|d| d.kind)
+    }
+}
+
+/// The `damping` block: the dashpot (its `kind` tag and parameters, inline) and whether
+/// the total normal force is kept from pulling.
+#[derive(Clone, Copy, Debug, PartialEq, Deserialize, Serialize)]
+pub struct DampingSpec {
+    /// The dashpot.
+    #[serde(flatten)]
+    pub kind: Damping,
+    /// The elastic plus damping normal force is clamped at zero, so the dashpot never
+    /// pulls at the end of a contact: LAMMPS's `limit_damping`, LIGGGHTS's
+    /// `limitForce on`. Off by default, as in both.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub limit: bool,
+}
+
+impl From<Damping> for DampingSpec {
+    fn from(kind: Damping) -> Self {
+        DampingSpec { kind, limit: false }
     }
 }
 
@@ -122,7 +148,7 @@ impl<'a> LawContext<'a> {
 pub fn validate(contact: &ContactSpec, at: &str, ctx: &LawContext, e: &mut Errors) {
     let roles = Roles {
         normal: &contact.normal,
-        damping: contact.damping.as_ref(),
+        damping: contact.damping.as_ref().map(|d| &d.kind),
     };
     let normal = &contact.normal;
     contact.normal.check(&format!("{at}.normal"), e);
@@ -133,7 +159,7 @@ pub fn validate(contact: &ContactSpec, at: &str, ctx: &LawContext, e: &mut Error
         &format!("{at}.normal.law '{}'", normal.name()),
     );
     if let Some(damping) = &contact.damping {
-        damping.check(&format!("{at}.damping"), roles, e);
+        damping.kind.check(&format!("{at}.damping"), roles, e);
         if normal.has_own_dissipation() {
             e.push(
                 format!("{at}.damping"),

@@ -46,7 +46,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let mut out = Vec::new();
     for run in ctx.parameters::<Parameters>()?.dashpots {
         let mut s = base.clone();
-        s.contact.damping = Some(run.damping);
+        s.contact.damping = Some(run.damping.into());
         let pair = Pair::of(&s)?;
         let k = 4.0 / 3.0 * pair.effective_modulus()? * pair.r_eff.sqrt();
         let v = pair.approach;

@@ -18,7 +18,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
             "linear_restitution needs the linear law".into(),
         ));
     };
-    let gamma = match base.contact.damping {
+    let gamma = match base.contact.dashpot() {
         Some(Damping::Constant(Constant { gamma_n })) => gamma_n,
         _ => {
             return Err(crate::TampError::Other(
@@ -29,7 +29,8 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let mut out = Vec::new();
     for (suffix, gamma_n) in [("", gamma), ("_undamped", 0.0)] {
         let mut s = base.clone();
-        s.contact.damping = (gamma_n > 0.0).then_some(Damping::Constant(Constant { gamma_n }));
+        s.contact.damping =
+            (gamma_n > 0.0).then_some(Damping::Constant(Constant { gamma_n }).into());
         let pair = Pair::of(&s)?;
         let exact = LinearCollision::new(stiffness, pair.m_eff, gamma_n);
         let label = format!("collision{suffix}");

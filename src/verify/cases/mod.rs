@@ -25,6 +25,7 @@ mod mdr_curve;
 mod momentum_conservation;
 mod nial_die_compaction;
 mod nial_die_compaction_small;
+mod no_pull_restitution;
 mod oblique_impact;
 mod one_material;
 pub mod probe;
@@ -50,6 +51,8 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("accuracy_on_demand", accuracy_on_demand::run),
     ("hertz_collision_time", hertz_collision_time::run),
     ("hertz_damped_collision", hertz_damped_collision::run),
+    ("hertz_no_pull_restitution", no_pull_restitution::hertz),
+    ("linear_no_pull_restitution", no_pull_restitution::linear),
     ("hertz_dashpot_forms", hertz_dashpot_forms::run),
     ("hertz_rigid_wall_impact", hertz_rigid_wall_impact::run),
     ("hertz_yield_onset", hertz_yield_onset::run),

@@ -139,9 +139,8 @@ pub fn each_restitution(ctx: &CaseContext, base: &Scene) -> Result<Vec<(f64, Sce
         .into_iter()
         .map(|e| {
             let mut s = base.clone();
-            s.contact.damping = Some(Damping::LiggghtsRestitution(LiggghtsRestitution {
-                restitution: e,
-            }));
+            s.contact.damping =
+                Some(Damping::LiggghtsRestitution(LiggghtsRestitution { restitution: e }).into());
             (e, s)
         })
         .collect())

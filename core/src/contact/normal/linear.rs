@@ -5,6 +5,13 @@
 //!
 //! With a constant dashpot γ_n (eq 6) the collision has the closed forms of
 //! Zhong eqs 7–9, implemented below for the verification cases.
+//!
+//! With the total force k_n δ + γ_n dδ/dt clamped at zero (`contact.damping.limit`)
+//! the contact force ends where ω₀² δ + 2β dδ/dt = 0 (β = γ_n/2m*, ω₀² = k_n/m*), at
+//! ω t_f = π − atan2(2βω, ω² − β²), before the overlap returns to zero; from then on
+//! the spheres part at constant speed, so e = exp(−β t_f) and the overlap closes at
+//! t_f + δ(t_f)/(e v). Schwager & Pöschel (Granular Matter 9 (2007) 465) give the
+//! same restitution, derived here from the oscillator's δ(t).
 //! Parameters: k_n in N/m. No history. LIGGGHTS keyword: `model hooke/stiffness`.
 
 use super::NormalLaw;
@@ -74,6 +81,28 @@ impl LinearCollision {
         }
         let t_star = (w / self.beta).atan() / w;
         approach_speed / w * (-self.beta * t_star).exp() * (w * t_star).sin()
+    }
+
+    /// With the force clamped at zero: the time t_f at which k_n δ + γ_n dδ/dt falls
+    /// to zero, s (underdamped contacts, β < ω₀).
+    pub fn no_pull_force_duration(&self) -> f64 {
+        let w = self.damped_frequency();
+        (std::f64::consts::PI - (2.0 * self.beta * w).atan2(w * w - self.beta * self.beta)) / w
+    }
+
+    /// With the force clamped at zero: e = exp(−β t_f), the speed the spheres part
+    /// with once the force has ended.
+    pub fn no_pull_restitution(&self) -> f64 {
+        (-self.beta * self.no_pull_force_duration()).exp()
+    }
+
+    /// With the force clamped at zero: the time until the overlap returns to zero, s,
+    /// t_f plus δ(t_f) crossed at the parting speed e v (independent of v).
+    pub fn no_pull_contact_duration(&self) -> f64 {
+        let (w, t_f) = (self.damped_frequency(), self.no_pull_force_duration());
+        // δ(t)/v = e^{−βt} sin(ωt)/ω.
+        let overlap_per_speed = (-self.beta * t_f).exp() * (w * t_f).sin() / w;
+        t_f + overlap_per_speed / self.no_pull_restitution()
     }
 
     /// The damping coefficient γ_n that gives restitution `e` (inverse of eqs 7–8).
@@ -245,6 +274,42 @@ mod tests {
             0.5,
             max_relative = 1e-12
         );
+    }
+
+    #[test]
+    fn the_clamped_force_ends_where_it_crosses_zero_and_not_before() {
+        // Integrated with a step of t_n/2e6, the clamped oscillator's parting speed
+        // and overlap crossing meet the closed forms.
+        for gamma in [1.0, 40.0, 100.0, 180.0, 200.0, 250.0] {
+            let (k, m) = (1e7, 2e-3);
+            let c = LinearCollision::new(k, m, gamma);
+            let dt = c.contact_duration() / 2e6;
+            let (mut x, mut v, mut t) = (0.0, 1.0, 0.0);
+            let force = |x: f64, v: f64| (k * x + gamma * v).max(0.0);
+            let mut a = -force(x, v) / m;
+            let mut parted = None;
+            loop {
+                x += v * dt + 0.5 * a * dt * dt;
+                let v_half = v + 0.5 * a * dt;
+                a = -force(x, v_half) / m;
+                v = v_half + 0.5 * a * dt;
+                t += dt;
+                if parted.is_none() && a == 0.0 && v < 0.0 {
+                    parted = Some(-v);
+                }
+                if x <= 0.0 {
+                    break;
+                }
+            }
+            let e = parted.expect("the force ended");
+            assert_relative_eq!(e, c.no_pull_restitution(), max_relative = 1e-5);
+            assert_relative_eq!(t, c.no_pull_contact_duration(), max_relative = 1e-5);
+            assert!(c.no_pull_restitution() > c.restitution());
+        }
+        // No damping: the clamp never acts.
+        let c = LinearCollision::new(1e7, 2e-3, 0.0);
+        assert_relative_eq!(c.no_pull_restitution(), 1.0);
+        assert_relative_eq!(c.no_pull_contact_duration(), c.contact_duration());
     }
 
     #[test]
