@@ -1,4 +1,4 @@
-//! Accuracy against cost for die compaction (issue 5): one flattened specimen (the
+//! Accuracy against cost for die compaction: one flattened specimen (the
 //! quick NiAl scene, 300 particles) pressed with the pressure ramp slowed (1e-4,
 //! 3e-4, 1e-3 s at α = 0.4) and with the step shortened (α = 0.4, 0.2, 0.1 at the
 //! paper's 1e-4 s ramp). Each pressing's specimen-density curve is compared with the
@@ -26,7 +26,7 @@ const SETTINGS: [(f64, f64, &str); 5] = [
     (1e-4, 0.1, "alpha"),
 ];
 
-/// The curves must stay this close to the most accurate one (issue 5).
+/// The curves must stay this close to the most accurate one.
 pub const WITHIN: f64 = 0.005;
 
 #[derive(Clone, Debug, Serialize, Deserialize)]

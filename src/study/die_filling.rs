@@ -1,4 +1,4 @@
-//! The two fillings of a die-compaction scene side by side (issue 29 point 4): for
+//! The two fillings of a die-compaction scene side by side: for
 //! each seed, the specimen is filled as a settled column and poured through the
 //! funnel (`die_compaction.fill.method`), flattened, and its densities measured as
 //! the press stage starts from them (Rojek §5: the specimen, and the central sphere

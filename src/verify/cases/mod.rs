@@ -83,6 +83,10 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("oblique_pair_impact_lammps", oblique_impact::pair),
     ("three_sphere_impact_liggghts", three_sphere_impact::run),
     ("three_sphere_impact_lammps", three_sphere_impact::run),
+    (
+        "three_sphere_impact_lammps_classic",
+        three_sphere_impact::run,
+    ),
     ("van_der_waals_force", van_der_waals_force::run),
     ("nial_die_compaction_small", nial_die_compaction_small::run),
     ("nial_die_compaction", nial_die_compaction::full),

@@ -46,6 +46,50 @@ pub struct LammpsLinearHistory {
     pub stiffness: f64,
     /// x_γ,t: the tangential dashpot over the normal one, γ_t = x_γ,t η_n.
     pub x_gamma_t: f64,
+    /// LAMMPS's `linear_history_classic` (`classic_step`): the history grown, then
+    /// projected every step without keeping its length. Off: `linear_history`.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub classic: bool,
+}
+
+impl LammpsLinearHistory {
+    /// The spring's stiffness now: k_t, or k_t a (a = √(R* δ)) for the classic history.
+    fn spring(&self, input: &TangentialInput) -> f64 {
+        match self.classic {
+            true => self.stiffness * (input.overlap * input.effective_radius).sqrt(),
+            false => self.stiffness,
+        }
+    }
+}
+
+/// LAMMPS 22 Jul 2025's `linear_history_classic`
+/// (`GranSubModTangentialLinearHistoryClassic::calculate_forces`), operation for
+/// operation:
+///
+/// ```text
+///   h ← h + v_t Δt;  s = |h|;  h ← h − (h·n) n    (projected, length not kept)
+///   a = √(R* δ);  F_t = −(k_t a) h − γ_t v_t
+///   if |F_t| > F_s and s ≠ 0:  F_t ← F_t F_s/|F_t|,  h ← −(F_t + γ_t v_t)/k_t
+///   if |F_t| > F_s and s = 0:  F_t ← 0
+/// ```
+///
+/// The release sets `contact_radius_flag = 1` for this model, so the spring is k_t
+/// times the contact radius a with the hooke normal law too, while the cone's reset
+/// divides by k_t alone. That is not the history of `pair_style gran/hooke/history`
+/// (pair_gran_hooke_history.cpp: the spring k_t, the reset 1/k_t) whose behaviour the
+/// model's comment names: in SI units a is micrometres, and the spring is that many
+/// times softer (docs/lammps.md).
+#[inline(always)]
+fn classic_step(h: &mut Vec3, input: &TangentialInput, k: f64, damping: f64) -> Vec3 {
+    let limit = input.normal_force.abs() * input.friction;
+    *h += input.tangential_velocity * input.dt;
+    let magnitude = h.norm();
+    *h -= input.normal * h.dot(&input.normal);
+    let a = (input.overlap * input.effective_radius).sqrt();
+    let dashpot = input.tangential_velocity * -damping;
+    let mut f = *h * -(k * a) + dashpot;
+    onto_the_cone(&mut f, h, dashpot, limit, -1.0 / k, Some(magnitude));
+    f
 }
 
 impl TangentialModel for LammpsLinearHistory {
@@ -58,26 +102,34 @@ impl TangentialModel for LammpsLinearHistory {
     /// From rest, one step, sticking: F = −k_t v_t Δt − x_γ,t η_n v_t; sliding:
     /// Coulomb's −μ|F_n| v̂_t (the dashpot inside the cone).
     fn examples() -> Vec<TangentialExample> {
-        let law = LammpsLinearHistory {
-            stiffness: 1e6,
-            x_gamma_t: 0.5,
-        };
-        let tangential = TangentialLaw::LammpsLinearHistory(law);
         let eta = 2.0;
         let (stick, slide) = registry::damped_inputs(eta);
         let v = stick.tangential_velocity;
-        vec![
-            TangentialExample {
-                law: tangential,
-                input: stick,
-                force: -v * (1e6 * stick.dt) - v * (0.5 * eta),
-            },
-            TangentialExample {
-                law: tangential,
-                input: slide,
-                force: registry::sliding_force(&slide),
-            },
-        ]
+        // The classic spring is k_t a: its k_t is chosen so that k_t a = 1e6 N/m here.
+        let a = (stick.overlap * stick.effective_radius).sqrt();
+        [(false, 1e6), (true, 1e6 / a)]
+            .into_iter()
+            .flat_map(|(classic, stiffness)| {
+                let tangential = TangentialLaw::LammpsLinearHistory(LammpsLinearHistory {
+                    stiffness,
+                    x_gamma_t: 0.5,
+                    classic,
+                });
+                let spring = if classic { stiffness * a } else { stiffness };
+                [
+                    TangentialExample {
+                        law: tangential,
+                        input: stick,
+                        force: -v * (spring * stick.dt) - v * (0.5 * eta),
+                    },
+                    TangentialExample {
+                        law: tangential,
+                        input: slide,
+                        force: registry::sliding_force(&slide),
+                    },
+                ]
+            })
+            .collect()
     }
 
     /// k_t > 0 (LAMMPS takes k_t = 0, then divides by it on the cone), x_γ,t ≥ 0.
@@ -88,7 +140,11 @@ impl TangentialModel for LammpsLinearHistory {
 
     fn lammps(&self) -> Result<String, NoLammpsModel> {
         Ok(format!(
-            "linear_history {} {} {{mu}}",
+            "{} {} {} {{mu}}",
+            match self.classic {
+                true => "linear_history_classic",
+                false => "linear_history",
+            },
             crate::decimal::g(self.stiffness),
             crate::decimal::g(self.x_gamma_t)
         ))
@@ -98,22 +154,26 @@ impl TangentialModel for LammpsLinearHistory {
     fn force(&self, input: &TangentialInput, h: &mut Vec3) -> Vec3 {
         let k = self.stiffness;
         let damping = self.x_gamma_t * input.normal_damping;
+        if self.classic {
+            return classic_step(h, input, k, damping);
+        }
         let limit = input.normal_force.abs() * input.friction;
         turn_above_threshold(h, &input.normal, k, limit);
         *h += input.tangential_velocity * input.dt;
         let dashpot = input.tangential_velocity * -damping;
         let mut f = *h * -k + dashpot;
-        onto_the_cone(&mut f, h, dashpot, limit, -1.0 / k);
+        onto_the_cone(&mut f, h, dashpot, limit, -1.0 / k, None);
         f
     }
 
-    fn stiffness(&self, _: &TangentialInput) -> f64 {
-        self.stiffness
+    /// k_t, or k_t a for the classic history.
+    fn stiffness(&self, input: &TangentialInput) -> f64 {
+        self.spring(input)
     }
 
-    /// ½ k_t |h|².
-    fn energy(&self, _: &TangentialInput, h: &Vec3) -> f64 {
-        0.5 * self.stiffness * h.norm_squared()
+    /// ½ k |h|² with the spring's k (k_t, or k_t a for the classic history).
+    fn energy(&self, input: &TangentialInput, h: &Vec3) -> f64 {
+        0.5 * self.spring(input) * h.norm_squared()
     }
 
     fn stiffness_before_contact(&self, _: f64) -> f64 {
@@ -133,6 +193,7 @@ mod tests {
         LammpsLinearHistory {
             stiffness: 1e4,
             x_gamma_t: 0.5,
+            classic: false,
         }
     }
 
@@ -176,8 +237,47 @@ mod tests {
         }
     }
 
+    /// The classic history is projected every step, its length not kept: a history
+    /// tilted by 1e-12 rad, which `linear_history` leaves alone, loses its normal
+    /// component and with it its length (by cos of the tilt); so does one tilted by 0.6,
+    /// which `linear_history` turns at full length.
+    #[test]
+    fn the_classic_history_is_projected_every_step_and_shrinks() {
+        let classic = LammpsLinearHistory {
+            classic: true,
+            ..law()
+        };
+        for tilt in [1e-12, 0.6f64] {
+            let mut h = Vec3::new(1e-3 * tilt.cos(), 0.0, 1e-3 * tilt.sin());
+            classic.force(&input(Vec3::zeros(), 100.0, 0.0), &mut h);
+            assert_eq!(h.z, 0.0, "tilt {tilt}");
+            approx::assert_relative_eq!(h.x, 1e-3 * tilt.cos(), max_relative = 1e-15);
+        }
+        // The history grows before it is projected: a velocity along n is removed; the
+        // spring is k_t times the contact radius a = √(R* δ).
+        let mut h = Vec3::new(1e-4, 0.0, 0.0);
+        let along_n = input(Vec3::new(0.0, 0.0, 1.0), 100.0, 0.0);
+        let f = classic.force(&along_n, &mut h);
+        assert_eq!(h, Vec3::new(1e-4, 0.0, 0.0));
+        let a = (along_n.overlap * along_n.effective_radius).sqrt();
+        assert_eq!(f, Vec3::new(-(1e4 * a) * 1e-4, 0.0, 0.0));
+        // On the cone the history is reset with 1/k_t, not 1/(k_t a).
+        let mut h = Vec3::new(1.0, 0.0, 0.0);
+        let f = classic.force(&input(Vec3::zeros(), 1e-6, 0.0), &mut h);
+        approx::assert_relative_eq!(f.x, -0.5e-6, max_relative = 1e-15);
+        approx::assert_relative_eq!(h.x, 0.5e-6 / 1e4, max_relative = 1e-15);
+    }
+
     #[test]
     fn names_its_lammps_keyword_and_coefficients() {
         assert_eq!(law().lammps().unwrap(), "linear_history 1e4 5e-1 {mu}");
+        let classic = LammpsLinearHistory {
+            classic: true,
+            ..law()
+        };
+        assert_eq!(
+            classic.lammps().unwrap(),
+            "linear_history_classic 1e4 5e-1 {mu}"
+        );
     }
 }

@@ -64,7 +64,8 @@ pub(super) fn turn_above_threshold(h: &mut Vec3, normal: &Vec3, scale: f64, limi
 /// LAMMPS's Coulomb step (shared by its history models): a force F beyond F_s is
 /// scaled onto the cone and the history set to the elastic part F − F_damp, times
 /// `to_history` (−1/k for a displacement history, 1 for a force history); with an
-/// empty history the force is dropped instead.
+/// empty history (|h| now, or `magnitude` where the model measured it before) the force
+/// is dropped instead.
 #[inline(always)]
 pub(super) fn onto_the_cone(
     f: &mut Vec3,
@@ -72,11 +73,12 @@ pub(super) fn onto_the_cone(
     damping: Vec3,
     limit: f64,
     to_history: f64,
+    magnitude: Option<f64>,
 ) {
-    let magnitude = f.norm();
-    if magnitude > limit {
-        if h.norm() != 0.0 {
-            *f *= limit / magnitude;
+    let force = f.norm();
+    if force > limit {
+        if magnitude.unwrap_or_else(|| h.norm()) != 0.0 {
+            *f *= limit / force;
             *h = (*f - damping) * to_history;
         } else {
             *f = Vec3::zeros();
@@ -259,7 +261,7 @@ impl TangentialModel for LammpsMindlin {
         let dashpot = input.tangential_velocity * -damping;
         let mut f = if force_history { *h } else { *h * -k_scaled } + dashpot;
         let to_history = if force_history { 1.0 } else { -1.0 / k_scaled };
-        onto_the_cone(&mut f, h, dashpot, limit, to_history);
+        onto_the_cone(&mut f, h, dashpot, limit, to_history, None);
         f
     }
 
@@ -363,7 +365,7 @@ mod tests {
                 "mindlin -1 0e0 {mu}",
                 "mindlin/force -1 0e0 {mu}",
                 "mindlin_rescale -1 0e0 {mu}",
-                "mindlin_rescale/force -1 0e0 {mu}"
+                "mindlin_rescale/force -1 0e0 {mu}",
             ]
         );
         let damped = LammpsMindlin {
