@@ -34,7 +34,6 @@
 
 use super::die_compaction_file::{DieCompactionFile, DieCompactionSpec, FillMethod};
 use super::funnel::Funnel;
-use crate::contact::record::ContactRecord;
 use crate::error::{Result, TampError};
 use crate::generate::rsi::{InsertionBox, Placed};
 use crate::measure::{Region, packing::packing_fraction};
@@ -120,11 +119,6 @@ pub struct Pressing {
     /// Particles whose centre left the die (radially, below the floor or above the
     /// punch face) at some step of the pressing.
     pub escaped: Vec<usize>,
-    /// The contacts of the last step, at the full pressure (the force chains). Not
-    /// checkpointed: a resumed pressing records them again at its last step; empty for
-    /// a pressing read back from a file.
-    #[serde(skip)]
-    pub last_contacts: Vec<ContactRecord>,
 }
 
 /// Where a pressing is, for a restart checkpoint: the records so far and the
@@ -688,7 +682,6 @@ pub fn press(
                 records: Vec::with_capacity(records + 1),
                 steps: 0,
                 escaped: Vec::new(),
-                last_contacts: Vec::new(),
             };
             record(&sim, &mut out)?;
             out
@@ -742,13 +735,7 @@ pub fn press(
         }
         let dt = sim.state.dt;
         sim.set_time_step(dt.min(due - sim.state.time))?;
-        // The step that lands on the last record time: keep its contacts (a read-only
-        // pass, so the pressing is the same with or without it).
-        if next == records && sim.state.dt == due - sim.state.time {
-            out.last_contacts = sim.step_recording_contacts()?;
-        } else {
-            sim.step()?;
-        }
+        sim.step()?;
         sim.set_time_step(dt)?;
         let height = specimen.h0 + sim.state.walls[punch].displacement.z;
         let p = &sim.state.particles;

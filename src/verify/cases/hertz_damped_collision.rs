@@ -25,9 +25,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let mut out = Vec::new();
     for (e, s) in each_restitution(ctx, &base)? {
         let pair = Pair::of(&s)?;
-        let k = 4.0 / 3.0 * pair.effective_modulus()? * pair.r_eff.sqrt();
-        let v = pair.approach;
-        let delta_s = (pair.m_eff * v * v / k).powf(0.4);
+        let (v, delta_s) = (pair.approach, pair.hertz_overlap_scale()?);
         let xi = LiggghtsModel::Hertz.critical_fraction(e);
         let unit =
             unit_impact(Dashpot::CriticalFraction, critical_fraction_c(xi)).ok_or_else(|| {

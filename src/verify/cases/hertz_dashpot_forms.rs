@@ -48,9 +48,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         let mut s = base.clone();
         s.contact.damping = Some(run.damping.into());
         let pair = Pair::of(&s)?;
-        let k = 4.0 / 3.0 * pair.effective_modulus()? * pair.r_eff.sqrt();
-        let v = pair.approach;
-        let delta_s = (pair.m_eff * v * v / k).powf(0.4);
+        let (v, delta_s) = (pair.approach, pair.hertz_overlap_scale()?);
         let (dashpot, c) = match run.damping {
             Damping::Tsuji(t) => (
                 Dashpot::CriticalFraction,

@@ -119,7 +119,6 @@ fn pressing(
         records,
         steps: rec.frames.last().map_or(0, |f| f.step),
         escaped,
-        last_contacts: Vec::new(),
     })
 }
 

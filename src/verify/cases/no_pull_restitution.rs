@@ -90,14 +90,9 @@ pub fn hertz(ctx: &CaseContext) -> Result<Vec<Measured>> {
         return Err(TampError::Other("the scene must use hertz".into()));
     }
     let mut out = Vec::new();
-    for (e, mut s) in each_restitution(ctx, &base)? {
-        if let Some(d) = &mut s.contact.damping {
-            d.limit = true;
-        }
+    for (e, s) in each_restitution(ctx, &base)? {
         let pair = Pair::of(&s)?;
-        let k = 4.0 / 3.0 * pair.effective_modulus()? * pair.r_eff.sqrt();
-        let v = pair.approach;
-        let delta_s = (pair.m_eff * v * v / k).powf(0.4);
+        let (v, delta_s) = (pair.approach, pair.hertz_overlap_scale()?);
         let xi = LiggghtsModel::Hertz.critical_fraction(e);
         let unit = unit_impact_no_pull(Dashpot::CriticalFraction, critical_fraction_c(xi))
             .ok_or_else(|| {

@@ -13,6 +13,7 @@ use crate::collision::Collision;
 use crate::contact::damping::{Damping, LiggghtsRestitution};
 use crate::error::{Result, TampError};
 use crate::material::{effective_mass, effective_radius};
+use crate::scene::contact::DampingSpec;
 use crate::scene::schema::RunSpec;
 use crate::scene::{self, Scene};
 use crate::verify::recording::RecordSpec;
@@ -67,6 +68,14 @@ impl Pair {
                 "the pair's materials give no E* (youngs_modulus, poisson_ratio)".into(),
             )
         })
+    }
+
+    /// δ_s = (m* v²/K)^{2/5}, K = 4/3 E* √R*: the overlap unit of the dimensionless Hertz
+    /// impact (`accuracy::damped_hertz`) at the approach speed, m.
+    pub fn hertz_overlap_scale(&self) -> Result<f64> {
+        let k = 4.0 / 3.0 * self.effective_modulus()? * self.r_eff.sqrt();
+        let v = self.approach;
+        Ok((self.m_eff * v * v / k).powf(0.4))
     }
 
     /// Steps that close the gap and then last `contacts` Hertz contact durations at the
@@ -139,8 +148,11 @@ pub fn each_restitution(ctx: &CaseContext, base: &Scene) -> Result<Vec<(f64, Sce
         .into_iter()
         .map(|e| {
             let mut s = base.clone();
-            s.contact.damping =
-                Some(Damping::LiggghtsRestitution(LiggghtsRestitution { restitution: e }).into());
+            // The scene's clamp (`contact.damping.limit`) stays as the base scene has it.
+            s.contact.damping = Some(DampingSpec {
+                kind: Damping::LiggghtsRestitution(LiggghtsRestitution { restitution: e }),
+                limit: base.contact.damping.is_some_and(|d| d.limit),
+            });
             (e, s)
         })
         .collect())
