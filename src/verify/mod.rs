@@ -303,6 +303,24 @@ impl<'a> CaseContext<'a> {
         Ok(recording)
     }
 
+    /// `measure` of `scene`'s recording (`record`), kept in the case's store as
+    /// `name` on the tamp engine, whose runs the store can name by the source tree; an
+    /// outside engine runs every time.
+    pub fn record_and_keep<T: Serialize + serde::de::DeserializeOwned>(
+        &self,
+        store: &store::Store,
+        name: &str,
+        (label, scene, spec): (&str, &Scene, RecordSpec),
+        measure: impl FnOnce(&Recording) -> Result<T>,
+    ) -> Result<T> {
+        if self.engine != Engine::Tamp {
+            return measure(&self.record(label, scene, spec)?);
+        }
+        self.recorded.store(true, Ordering::Relaxed);
+        let key = store::key_of(&(scene, spec.trajectory_every, spec.walls));
+        store.cached(name, &key, || measure(&self.record(label, scene, spec)?))
+    }
+
     /// `reference_data/<peer>/engine/<case>.json`.
     fn peer_record_path(&self, peer: engine::peer::Peer) -> PathBuf {
         peer_record::path(&reference_data_beside(&self.dir), peer, &self.spec.name)

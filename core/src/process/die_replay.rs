@@ -12,9 +12,9 @@
 //! per record) and once for tamp (a `displacement` motion whose chord over a step is
 //! the segment's speed, `boundary::motion`).
 //!
-//! At each record the replay measures what a pressing does: the particles' force on
-//! punch and floor over the die's cross-section, and the specimen and RVE densities
-//! at the punch height (`die_compaction::densities`).
+//! A replay is measured from its recorded frames as a pressing is: the particles'
+//! force on punch and floor over the die's cross-section, and the specimen and RVE
+//! densities at the punch height (`die_compaction::densities_in`).
 
 use super::die_compaction::{self, Pressing, Specimen};
 use super::die_compaction_file::DieCompactionFile;
@@ -22,11 +22,9 @@ use crate::error::{Result, TampError};
 use crate::scene::Scene;
 use crate::scene::walls::MotionSpec;
 use serde::{Deserialize, Serialize};
-use std::f64::consts::PI;
 
 /// Index of the punch among the press stage's walls (die, floor, punch).
 const PUNCH: usize = 2;
-const FLOOR: usize = 1;
 
 /// A recorded punch stroke: the heights at equal record intervals.
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -161,42 +159,6 @@ pub fn replay_scene(
     s.run.duration = Some(stroke.interval * stroke.heights.len() as f64);
     crate::scene::validate::validate(&s)?;
     Ok(s)
-}
-
-/// Replay `stroke` on `specimen` under the scene's press law; one record per stroke
-/// record (the first is the specimen before the stroke).
-pub fn replay(
-    file: &DieCompactionFile,
-    specimen: &Specimen,
-    stroke: &Stroke,
-) -> Result<Vec<ReplayRecord>> {
-    let dc = &file.die_compaction;
-    let area = PI * (0.5 * dc.die_diameter).powi(2);
-    let stage = replay_scene(file, specimen, stroke)?;
-    let mut sim = crate::scene::build(&stage)?.sim;
-    let mut out = Vec::with_capacity(stroke.heights.len() + 1);
-    let mut record = |sim: &crate::simulation::Simulation| -> Result<()> {
-        let height = specimen.h0 + sim.state.walls[PUNCH].displacement.z;
-        let (density_specimen, density_rve) =
-            die_compaction::densities(&sim.state.particles, dc, height)?;
-        out.push(ReplayRecord {
-            time: sim.state.time,
-            height,
-            punch_pressure: sim.state.wall_force[PUNCH].z / area,
-            floor_pressure: -sim.state.wall_force[FLOOR].z / area,
-            density_specimen,
-            density_rve,
-        });
-        Ok(())
-    };
-    record(&sim)?;
-    for _ in &stroke.heights {
-        for _ in 0..stroke.steps_per_record {
-            sim.step()?;
-        }
-        record(&sim)?;
-    }
-    Ok(out)
 }
 
 #[cfg(test)]

@@ -9,12 +9,14 @@
 //! law its peer can express.
 //!
 //! For each seed recorded in `reference_data/<peer>/<case>/results.csv`, tamp
-//! fills and flattens the specimen (the one the export carried to LIGGGHTS: its
-//! H₀ must equal the recorded one, else the recording is stale) and replays the
-//! recorded stroke with its own force loop; the peer replayed the same stroke from
-//! the same specimen. Both codes then move the punch through the same heights, so
-//! what the comparison tests is the force each needs to get there, and what that
-//! force does to the bed:
+//! fills and flattens the specimen (the scene's preparation, the one the export
+//! carried to the peer: its H₀ must equal the recorded one, else the recording is
+//! stale), and the case's engine replays the recorded stroke on it: the resolved
+//! press stage with the punch's `displacement` motion, recorded at every record
+//! interval with the walls. Everything compared is measured from those frames; the
+//! peer replayed the same stroke from the same specimen. Both codes then move the
+//! punch through the same heights, so what the comparison tests is the force each
+//! needs to get there, and what that force does to the bed:
 //! - at the punch pressures 10, 25 and 50 MPa, each code's own (interpolated
 //!   between records along its punch-pressure curve; beyond the last record,
 //!   extrapolated from the last two), the specimen and RVE densities and, at
@@ -22,11 +24,11 @@
 //! - at the last record (the same height in both), the punch and floor pressures
 //!   (force over the die's cross-section).
 //!
-//! Each quantity is tamp's value against the peer's, averaged over the seeds. The
-//! report gets both codes' curves (`<case>_curves.csv`). tamp's replays are
-//! independent, so they run one per core and are kept in the runner's store
-//! (`verify::store`): a full-tier run that is killed does not press again what it
-//! finished.
+//! Each quantity is the engine's value against the peer's, averaged over the seeds.
+//! The report gets both curves (`<case>_curves.csv`). The replays are independent,
+//! so they run one per core, and on the tamp engine they are kept in the runner's
+//! store (`verify::store`): a full-tier run that is killed does not press again what
+//! it finished.
 //!
 //! The live cross-check runs the peer on the recorded deck (`seed<S>/in.tamp`,
 //! `particles.data`, `stroke.json`) rather than exporting it again, since the
@@ -37,13 +39,18 @@
 //! give another stroke but not a wrong comparison: both codes replay the recorded
 //! one.
 
+use super::nial_die_compaction_small::Walls;
 use crate::error::{Result, TampError};
+use crate::particles::Vec3;
 use crate::plot::{Panel, Series, write_svg};
+use crate::process::die_compaction::densities_in;
 use crate::process::die_compaction_file::DieCompactionFile;
 use crate::process::die_replay::{self, ReplayRecord, Stroke};
-use crate::verify::store::{Store, key_of};
+use crate::verify::recording::RecordSpec;
+use crate::verify::store::Store;
 use crate::verify::{CaseContext, Measured};
 use serde::Deserialize;
+use std::f64::consts::PI;
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -175,15 +182,16 @@ fn compare(ctx: &CaseContext, peer: &str) -> Result<Vec<Measured>> {
     // The replays are independent: one per core, each kept in the case's store.
     let store = ctx.store()?;
     let replays = ctx
-        .map(&runs, |run| replay(&store, run))
+        .map(&runs, |run| replay(ctx, &store, run))
         .into_iter()
         .collect::<Result<Vec<_>>>()?;
 
+    let engine = ctx.engine.to_string();
     let mut curves = String::from(
         "code,pressing,seed,record,time,height,punch_pressure,floor_pressure,density_specimen,density_rve\n",
     );
     for (run, tamp) in runs.iter().zip(&replays) {
-        for (code, records) in [("tamp", tamp), (peer, &run.theirs)] {
+        for (code, records) in [(engine.as_str(), tamp), (peer, &run.theirs)] {
             for (k, r) in records.iter().enumerate() {
                 let _ = writeln!(
                     curves,
@@ -214,7 +222,7 @@ fn compare(ctx: &CaseContext, peer: &str) -> Result<Vec<Measured>> {
             label => format!("{code}, {label}"),
         };
         let (first, tamp) = of_pressing[0];
-        panels_series.push((tag("tamp"), tamp.clone()));
+        panels_series.push((tag(&engine), tamp.clone()));
         panels_series.push((tag(peer), first.theirs.clone()));
         // Each quantity is the mean over the seeds of each code's value.
         let n = of_pressing.len() as f64;
@@ -316,26 +324,57 @@ fn recorded_runs(
     Ok(out)
 }
 
-/// tamp's replay of a recorded run: fill and flatten the specimen (the one the
-/// export carried to the peer: its H₀ must equal the recorded one, else the
-/// recording is stale) and move the punch through the recorded heights.
-fn replay(store: &Store, run: &RecordedRun) -> Result<Vec<ReplayRecord>> {
-    let name = match run.label.as_str() {
-        "" => format!("seed{}.replay.json", run.seed),
-        label => format!("{label}_seed{}.replay.json", run.seed),
+/// The engine's replay of a recorded run: tamp fills and flattens the specimen (the
+/// one the export carried to the peer: its H₀ must equal the recorded one, else the
+/// recording is stale), and the engine moves the punch through the recorded heights
+/// at the stroke's fixed step, recording the particles and walls at every record.
+fn replay(ctx: &CaseContext, store: &Store, run: &RecordedRun) -> Result<Vec<ReplayRecord>> {
+    let label = match run.label.as_str() {
+        "" => format!("seed{}", run.seed),
+        label => format!("{label}_seed{}", run.seed),
     };
-    store.cached(&name, &key_of(&(&run.scene, &run.stroke)), || {
-        let specimen = super::die_specimen::prepare(&run.scene)?;
-        let recorded = run.stroke.h0;
-        if (specimen.h0 - recorded).abs() > 1e-12 * recorded {
-            return Err(TampError::Other(format!(
-                "results.csv: seed {} was recorded for a specimen of H0 = {recorded:e} m; tamp now fills one of {:e} m: re-record (regenerate.sh)",
-                run.seed, specimen.h0
-            )));
-        }
-        let solid = die_replay::solid_sphere_scene(&run.scene);
-        die_replay::replay(&solid, &specimen, &run.stroke)
-    })
+    let specimen = super::die_specimen::prepare(&run.scene)?;
+    let recorded = run.stroke.h0;
+    if (specimen.h0 - recorded).abs() > 1e-12 * recorded {
+        return Err(TampError::Other(format!(
+            "results.csv: seed {} was recorded for a specimen of H0 = {recorded:e} m; tamp now fills one of {:e} m: re-record (regenerate.sh)",
+            run.seed, specimen.h0
+        )));
+    }
+    let solid = die_replay::solid_sphere_scene(&run.scene);
+    let mut scene = die_replay::replay_scene(&solid, &specimen, &run.stroke)?;
+    let per_record = run.stroke.steps_per_record;
+    scene.run.duration = None;
+    scene.run.steps = Some(per_record * run.stroke.heights.len() as u64);
+    let walls = Walls::of(&scene)?;
+    let spec = RecordSpec::every(per_record, false).with_walls();
+    let dc = &run.scene.die_compaction;
+    ctx.record_and_keep(
+        store,
+        &format!("{label}.replay.json"),
+        (&label, &scene, spec),
+        |rec| {
+            let area = PI * (0.5 * dc.die_diameter).powi(2);
+            rec.frames
+                .iter()
+                .map(|f| {
+                    let height = specimen.h0 + f.walls[walls.punch].displacement.z;
+                    let positions: Vec<Vec3> = f.bodies.iter().map(|b| b.position).collect();
+                    let radii: Vec<f64> = f.bodies.iter().map(|b| b.radius).collect();
+                    let (density_specimen, density_rve) =
+                        densities_in(&positions, &radii, dc.die_diameter, dc.rve_diameter, height)?;
+                    Ok(ReplayRecord {
+                        time: f.step as f64 * rec.dt,
+                        height,
+                        punch_pressure: f.walls[walls.punch].force.z / area,
+                        floor_pressure: -f.walls[walls.floor].force.z / area,
+                        density_specimen,
+                        density_rve,
+                    })
+                })
+                .collect()
+        },
+    )
 }
 
 /// `<case>_density_pressure.svg`: the specimen and RVE densities against the punch

@@ -35,14 +35,14 @@ use std::f64::consts::PI;
 const FRAMES_PER_RECORD: u64 = 10;
 
 /// The press stage's walls, by the names `die_compaction::press_scene` gives them.
-struct Walls {
-    die: usize,
-    floor: usize,
-    punch: usize,
+pub(super) struct Walls {
+    pub die: usize,
+    pub floor: usize,
+    pub punch: usize,
 }
 
 impl Walls {
-    fn of(scene: &crate::scene::Scene) -> Result<Walls> {
+    pub(super) fn of(scene: &crate::scene::Scene) -> Result<Walls> {
         let find = |name: &str| {
             scene
                 .walls
