@@ -36,6 +36,8 @@
 
 use crate::contact::lammps::LammpsNormal;
 use crate::contact::lever_arm::LeverArm;
+use crate::contact::tangential::TangentialLaw;
+use crate::contact::tangential::lammps_linear_history::LammpsHistory;
 use crate::document::Document;
 use crate::error::{Result, TampError};
 use crate::liggghts::export::{DUMP_COLUMNS, Exported, frame_every, load_with_seed, neighbor_skin};
@@ -98,9 +100,113 @@ pub(super) fn pair_model(scene: &Scene) -> std::result::Result<String, Vec<(Stri
     }
 }
 
-/// Every field of `scene` LAMMPS's `pair granular` cannot express, as (path, reason).
+/// The arguments of `pair_style gran/hooke/history`, `k_n k_t γ_n γ_t {mu} dampflag
+/// [limit_damping]`, for a scene whose tangential law
+/// keeps that style's history (`"history": "gran_hooke_history"`: the classic rule with
+/// the spring k_t, which no `pair granular` model has), or the fields the style cannot
+/// say; `None` for every other scene. The style's normal force is k_n δ − m* γ_n v_n
+/// (tamp's `linear` law with `mass_velocity` damping), its tangential dashpot m* γ_t
+/// with γ_t = x_γ,t γ_n (none with dampflag 0), one μ for every pair of particles
+/// (`pair_coeff * *`).
+fn gran_hooke_history(scene: &Scene) -> Option<std::result::Result<String, Vec<(String, String)>>> {
+    let friction = scene.contact.tangential.as_ref()?;
+    let TangentialLaw::LammpsLinearHistory(law) = friction.law else {
+        return None;
+    };
+    if law.history != LammpsHistory::GranHookeHistory {
+        return None;
+    }
+    let mut refused = Vec::new();
+    let stiffness = match scene.contact.normal.lammps() {
+        Ok(LammpsNormal::Hooke { stiffness }) => Some(stiffness),
+        _ => {
+            refused.push((
+                "contact.normal.law".to_string(),
+                "gran/hooke/history's normal force is hooke's k_n δ: tamp's 'linear' law"
+                    .to_string(),
+            ));
+            None
+        }
+    };
+    let gamma_n = match (scene.contact.dashpot(), stiffness) {
+        (None, _) => Some(0.0),
+        (Some(d), Some(k)) => match d.lammps(LammpsNormal::Hooke { stiffness: k }) {
+            Ok(l) if l.keyword == "mass_velocity" => Some(l.coefficient),
+            _ => {
+                refused.push((
+                    "contact.damping.kind".to_string(),
+                    "gran/hooke/history damps with m* γ_n: tamp's 'mass_velocity'".to_string(),
+                ));
+                None
+            }
+        },
+        (Some(_), None) => None,
+    };
+    if !scene.walls.is_empty() {
+        refused.push((
+            "walls".to_string(),
+            "LAMMPS 22 Jul 2025's fix wall/gran hooke/history is pair granular's hooke with linear_history_classic (the spring k_t times the contact radius; the same dump byte for byte, docs/lammps.md), not pair_style gran/hooke/history's history: no LAMMPS wall keeps this history".to_string(),
+        ));
+    }
+    if let Some(k) = friction
+        .friction_pairs
+        .iter()
+        .position(|p| p.materials.iter().all(|m| made_of(scene, m)))
+    {
+        refused.push((
+            format!("contact.tangential.friction_pairs[{k}]"),
+            "pair_style gran/hooke/history gives every pair of particles one μ (pair_coeff * *)"
+                .to_string(),
+        ));
+    }
+    let (Some(k_n), Some(gamma_n), true) = (stiffness, gamma_n, refused.is_empty()) else {
+        return Some(Err(refused));
+    };
+    let gamma_t = law.x_gamma_t * gamma_n;
+    let limit = match scene.contact.damping.is_some_and(|d| d.limit) {
+        true => " limit_damping",
+        false => "",
+    };
+    Some(Ok(format!(
+        "{} {} {} {} {{mu}} {}{limit}",
+        g(k_n),
+        g(law.stiffness),
+        g(gamma_n),
+        g(gamma_t),
+        u8::from(gamma_t > 0.0)
+    )))
+}
+
+/// The pair style of the scene and the model of every `pair_coeff` and wall fix:
+/// `gran/hooke/history` where the scene keeps that style's history, else `granular`
+/// (`pair_model`), with E, ν and μ left as `{E}`, `{nu}` and `{mu}`.
+fn pair_style(scene: &Scene) -> std::result::Result<PairStyle, Vec<(String, String)>> {
+    match gran_hooke_history(scene) {
+        Some(args) => args.map(PairStyle::GranHookeHistory),
+        None => pair_model(scene).map(PairStyle::Granular),
+    }
+}
+
+/// `pair_style granular` with its model, or `pair_style gran/hooke/history` with its
+/// arguments.
+enum PairStyle {
+    Granular(String),
+    GranHookeHistory(String),
+}
+
+impl PairStyle {
+    /// The model or arguments, as `pair_coeff` (granular) or `pair_style` (gran) write
+    /// them.
+    fn model(&self) -> &str {
+        match self {
+            PairStyle::Granular(model) | PairStyle::GranHookeHistory(model) => model,
+        }
+    }
+}
+
+/// Every field of `scene` LAMMPS cannot express, as (path, reason).
 pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
-    let mut out = pair_model(scene).err().unwrap_or_default();
+    let mut out = pair_style(scene).err().unwrap_or_default();
     let mut refuse = |path: String, why: &str| out.push((path, why.to_string()));
     if scene.output.trajectory_every_step_from.is_some() {
         refuse(
@@ -258,10 +364,17 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
     }
     // The lever arms matter only when spins and a tangential force act.
     let spins_and_friction = scene.rotation.is_some() && scene.contact.tangential.is_some();
-    if spins_and_friction && scene.contact.lever_arm != LeverArm::Lammps {
+    let gran = gran_hooke_history(scene).is_some();
+    if spins_and_friction && !gran && scene.contact.lever_arm != LeverArm::Lammps {
         refuse(
             "contact.lever_arm".into(),
             "LAMMPS's pair granular and fix wall/gran take the full radii for the contact-point velocity (and for a wall's torque); set \"lever_arm\": \"lammps\" for the same physics",
+        );
+    }
+    if spins_and_friction && gran && scene.contact.lever_arm != LeverArm::FullRadius {
+        refuse(
+            "contact.lever_arm".into(),
+            "pair_style gran/hooke/history takes the full radii for the contact-point velocity and the torques; set \"lever_arm\": \"full_radius\" for the same physics",
         );
     }
     out
@@ -629,7 +742,8 @@ pub fn export(
     if !list.is_empty() {
         return Err(refuse_all(list));
     }
-    let model = pair_model(scene).map_err(refuse_all)?;
+    let style = pair_style(scene).map_err(refuse_all)?;
+    let model = style.model();
     let built = scene::build(scene)?;
     let sim = built.sim;
     let p = &sim.state.particles;
@@ -771,7 +885,7 @@ pub fn export(
     deck.push_str("newton       off\ncomm_modify  vel yes\nread_data    particles.data\n");
     let _ = writeln!(deck, "neighbor     {} bin\nneigh_modify delay 0", g(skin));
     deck.push_str(
-        "# limit_damping as contact.damping.limit: the total normal force clamped at zero, or free to pull.\npair_style   granular\n",
+        "# limit_damping as contact.damping.limit: the total normal force clamped at zero, or free to pull.\n",
     );
     let has_friction_pairs = scene
         .contact
@@ -791,16 +905,29 @@ pub fn export(
     let mut kinds: Vec<usize> = p.material.clone();
     kinds.sort_unstable();
     kinds.dedup();
-    for k in 0..sim.model.materials.len() {
-        let _ = writeln!(
-            deck,
-            "pair_coeff   {} {} {}",
-            k + 1,
-            k + 1,
-            line(k, mu(k, k))
-        );
+    match &style {
+        PairStyle::Granular(_) => {
+            deck.push_str("pair_style   granular\n");
+            for k in 0..sim.model.materials.len() {
+                let _ = writeln!(
+                    deck,
+                    "pair_coeff   {} {} {}",
+                    k + 1,
+                    k + 1,
+                    line(k, mu(k, k))
+                );
+            }
+        }
+        PairStyle::GranHookeHistory(_) => {
+            let first = kinds.first().copied().unwrap_or(0);
+            let _ = writeln!(
+                deck,
+                "pair_style   gran/hooke/history {}\npair_coeff   * *",
+                line(first, mu(first, first))
+            );
+        }
     }
-    if has_friction_pairs {
+    if has_friction_pairs && matches!(style, PairStyle::Granular(_)) {
         // LAMMPS would mix μ_ii and μ_jj; tamp's μ_ij is the scene's (refusals checked
         // that the two materials share E and ν, so E* is mixed as tamp mixes it).
         for (x, &a) in kinds.iter().enumerate() {
@@ -924,6 +1051,47 @@ mod tests {
               "time_step": {{"fixed": 1e-9}}, "run": {{"duration": 1e-6}}{extra}}}"#
         ))
         .expect("a valid scene")
+    }
+
+    /// The gran/hooke/history history is written as that pair style, with its
+    /// coefficients in its order; what the style cannot say is refused by field.
+    #[test]
+    fn the_gran_history_is_pair_style_gran_hooke_history() {
+        let gran = r#"{"normal": {"law": "linear", "stiffness": 2e6},
+            "damping": {"kind": "mass_velocity", "eta_n0": 2e4},
+            "tangential": {"law": "lammps_linear_history", "stiffness": 1e6, "x_gamma_t": 0.5,
+                           "history": "gran_hooke_history", "friction": 0.3},
+            "lever_arm": "full_radius"}"#;
+        let s = two_spheres(gran, r#", "rotation": {}"#);
+        assert!(refusals(&s).is_empty(), "{:?}", refusals(&s));
+        let out = std::env::temp_dir().join(format!("tamp-gran-{}", std::process::id()));
+        export(&s, "0", &out, None).unwrap();
+        let deck = std::fs::read_to_string(out.join("in.tamp")).unwrap();
+        std::fs::remove_dir_all(&out).unwrap();
+        assert!(
+            deck.contains(
+                "pair_style   gran/hooke/history 2e6 1e6 2e4 1e4 3e-1 1\npair_coeff   * *\n"
+            ),
+            "{deck}"
+        );
+        let refused = |contact: &str, extra: &str| -> Vec<String> {
+            refusals(&two_spheres(contact, extra))
+                .into_iter()
+                .map(|(f, _)| f)
+                .collect()
+        };
+        let constant = gran.replace(
+            r#""kind": "mass_velocity", "eta_n0": 2e4"#,
+            r#""kind": "constant", "gamma_n": 0.5"#,
+        );
+        assert_eq!(
+            refused(&constant, r#", "rotation": {}"#),
+            ["contact.damping.kind"]
+        );
+        let arms = gran.replace("full_radius", "lammps");
+        assert_eq!(refused(&arms, r#", "rotation": {}"#), ["contact.lever_arm"]);
+        let wall = r#", "rotation": {}, "walls": [{"shape": {"kind": "plane", "point": [0, 0, -0.002], "normal": [0, 0, 1]}, "material": "steel"}]"#;
+        assert_eq!(refused(gran, wall), ["walls"]);
     }
 
     #[test]

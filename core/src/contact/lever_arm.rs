@@ -23,6 +23,16 @@
 //!   wall: v_c = v_i − v_w − R_i ω_i × n,              T_i = −R_i n × F_t
 //!
 //! The two differ by δ/R in the spin terms (docs/lammps.md, behaviours found).
+//!
+//! `full_radius` (LAMMPS's `pair_style gran/hooke/history`, pair_gran_hooke_history.cpp
+//! `PairGranHookeHistory::compute`): the full radii in the contact velocity and in the
+//! torques, pairs and walls:
+//!
+//!   v_c = v_i − v_j − (R_i ω_i + R_j ω_j) × n,   T_{i,j} = −R_{i,j} n × F_t
+//!
+//! The arms of a pair add up to R_i + R_j, more than the centre distance by δ, so the
+//! torques of a sliding or sticking contact change the pair's angular momentum by δ/R
+//! of their moment.
 
 /// The scene's convention (`contact.lever_arm`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Deserialize, serde::Serialize)]
@@ -33,6 +43,8 @@ pub enum LeverArm {
     MidOverlap,
     /// LAMMPS 22 Jul 2025 `pair granular` and `fix wall/gran granular`.
     Lammps,
+    /// LAMMPS's `pair_style gran/hooke/history`: R everywhere.
+    FullRadius,
 }
 
 impl LeverArm {
@@ -41,6 +53,7 @@ impl LeverArm {
         match self {
             LeverArm::MidOverlap => "mid_overlap",
             LeverArm::Lammps => "lammps",
+            LeverArm::FullRadius => "full_radius",
         }
     }
 }
@@ -71,6 +84,10 @@ impl LeverArm {
                 velocity: radius,
                 torque: radius - 0.5 * overlap,
             },
+            LeverArm::FullRadius => Arms {
+                velocity: radius,
+                torque: radius,
+            },
         }
     }
 
@@ -79,7 +96,7 @@ impl LeverArm {
     pub fn wall(self, radius: f64, overlap: f64) -> Arms {
         match self {
             LeverArm::MidOverlap => self.pair(radius, overlap),
-            LeverArm::Lammps => Arms {
+            LeverArm::Lammps | LeverArm::FullRadius => Arms {
                 velocity: radius,
                 torque: radius,
             },
@@ -110,6 +127,17 @@ mod tests {
                 torque: r
             }
         );
+    }
+
+    #[test]
+    fn full_radius_takes_the_full_radii_everywhere() {
+        let (r, d) = (1e-3, 1e-5);
+        let full = Arms {
+            velocity: r,
+            torque: r,
+        };
+        assert_eq!(LeverArm::FullRadius.pair(r, d), full);
+        assert_eq!(LeverArm::FullRadius.wall(r, d), full);
     }
 
     #[test]

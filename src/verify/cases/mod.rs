@@ -87,6 +87,7 @@ pub const CASES: &[(&str, CaseFn)] = &[
         "three_sphere_impact_lammps_classic",
         three_sphere_impact::run,
     ),
+    ("three_sphere_impact_lammps_gran", three_sphere_impact::run),
     ("van_der_waals_force", van_der_waals_force::run),
     ("nial_die_compaction_small", nial_die_compaction_small::run),
     ("nial_die_compaction", nial_die_compaction::full),

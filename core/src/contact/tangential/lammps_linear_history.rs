@@ -27,8 +27,10 @@
 //! μ·max(F_n, 0), turns every step and has no dashpot. The history h (m) starts at
 //! zero when a contact forms and is dropped when it ends, as in tamp. The lever arms
 //! are the scene's (`contact.lever_arm`; `lammps` for LAMMPS's). Parameters: k_t
-//! (N/m), x_γ,t (dimensionless), μ from the material pair. docs/lammps.md has the
-//! measured agreement.
+//! (N/m), x_γ,t (dimensionless), μ from the material pair, and `history`: this rule,
+//! or one of the two classic ones (`classic_step`): `pair granular`'s
+//! `linear_history_classic` and `pair_style gran/hooke/history`'s. docs/lammps.md has
+//! the measured agreement.
 
 use super::lammps_mindlin::{onto_the_cone, turn_above_threshold};
 use super::{TangentialInput, TangentialLaw, TangentialModel};
@@ -38,7 +40,8 @@ use crate::contact::registry::{self, TangentialExample};
 use crate::error::Errors;
 use crate::particles::Vec3;
 
-/// `{"law": "lammps_linear_history", "stiffness": k_t, "x_gamma_t": x, "friction": μ}`.
+/// `{"law": "lammps_linear_history", "stiffness": k_t, "x_gamma_t": x, "friction": μ}`,
+/// with `"history"` naming which of LAMMPS's shear histories.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct LammpsLinearHistory {
@@ -46,48 +49,72 @@ pub struct LammpsLinearHistory {
     pub stiffness: f64,
     /// x_γ,t: the tangential dashpot over the normal one, γ_t = x_γ,t η_n.
     pub x_gamma_t: f64,
-    /// LAMMPS's `linear_history_classic` (`classic_step`): the history grown, then
-    /// projected every step without keeping its length. Off: `linear_history`.
-    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
-    pub classic: bool,
+    /// Which of LAMMPS's rules keeps the history.
+    #[serde(default, skip_serializing_if = "LammpsHistory::is_default")]
+    pub history: LammpsHistory,
+}
+
+/// The shear histories LAMMPS keeps with a linear spring.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Deserialize, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum LammpsHistory {
+    /// `pair granular`'s `linear_history`: turned into the contact plane above a
+    /// threshold, length kept.
+    #[default]
+    LinearHistory,
+    /// `pair granular`'s `linear_history_classic` (`classic_step`): grown, then
+    /// projected every step without keeping its length, the spring k_t a.
+    LinearHistoryClassic,
+    /// `pair_style gran/hooke/history` (pair_gran_hooke_history.cpp): the classic rule
+    /// with the spring k_t itself.
+    GranHookeHistory,
+}
+
+impl LammpsHistory {
+    fn is_default(&self) -> bool {
+        *self == LammpsHistory::LinearHistory
+    }
 }
 
 impl LammpsLinearHistory {
-    /// The spring's stiffness now: k_t, or k_t a (a = √(R* δ)) for the classic history.
+    /// The spring's stiffness now: k_t, or k_t a (a = √(R* δ)) for `pair granular`'s
+    /// classic history.
     fn spring(&self, input: &TangentialInput) -> f64 {
-        match self.classic {
-            true => self.stiffness * (input.overlap * input.effective_radius).sqrt(),
-            false => self.stiffness,
+        match self.history {
+            LammpsHistory::LinearHistoryClassic => {
+                self.stiffness * (input.overlap * input.effective_radius).sqrt()
+            }
+            _ => self.stiffness,
         }
     }
 }
 
-/// LAMMPS 22 Jul 2025's `linear_history_classic`
-/// (`GranSubModTangentialLinearHistoryClassic::calculate_forces`), operation for
-/// operation:
+/// The classic shear history, operation for operation as LAMMPS 22 Jul 2025 keeps it
+/// in `linear_history_classic` (`GranSubModTangentialLinearHistoryClassic::
+/// calculate_forces`) and in `pair_style gran/hooke/history`
+/// (`PairGranHookeHistory::compute`), `spring` being the spring's stiffness:
 ///
 /// ```text
 ///   h ← h + v_t Δt;  s = |h|;  h ← h − (h·n) n    (projected, length not kept)
-///   a = √(R* δ);  F_t = −(k_t a) h − γ_t v_t
+///   F_t = −spring h − γ_t v_t
 ///   if |F_t| > F_s and s ≠ 0:  F_t ← F_t F_s/|F_t|,  h ← −(F_t + γ_t v_t)/k_t
 ///   if |F_t| > F_s and s = 0:  F_t ← 0
 /// ```
 ///
-/// The release sets `contact_radius_flag = 1` for this model, so the spring is k_t
-/// times the contact radius a with the hooke normal law too, while the cone's reset
-/// divides by k_t alone. That is not the history of `pair_style gran/hooke/history`
-/// (pair_gran_hooke_history.cpp: the spring k_t, the reset 1/k_t) whose behaviour the
-/// model's comment names: in SI units a is micrometres, and the spring is that many
-/// times softer (docs/lammps.md).
+/// `gran/hooke/history`'s spring is k_t. The 22 Jul 2025 release sets
+/// `contact_radius_flag = 1` for `linear_history_classic`, so there the spring is k_t
+/// times the contact radius a = √(R* δ), with the hooke normal law too, while the
+/// cone's reset divides by k_t alone: in SI units a is micrometres, and the spring is
+/// that many times softer than the style whose behaviour the model's comment names
+/// (docs/lammps.md).
 #[inline(always)]
-fn classic_step(h: &mut Vec3, input: &TangentialInput, k: f64, damping: f64) -> Vec3 {
+fn classic_step(h: &mut Vec3, input: &TangentialInput, k: f64, spring: f64, damping: f64) -> Vec3 {
     let limit = input.normal_force.abs() * input.friction;
     *h += input.tangential_velocity * input.dt;
     let magnitude = h.norm();
     *h -= input.normal * h.dot(&input.normal);
-    let a = (input.overlap * input.effective_radius).sqrt();
     let dashpot = input.tangential_velocity * -damping;
-    let mut f = *h * -(k * a) + dashpot;
+    let mut f = *h * -spring + dashpot;
     onto_the_cone(&mut f, h, dashpot, limit, -1.0 / k, Some(magnitude));
     f
 }
@@ -105,31 +132,37 @@ impl TangentialModel for LammpsLinearHistory {
         let eta = 2.0;
         let (stick, slide) = registry::damped_inputs(eta);
         let v = stick.tangential_velocity;
-        // The classic spring is k_t a: its k_t is chosen so that k_t a = 1e6 N/m here.
+        // pair granular's classic spring is k_t a: its k_t is chosen so that k_t a =
+        // 1e6 N/m here.
         let a = (stick.overlap * stick.effective_radius).sqrt();
-        [(false, 1e6), (true, 1e6 / a)]
-            .into_iter()
-            .flat_map(|(classic, stiffness)| {
-                let tangential = TangentialLaw::LammpsLinearHistory(LammpsLinearHistory {
-                    stiffness,
-                    x_gamma_t: 0.5,
-                    classic,
-                });
-                let spring = if classic { stiffness * a } else { stiffness };
-                [
-                    TangentialExample {
-                        law: tangential,
-                        input: stick,
-                        force: -v * (spring * stick.dt) - v * (0.5 * eta),
-                    },
-                    TangentialExample {
-                        law: tangential,
-                        input: slide,
-                        force: registry::sliding_force(&slide),
-                    },
-                ]
-            })
-            .collect()
+        [
+            (LammpsHistory::LinearHistory, 1e6),
+            (LammpsHistory::LinearHistoryClassic, 1e6 / a),
+            (LammpsHistory::GranHookeHistory, 1e6),
+        ]
+        .into_iter()
+        .flat_map(|(history, stiffness)| {
+            let law = LammpsLinearHistory {
+                stiffness,
+                x_gamma_t: 0.5,
+                history,
+            };
+            let tangential = TangentialLaw::LammpsLinearHistory(law);
+            let spring = law.spring(&stick);
+            [
+                TangentialExample {
+                    law: tangential,
+                    input: stick,
+                    force: -v * (spring * stick.dt) - v * (0.5 * eta),
+                },
+                TangentialExample {
+                    law: tangential,
+                    input: slide,
+                    force: registry::sliding_force(&slide),
+                },
+            ]
+        })
+        .collect()
     }
 
     /// k_t > 0 (LAMMPS takes k_t = 0, then divides by it on the cone), x_γ,t ≥ 0.
@@ -139,12 +172,17 @@ impl TangentialModel for LammpsLinearHistory {
     }
 
     fn lammps(&self) -> Result<String, NoLammpsModel> {
+        let keyword = match self.history {
+            LammpsHistory::LinearHistory => "linear_history",
+            LammpsHistory::LinearHistoryClassic => "linear_history_classic",
+            LammpsHistory::GranHookeHistory => {
+                return Err(NoLammpsModel(
+                    "pair granular has no tangential model with gran/hooke/history's unscaled spring: the scene is exported as pair_style gran/hooke/history where that style can say the rest".into(),
+                ));
+            }
+        };
         Ok(format!(
-            "{} {} {} {{mu}}",
-            match self.classic {
-                true => "linear_history_classic",
-                false => "linear_history",
-            },
+            "{keyword} {} {} {{mu}}",
             crate::decimal::g(self.stiffness),
             crate::decimal::g(self.x_gamma_t)
         ))
@@ -154,8 +192,8 @@ impl TangentialModel for LammpsLinearHistory {
     fn force(&self, input: &TangentialInput, h: &mut Vec3) -> Vec3 {
         let k = self.stiffness;
         let damping = self.x_gamma_t * input.normal_damping;
-        if self.classic {
-            return classic_step(h, input, k, damping);
+        if self.history != LammpsHistory::LinearHistory {
+            return classic_step(h, input, k, self.spring(input), damping);
         }
         let limit = input.normal_force.abs() * input.friction;
         turn_above_threshold(h, &input.normal, k, limit);
@@ -166,12 +204,13 @@ impl TangentialModel for LammpsLinearHistory {
         f
     }
 
-    /// k_t, or k_t a for the classic history.
+    /// k_t, or k_t a for `pair granular`'s classic history.
     fn stiffness(&self, input: &TangentialInput) -> f64 {
         self.spring(input)
     }
 
-    /// ½ k |h|² with the spring's k (k_t, or k_t a for the classic history).
+    /// ½ k |h|² with the spring's k (k_t, or k_t a for `pair granular`'s classic
+    /// history).
     fn energy(&self, input: &TangentialInput, h: &Vec3) -> f64 {
         0.5 * self.spring(input) * h.norm_squared()
     }
@@ -193,7 +232,7 @@ mod tests {
         LammpsLinearHistory {
             stiffness: 1e4,
             x_gamma_t: 0.5,
-            classic: false,
+            history: LammpsHistory::LinearHistory,
         }
     }
 
@@ -244,7 +283,7 @@ mod tests {
     #[test]
     fn the_classic_history_is_projected_every_step_and_shrinks() {
         let classic = LammpsLinearHistory {
-            classic: true,
+            history: LammpsHistory::LinearHistoryClassic,
             ..law()
         };
         for tilt in [1e-12, 0.6f64] {
@@ -272,12 +311,35 @@ mod tests {
     fn names_its_lammps_keyword_and_coefficients() {
         assert_eq!(law().lammps().unwrap(), "linear_history 1e4 5e-1 {mu}");
         let classic = LammpsLinearHistory {
-            classic: true,
+            history: LammpsHistory::LinearHistoryClassic,
             ..law()
         };
         assert_eq!(
             classic.lammps().unwrap(),
             "linear_history_classic 1e4 5e-1 {mu}"
         );
+        let gran = LammpsLinearHistory {
+            history: LammpsHistory::GranHookeHistory,
+            ..law()
+        };
+        assert!(gran.lammps().is_err());
+    }
+
+    /// `gran/hooke/history` keeps the classic rule with the spring k_t itself: the same
+    /// growth and projection, F = −k_t h, and the same reset on the cone.
+    #[test]
+    fn the_gran_history_is_the_classic_rule_with_an_unscaled_spring() {
+        let gran = LammpsLinearHistory {
+            history: LammpsHistory::GranHookeHistory,
+            ..law()
+        };
+        let mut h = Vec3::new(1e-4, 0.0, 2e-5);
+        let f = gran.force(&input(Vec3::new(0.0, 0.0, 1.0), 100.0, 0.0), &mut h);
+        assert_eq!(h, Vec3::new(1e-4, 0.0, 0.0));
+        assert_eq!(f, Vec3::new(-1e4 * 1e-4, 0.0, 0.0));
+        let mut h = Vec3::new(1.0, 0.0, 0.0);
+        let f = gran.force(&input(Vec3::zeros(), 1e-6, 0.0), &mut h);
+        approx::assert_relative_eq!(f.x, -0.5e-6, max_relative = 1e-15);
+        approx::assert_relative_eq!(h.x, 0.5e-6 / 1e4, max_relative = 1e-15);
     }
 }
