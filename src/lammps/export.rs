@@ -908,13 +908,24 @@ pub fn export(
     match &style {
         PairStyle::Granular(_) => {
             deck.push_str("pair_style   granular\n");
-            for k in 0..sim.model.materials.len() {
+            // One line per material; with friction pairs, one per pair of particle
+            // materials too: LAMMPS would mix μ_ii and μ_jj, and tamp's μ_ij is the
+            // scene's (refusals checked that the two materials share E and ν, so E* is
+            // mixed as tamp mixes it).
+            let mut pairs: Vec<(usize, usize)> =
+                (0..sim.model.materials.len()).map(|k| (k, k)).collect();
+            if has_friction_pairs {
+                for (x, &a) in kinds.iter().enumerate() {
+                    pairs.extend(kinds[x + 1..].iter().map(|&b| (a, b)));
+                }
+            }
+            for (a, b) in pairs {
                 let _ = writeln!(
                     deck,
                     "pair_coeff   {} {} {}",
-                    k + 1,
-                    k + 1,
-                    line(k, mu(k, k))
+                    a + 1,
+                    b + 1,
+                    line(a, mu(a, b))
                 );
             }
         }
@@ -925,21 +936,6 @@ pub fn export(
                 "pair_style   gran/hooke/history {}\npair_coeff   * *",
                 line(first, mu(first, first))
             );
-        }
-    }
-    if has_friction_pairs && matches!(style, PairStyle::Granular(_)) {
-        // LAMMPS would mix μ_ii and μ_jj; tamp's μ_ij is the scene's (refusals checked
-        // that the two materials share E and ν, so E* is mixed as tamp mixes it).
-        for (x, &a) in kinds.iter().enumerate() {
-            for &b in &kinds[x + 1..] {
-                let _ = writeln!(
-                    deck,
-                    "pair_coeff   {} {} {}",
-                    a + 1,
-                    b + 1,
-                    line(a, mu(a, b))
-                );
-            }
         }
     }
     let _ = writeln!(deck, "timestep     {}", g(sim.dt()));
