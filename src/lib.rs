@@ -18,6 +18,7 @@ pub mod compare;
 pub mod impact_trial;
 pub mod lammps;
 pub mod liggghts;
+pub mod peer_deck;
 pub mod plot;
 pub mod study;
 pub mod verify;

@@ -30,7 +30,7 @@
 use super::export::{pair_model, refusals};
 use crate::error::Result;
 use crate::liggghts::die_compaction::DieStroke;
-use crate::liggghts::export::{DUMP_COLUMNS, Exported, neighbor_skin};
+use crate::peer_deck::{DUMP_COLUMNS, Exported, dump_format, neighbor_skin};
 use crate::process::die_compaction_file::DieCompactionFile;
 use crate::process::die_replay;
 use crate::scene;
@@ -273,14 +273,14 @@ pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> R
          variable     punch_fz equal -c_fpunch\n\
          variable     floor_fz equal -c_ffloor\n\
          dump         dmp all custom {n} dump.lammps {DUMP_COLUMNS}\n\
-         dump_modify  dmp format line \"%d %d{}\" sort id\n\
+         dump_modify  dmp format line \"{}\" sort id\n\
          thermo_style custom step time v_punch_fz v_floor_fz v_dz\n\
          thermo_modify norm no lost ignore format float %.17g\n\
          thermo       {n}",
         g(radius),
         punch_displacement(&stroke),
         g(specimen.h0),
-        " %.17g".repeat(14)
+        dump_format()
     );
     // One run for the whole stroke: LAMMPS's setup before a further `run` would
     // give the moving region the velocity 0 (Region::set_velocity at a repeated

@@ -38,10 +38,9 @@ use crate::contact::lammps::LammpsNormal;
 use crate::contact::lever_arm::LeverArm;
 use crate::contact::tangential::TangentialLaw;
 use crate::contact::tangential::lammps_linear_history::LammpsHistory;
-use crate::document::Document;
 use crate::error::{Result, TampError};
-use crate::liggghts::export::{DUMP_COLUMNS, Exported, frame_every, load_with_seed, neighbor_skin};
 use crate::particles::Vec3;
+use crate::peer_deck::{self, DUMP_COLUMNS, Exported, dump_format, frame_every, neighbor_skin};
 use crate::scene::walls::{Curvature, MotionSpec, ShapeSpec, WallSpec};
 use crate::scene::{self, Scene};
 use std::fmt::Write as _;
@@ -721,14 +720,13 @@ pub fn export_file(
     dump_every: Option<u64>,
     seed: Option<u64>,
 ) -> Result<Exported> {
-    match load_with_seed(scene_path, seed)? {
-        (Document::Scene(scene), sha) => export(&scene, &sha, out_dir, dump_every),
-        // Its particles exist only after tamp's fill and flatten: the pressing is
-        // what is exported, replaying tamp's stroke.
-        (Document::DieCompaction(file), sha) => {
-            super::die_compaction::export_pressing(&file, &sha, out_dir)
-        }
-    }
+    peer_deck::export_file(
+        scene_path,
+        out_dir,
+        (dump_every, seed),
+        export,
+        super::die_compaction::export_pressing,
+    )
 }
 
 /// Write the deck and the data file for `scene` into `out_dir`.
@@ -1009,10 +1007,7 @@ pub fn export(
         }
     }
     deck.push_str("fix          integr all nve/sphere\n");
-    let format = std::iter::once("%d %d")
-        .chain(std::iter::repeat_n("%.17g", 14))
-        .collect::<Vec<_>>()
-        .join(" ");
+    let format = dump_format();
     let _ = writeln!(
         deck,
         "dump         dmp all custom {every} dump.lammps {DUMP_COLUMNS}\ndump_modify  dmp format line \"{format}\" sort id"

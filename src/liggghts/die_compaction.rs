@@ -30,11 +30,11 @@
 //!   ordinary export's (`export`).
 
 use super::export::{
-    DUMP_COLUMNS, Exported, contact_model, deck_head, dump_format, g, particles_data,
-    plane_triangles, refusals, refuse_all, stl,
+    contact_model, deck_head, g, particles_data, plane_triangles, refusals, refuse_all, stl,
 };
 use crate::error::Result;
 use crate::particles::Vec3;
+use crate::peer_deck::{DUMP_COLUMNS, Exported, dump_format};
 use crate::process::die_compaction_file::{DieCompactionFile, DieCompactionSpec};
 use crate::process::die_replay::{self, Stroke};
 use crate::scene;

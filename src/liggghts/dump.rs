@@ -15,7 +15,7 @@
 //!
 //! Columns are found by name, so any dump holding at least `id x y z` and a radius
 //! (`radius` or `diameter`) is read; the deck tamp exports writes the columns of
-//! `export::DUMP_COLUMNS`. A boundary flag starting with `p` marks a periodic axis.
+//! `peer_deck::DUMP_COLUMNS`. A boundary flag starting with `p` marks a periodic axis.
 
 use crate::error::{Result, TampError};
 use crate::particles::Vec3;

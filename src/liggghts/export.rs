@@ -34,31 +34,17 @@ use crate::contact::damping::{CriticalFraction, Damping, LiggghtsRestitution};
 use crate::contact::lever_arm::LeverArm;
 use crate::contact::model::{LiggghtsContact, LiggghtsScene, LiggghtsValues};
 use crate::contact::tangential::TangentialLaw;
-use crate::document::Document;
 use crate::error::{Result, TampError};
 use crate::material::{effective_mass, effective_modulus, effective_radius};
 use crate::particles::Vec3;
+use crate::peer_deck::{self, DUMP_COLUMNS, Exported, dump_format, frame_every, neighbor_skin};
 use crate::scene::walls::{Curvature, MotionSpec, ShapeSpec};
 use crate::scene::{self, Scene};
 use std::fmt::Write as _;
 use std::path::Path;
 
-/// Columns of every dump the deck writes (`dump::Frame` reads them back).
-pub const DUMP_COLUMNS: &str = "id type radius mass x y z vx vy vz omegax omegay omegaz fx fy fz";
-
 /// Facets around a revolved boundary written as STL (cone, funnel, tilted cylinder).
 const REVOLVED_SEGMENTS: usize = 96;
-
-/// What an export wrote.
-#[derive(Debug)]
-pub struct Exported {
-    pub particles: usize,
-    pub steps: u64,
-    pub dt: f64,
-    pub files: Vec<String>,
-    /// Differences the deck cannot avoid (printed, and written into the deck).
-    pub notes: Vec<String>,
-}
 
 /// The contact model line and its material properties.
 pub(super) struct ContactModel {
@@ -268,38 +254,6 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
     out
 }
 
-/// The scene or die-compaction file and its hash, with `--seed` replacing the file's
-/// seed (a new random placement, the same scene otherwise).
-pub(crate) fn load_with_seed(path: &Path, seed: Option<u64>) -> Result<(Document, String)> {
-    let (mut document, sha) = crate::document::load(path)?;
-    if let Some(seed) = seed {
-        match &mut document {
-            Document::Scene(s) => s.seed = seed,
-            Document::DieCompaction(d) => d.seed = seed,
-        }
-    }
-    Ok((document, sha))
-}
-
-/// The peer's neighbour skin: the scene's skin fraction of the smallest radius.
-pub(crate) fn neighbor_skin(scene: &Scene, radius: &[f64]) -> f64 {
-    let min_r = radius.iter().copied().fold(f64::INFINITY, f64::min);
-    if min_r.is_finite() {
-        scene.broad_phase.skin_fraction * min_r
-    } else {
-        1e-3
-    }
-}
-
-/// Steps between dumped frames when none is asked for: as the scene's own
-/// trajectory.csv (else series.csv) has them, so the two compare row by row.
-pub(crate) fn frame_every(scene: &Scene, steps: u64) -> u64 {
-    match (scene.output.trajectory_every, scene.output.series_every) {
-        (0, 0) => (steps / 100).max(1),
-        (0, n) | (n, _) => n,
-    }
-}
-
 pub(super) fn refuse_all(list: Vec<(String, String)>) -> TampError {
     crate::error::cannot_export("LIGGGHTS 3.8", list)
 }
@@ -311,14 +265,13 @@ pub fn export_file(
     dump_every: Option<u64>,
     seed: Option<u64>,
 ) -> Result<Exported> {
-    match load_with_seed(scene_path, seed)? {
-        (Document::Scene(scene), sha) => export(&scene, &sha, out_dir, dump_every),
-        // Its particles exist only after tamp's fill and flatten: the pressing is
-        // what is exported, replaying tamp's stroke.
-        (Document::DieCompaction(file), sha) => {
-            super::die_compaction::export_pressing(&file, &sha, out_dir)
-        }
-    }
+    peer_deck::export_file(
+        scene_path,
+        out_dir,
+        (dump_every, seed),
+        export,
+        super::die_compaction::export_pressing,
+    )
 }
 
 /// Axis index of a unit vector along ±x, ±y or ±z.
@@ -572,14 +525,6 @@ pub(super) fn particles_data(
     bounds: &[[f64; 2]; 3],
 ) -> String {
     crate::output::data_file::particles_data(sim, "LIGGGHTS", sha, "", bounds, "Atoms")
-}
-
-/// The `dump_modify format` of DUMP_COLUMNS: every number to the last bit.
-pub(super) fn dump_format() -> String {
-    std::iter::once("%d %d")
-        .chain(std::iter::repeat_n("%.17g", 14))
-        .collect::<Vec<_>>()
-        .join(" ")
 }
 
 /// The deck up to the walls: header, box, particles, contact model, step, gravity.
