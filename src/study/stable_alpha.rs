@@ -512,15 +512,15 @@ Reading the table:
   The unit test `linear_lattice_limit_matches_the_closed_form` keeps it so.
 - **Friction with rotation**: the fastest mode can be a rotational one, neighbours spinning
   against each other through their tangential springs, ω² up to Σ_c k_t (1 − (n_c·e)²) 2R²/I
-  over the contacts. Until 2026-11-21 the estimate took the *largest* k_t times the lever
-  1 + mR²/I, and this lattice was stable only to α = 0.60 with the Mindlin laws
-  (k_t ≈ 0.8 k_n) and 1.02 with k_t = 2/7 k_n; the estimate now sums k_t over the contacts
-  like it sums k_n (core/src/simulation/critical_step.rs), which moves every row to α_max ≥ 1. Rojek 2016
+  over the contacts. The estimate sums k_t over the contacts like it sums k_n
+  (core/src/simulation/critical_step.rs), which puts every row at α_max ≥ 1; the *largest*
+  k_t times the lever 1 + mR²/I alone would miss this mode and leave the Mindlin laws
+  (k_t ≈ 0.8 k_n) stable only well below α = 1. Rojek 2016
   §3.4 makes the same observation (with equal normal and tangential stiffness the
   rotational eigenfrequency exceeds the translational one) and scales the rotational
   inertia by 10 instead (`rotation.inertia_scale`), which lowers the lever 1 + mR²/I.
-- **Haff–Werner** viscous friction is explicit: its limit 2m/(γ_s L) was per contact, while a
-  particle's 12 dashpots act on it together (α_max was 0.29); the estimate now divides it by
+- **Haff–Werner** viscous friction is explicit: its limit 2m/(γ_s L) holds for one
+  dashpot, while a particle's 12 dashpots act on it together, so the estimate divides it by
   the number of contacts.
 - **Coulomb (Zhong VII) and hysteretic (Zhong V)** switch force on the sign of a rate (slip
   velocity, dδ/dt). In contacts that stay closed the sign flips every few steps, and each
