@@ -106,18 +106,22 @@ def tamp_scene(name, pos, vel, omega, base, steps, out_every, overlap_tolerance)
         "name": name,
         # tamp's m = rho 4/3 pi R^3 and LAMMPS's m = density pi/6 d^3 agree at d = 2R.
         "materials": [{"name": "lj", "density": DENSITY}],
+        # pair_style gran/hooke/history's physics term for term: the normal force
+        # k_n delta - m* gamma_n v_n, with m* = m_i against a frozen sphere in both codes
+        # (LAMMPS's freeze group, tamp's prescribed particle); its shear history (kt NULL
+        # -> 2/7 kn; dampflag 0 -> no tangential dashpot) capped at mu |F_n|; the full
+        # radii as lever arms in the contact velocity and the torques.
         "contact": {
             "normal": {"law": "linear", "stiffness": KN},
-            # tamp's c_n is per contact, LAMMPS's is meff * gamma_n: this matches the
-            # flowing pairs (meff = m/2); a sphere on the frozen base gets half LAMMPS's.
-            "damping": {"kind": "constant", "gamma_n": GAMMA_N * MASS / 2},
-            # kt NULL -> 2/7 kn; dampflag 0 -> no tangential dashpot: a plain spring
-            # with a Coulomb cap, which is what cundall_strack is.
+            "damping": {"kind": "mass_velocity", "eta_n0": GAMMA_N},
             "tangential": {
-                "law": "cundall_strack",
+                "law": "lammps_linear_history",
                 "stiffness": KN * 2 / 7,
+                "x_gamma_t": 0.0,
+                "history": "gran_hooke_history",
                 "friction": FRICTION,
             },
+            "lever_arm": "full_radius",
         },
         "particles": particles,
         "periodic": {"x": [0, BOX[0]], "y": [0, BOX[1]]},
@@ -292,6 +296,12 @@ def cmd_bench(args):
     pos, vel, omega, base = pos[order], vel[order], omega[order], base[order]
     vel[base] = 0.0
     omega[base] = 0.0
+    if args.perturb:
+        # Another start of the same flow: every flowing velocity scaled by 1 + 1e-12 of a
+        # normal deviate, which chaos grows into another trajectory of the same statistics.
+        rng = np.random.default_rng(args.perturb)
+        vel[~base] *= 1.0 + 1e-12 * rng.normal(size=(int((~base).sum()), 1))
+        name += f", start perturbed (seed {args.perturb})"
     os.makedirs(args.out, exist_ok=True)
     name += f", {args.steps} steps of {DT}"
     write_json(
@@ -395,6 +405,7 @@ def main():
     p.add_argument("--scene", help="the warm-up scene (which particles are frozen)")
     p.add_argument("out")
     p.add_argument("--steps", type=int, required=True)
+    p.add_argument("--perturb", type=int, default=0, help="seed of a 1e-12 perturbation of the flowing velocities (0: none)")
     p.set_defaults(run=cmd_bench)
     p = sub.add_parser("measure")
     src = p.add_mutually_exclusive_group(required=True)
