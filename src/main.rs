@@ -321,7 +321,14 @@ fn main() -> ExitCode {
             out,
             dump_every,
             seed,
-        } => tamp::lammps::export::export_file(&scene, &out, dump_every, seed).map(|x| {
+        } => tamp::peer_deck::export_file(
+            &scene,
+            &out,
+            (dump_every, seed),
+            tamp::lammps::export::export,
+            tamp::lammps::die_compaction::export_pressing,
+        )
+        .map(|x| {
             println!(
                 "exported {} particles, {} steps of {:e} s to {} ({}); run: cd {} && lmp -in in.tamp",
                 x.particles,
@@ -338,7 +345,14 @@ fn main() -> ExitCode {
             out,
             dump_every,
             seed,
-        } => tamp::liggghts::export::export_file(&scene, &out, dump_every, seed).map(|x| {
+        } => tamp::peer_deck::export_file(
+            &scene,
+            &out,
+            (dump_every, seed),
+            tamp::liggghts::export::export,
+            tamp::liggghts::die_compaction::export_pressing,
+        )
+        .map(|x| {
             for note in &x.notes {
                 eprintln!("note: {note}");
             }

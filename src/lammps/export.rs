@@ -40,7 +40,7 @@ use crate::contact::tangential::TangentialLaw;
 use crate::contact::tangential::lammps_linear_history::LammpsHistory;
 use crate::error::{Result, TampError};
 use crate::particles::Vec3;
-use crate::peer_deck::{self, DUMP_COLUMNS, Exported, dump_format, frame_every, neighbor_skin};
+use crate::peer_deck::{DUMP_COLUMNS, Exported, dump_format, frame_every, neighbor_skin};
 use crate::scene::walls::{Curvature, MotionSpec, ShapeSpec, WallSpec};
 use crate::scene::{self, Scene};
 use std::fmt::Write as _;
@@ -711,22 +711,6 @@ fn starts_outside(w: &WallSpec, sim: &crate::simulation::Simulation, shift: Vec3
 
 fn refuse_all(list: Vec<(String, String)>) -> TampError {
     crate::error::cannot_export("LAMMPS", list)
-}
-
-/// Write the deck for the scene file at `scene_path` into `out_dir`.
-pub fn export_file(
-    scene_path: &Path,
-    out_dir: &Path,
-    dump_every: Option<u64>,
-    seed: Option<u64>,
-) -> Result<Exported> {
-    peer_deck::export_file(
-        scene_path,
-        out_dir,
-        (dump_every, seed),
-        export,
-        super::die_compaction::export_pressing,
-    )
 }
 
 /// Write the deck and the data file for `scene` into `out_dir`.

@@ -37,7 +37,7 @@ use crate::contact::tangential::TangentialLaw;
 use crate::error::{Result, TampError};
 use crate::material::{effective_mass, effective_modulus, effective_radius};
 use crate::particles::Vec3;
-use crate::peer_deck::{self, DUMP_COLUMNS, Exported, dump_format, frame_every, neighbor_skin};
+use crate::peer_deck::{DUMP_COLUMNS, Exported, dump_format, frame_every, neighbor_skin};
 use crate::scene::walls::{Curvature, MotionSpec, ShapeSpec};
 use crate::scene::{self, Scene};
 use std::fmt::Write as _;
@@ -256,22 +256,6 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
 
 pub(super) fn refuse_all(list: Vec<(String, String)>) -> TampError {
     crate::error::cannot_export("LIGGGHTS 3.8", list)
-}
-
-/// Write the deck for the scene file at `scene_path` into `out_dir`.
-pub fn export_file(
-    scene_path: &Path,
-    out_dir: &Path,
-    dump_every: Option<u64>,
-    seed: Option<u64>,
-) -> Result<Exported> {
-    peer_deck::export_file(
-        scene_path,
-        out_dir,
-        (dump_every, seed),
-        export,
-        super::die_compaction::export_pressing,
-    )
 }
 
 /// Axis index of a unit vector along ±x, ±y or ±z.
