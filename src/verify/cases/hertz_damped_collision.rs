@@ -9,37 +9,27 @@
 //! Measured from the recorded trajectory, so every engine with this dashpot is held
 //! to the same equation.
 
-use super::two_body::{Pair, collision_quantities, each_restitution};
-use crate::accuracy::damped_hertz::{Dashpot, critical_fraction_c, unit_impact};
-use crate::contact::damping::liggghts::LiggghtsModel;
+use super::two_body::{collision_quantities, each_hertz_impact};
+use crate::accuracy::damped_hertz::unit_impact;
 use crate::contact::normal::NormalLaw;
 use crate::error::{Result, TampError};
-use crate::verify::recording::RecordSpec;
-use crate::verify::{CaseContext, Measured, measure};
+use crate::verify::{CaseContext, Measured};
 
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let base = ctx.scene()?;
     if !matches!(base.contact.normal, NormalLaw::Hertz(_)) {
         return Err(TampError::Other("the scene must use hertz".into()));
     }
-    let mut out = Vec::new();
-    for (e, s) in each_restitution(ctx, &base)? {
-        let pair = Pair::of(&s)?;
-        let (v, delta_s) = (pair.approach, pair.hertz_overlap_scale()?);
-        let xi = LiggghtsModel::Hertz.critical_fraction(e);
-        let unit =
-            unit_impact(Dashpot::CriticalFraction, critical_fraction_c(xi)).ok_or_else(|| {
-                TampError::Other(format!("e = {e}: the reference impact does not end"))
-            })?;
-        let rec = ctx.record(&format!("collision_e{e}"), &s, RecordSpec::EVERY_STEP)?;
-        let c = measure::two_body(&rec, 0, 1)?;
-        out.extend(collision_quantities(
-            &format!("_e{e}"),
-            &c,
-            unit.restitution,
-            unit.duration * delta_s / v,
-            unit.max_overlap * delta_s,
-        ));
-    }
-    Ok(out)
+    Ok(each_hertz_impact(ctx, &base, unit_impact)?
+        .iter()
+        .flat_map(|i| {
+            collision_quantities(
+                &format!("_e{}", i.e),
+                &i.measured,
+                i.restitution,
+                i.duration,
+                i.max_overlap,
+            )
+        })
+        .collect())
 }

@@ -13,10 +13,9 @@
 //!   equation of motion solved by Runge–Kutta (`damped_hertz::unit_impact_no_pull`);
 //!   the clamp makes the rebound faster than e.
 
-use super::two_body::{Pair, each_restitution};
-use crate::accuracy::damped_hertz::{Dashpot, critical_fraction_c, unit_impact_no_pull};
+use super::two_body::{Pair, each_hertz_impact};
+use crate::accuracy::damped_hertz::unit_impact_no_pull;
 use crate::collision::Collision;
-use crate::contact::damping::liggghts::LiggghtsModel;
 use crate::contact::damping::{Constant, Damping};
 use crate::contact::normal::linear::LinearCollision;
 use crate::contact::normal::{Linear, NormalLaw};
@@ -89,23 +88,15 @@ pub fn hertz(ctx: &CaseContext) -> Result<Vec<Measured>> {
     if !matches!(base.contact.normal, NormalLaw::Hertz(_)) {
         return Err(TampError::Other("the scene must use hertz".into()));
     }
-    let mut out = Vec::new();
-    for (e, s) in each_restitution(ctx, &base)? {
-        let pair = Pair::of(&s)?;
-        let (v, delta_s) = (pair.approach, pair.hertz_overlap_scale()?);
-        let xi = LiggghtsModel::Hertz.critical_fraction(e);
-        let unit = unit_impact_no_pull(Dashpot::CriticalFraction, critical_fraction_c(xi))
-            .ok_or_else(|| {
-                TampError::Other(format!("e = {e}: the reference impact does not end"))
-            })?;
-        let rec = ctx.record(&format!("collision_e{e}"), &s, RecordSpec::EVERY_STEP)?;
-        let c = measure::two_body(&rec, 0, 1)?;
-        out.extend(quantities(
-            &format!("_e{e}"),
-            &c,
-            unit.restitution,
-            unit.duration * delta_s / v,
-        ));
-    }
-    Ok(out)
+    Ok(each_hertz_impact(ctx, &base, unit_impact_no_pull)?
+        .iter()
+        .flat_map(|i| {
+            quantities(
+                &format!("_e{}", i.e),
+                &i.measured,
+                i.restitution,
+                i.duration,
+            )
+        })
+        .collect())
 }

@@ -9,7 +9,9 @@
 //!   T_H = 3.2145 (m*/k̃)^{2/5} v^{−1/5},  k̃ = 4/3 E* √R*;
 //! a displacement-driven compression to the overlap h reaches it at step (h + gap)/(v Δt).
 
+use crate::accuracy::damped_hertz::{Dashpot, Unit, critical_fraction_c};
 use crate::collision::Collision;
+use crate::contact::damping::liggghts::LiggghtsModel;
 use crate::contact::damping::{Damping, LiggghtsRestitution};
 use crate::error::{Result, TampError};
 use crate::material::{effective_mass, effective_radius};
@@ -17,7 +19,7 @@ use crate::scene::contact::DampingSpec;
 use crate::scene::schema::RunSpec;
 use crate::scene::{self, Scene};
 use crate::verify::recording::RecordSpec;
-use crate::verify::{CaseContext, Measured};
+use crate::verify::{CaseContext, Measured, measure};
 
 /// Particles 0 and 1 of a scene, at t = 0.
 #[derive(Clone, Copy, Debug)]
@@ -156,4 +158,44 @@ pub fn each_restitution(ctx: &CaseContext, base: &Scene) -> Result<Vec<(f64, Sce
             (e, s)
         })
         .collect())
+}
+
+/// One head-on Hertz collision per restitution e of the case file (`each_restitution`),
+/// run on the case's engine and measured from its recording, beside the reference
+/// `unit` gives for LIGGGHTS's ξ of that e (`accuracy::damped_hertz`), scaled to the
+/// pair: restitution, contact duration and largest overlap.
+pub struct HertzImpact {
+    pub e: f64,
+    pub measured: Collision,
+    pub restitution: f64,
+    pub duration: f64,
+    pub max_overlap: f64,
+}
+
+/// `HertzImpact` for each restitution of the case file, the run labelled
+/// `collision_e<e>`.
+pub fn each_hertz_impact(
+    ctx: &CaseContext,
+    base: &Scene,
+    unit: fn(Dashpot, f64) -> Option<Unit>,
+) -> Result<Vec<HertzImpact>> {
+    let mut out = Vec::new();
+    for (e, s) in each_restitution(ctx, base)? {
+        let pair = Pair::of(&s)?;
+        let (v, delta_s) = (pair.approach, pair.hertz_overlap_scale()?);
+        let xi = LiggghtsModel::Hertz.critical_fraction(e);
+        let reference =
+            unit(Dashpot::CriticalFraction, critical_fraction_c(xi)).ok_or_else(|| {
+                TampError::Other(format!("e = {e}: the reference impact does not end"))
+            })?;
+        let rec = ctx.record(&format!("collision_e{e}"), &s, RecordSpec::EVERY_STEP)?;
+        out.push(HertzImpact {
+            e,
+            measured: measure::two_body(&rec, 0, 1)?,
+            restitution: reference.restitution,
+            duration: reference.duration * delta_s / v,
+            max_overlap: reference.max_overlap * delta_s,
+        });
+    }
+    Ok(out)
 }
