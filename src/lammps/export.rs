@@ -14,8 +14,14 @@
 //!   normal, damping and tangential laws); this file only asks, and refuses the field
 //!   of a law that has no LAMMPS model (of the tangential laws `lammps_mindlin`,
 //!   `lammps_linear_history` and `lammps_linear_nohistory` have one); a scene without
-//!   friction writes `tangential linear_nohistory 0 0`, a force of exactly zero. With spins and friction the scene must take LAMMPS's lever
-//!   arms (`contact.lever_arm` = `lammps`).
+//!   friction writes `tangential linear_nohistory 0 0`, a force of exactly zero. With
+//!   spins and friction the scene must take LAMMPS's lever arms (`contact.lever_arm` =
+//!   `lammps`).
+//! - A scene whose tangential law keeps `pair_style gran/hooke/history`'s history
+//!   (`"history": "gran_hooke_history"`, which no `pair granular` model has) is written
+//!   as that pair style with `pair_coeff * *` instead (`gran_hooke_history`): the
+//!   `linear` law, `mass_velocity` damping or none, one μ between particles, that
+//!   style's full-radius lever arms, and no walls.
 //! - `limit_damping` is written after the pair and wall models exactly when the scene
 //!   sets `contact.damping.limit` (the total normal force clamped at zero); otherwise
 //!   the force may pull at the end of a contact in both codes.

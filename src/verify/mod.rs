@@ -303,22 +303,30 @@ impl<'a> CaseContext<'a> {
         Ok(recording)
     }
 
-    /// `measure` of `scene`'s recording (`record`), kept in the case's store as
-    /// `name` on the tamp engine, whose runs the store can name by the source tree; an
-    /// outside engine runs every time.
-    pub fn record_and_keep<T: Serialize + serde::de::DeserializeOwned>(
+    /// A recorded run whose measurement is kept in the case's store: `scene` builds the
+    /// run's scene (and what `measure` needs beside the recording), the engine records
+    /// it as `spec` asks under `label`, and `measure` reads the recording. On the tamp
+    /// engine the result is saved as `name`, keyed by `key` (everything the scene and
+    /// the measurement are made from) with `spec` and the source tree, and a saved
+    /// result skips both the building and the run; an outside engine, which the source
+    /// tree does not name, runs every time.
+    pub fn record_and_keep<K: Serialize, C, T: Serialize + serde::de::DeserializeOwned>(
         &self,
         store: &store::Store,
-        name: &str,
-        (label, scene, spec): (&str, &Scene, RecordSpec),
-        measure: impl FnOnce(&Recording) -> Result<T>,
+        (name, key): (&str, &K),
+        (label, spec): (&str, RecordSpec),
+        scene: impl FnOnce() -> Result<(Scene, C)>,
+        measure: impl FnOnce(&Recording, &C) -> Result<T>,
     ) -> Result<T> {
+        let run = || {
+            let (scene, context) = scene()?;
+            measure(&self.record(label, &scene, spec)?, &context)
+        };
         if self.engine != Engine::Tamp {
-            return measure(&self.record(label, scene, spec)?);
+            return run();
         }
         self.recorded.store(true, Ordering::Relaxed);
-        let key = store::key_of(&(scene, spec.trajectory_every, spec.walls));
-        store.cached(name, &key, || measure(&self.record(label, scene, spec)?))
+        store.cached(name, &store::key_of(&(key, spec)), run)
     }
 
     /// `reference_data/<peer>/engine/<case>.json`.

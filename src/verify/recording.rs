@@ -12,7 +12,7 @@ use std::collections::BTreeMap;
 
 /// What a case needs an engine to record of one run: the scene's `output` block as
 /// the resolved scene hands it to an engine.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 pub struct RecordSpec {
     /// Steps between frames; the first (step 0) and the last step are always recorded.
     pub trajectory_every: u64,

@@ -46,7 +46,7 @@ use crate::plot::{Panel, Series, write_svg};
 use crate::process::die_compaction::densities_in;
 use crate::process::die_compaction_file::DieCompactionFile;
 use crate::process::die_replay::{self, ReplayRecord, Stroke};
-use crate::verify::recording::RecordSpec;
+use crate::verify::recording::{RecordSpec, Recording};
 use crate::verify::store::Store;
 use crate::verify::{CaseContext, Measured};
 use serde::Deserialize;
@@ -333,47 +333,54 @@ fn replay(ctx: &CaseContext, store: &Store, run: &RecordedRun) -> Result<Vec<Rep
         "" => format!("seed{}", run.seed),
         label => format!("{label}_seed{}", run.seed),
     };
-    let specimen = super::die_specimen::prepare(&run.scene)?;
-    let recorded = run.stroke.h0;
-    if (specimen.h0 - recorded).abs() > 1e-12 * recorded {
-        return Err(TampError::Other(format!(
-            "results.csv: seed {} was recorded for a specimen of H0 = {recorded:e} m; tamp now fills one of {:e} m: re-record (regenerate.sh)",
-            run.seed, specimen.h0
-        )));
-    }
-    let solid = die_replay::solid_sphere_scene(&run.scene);
-    let mut scene = die_replay::replay_scene(&solid, &specimen, &run.stroke)?;
     let per_record = run.stroke.steps_per_record;
-    scene.run.duration = None;
-    scene.run.steps = Some(per_record * run.stroke.heights.len() as u64);
-    let walls = Walls::of(&scene)?;
     let spec = RecordSpec::every(per_record, false).with_walls();
     let dc = &run.scene.die_compaction;
+    let scene = || {
+        let specimen = super::die_specimen::prepare(&run.scene)?;
+        let recorded = run.stroke.h0;
+        if (specimen.h0 - recorded).abs() > 1e-12 * recorded {
+            return Err(TampError::Other(format!(
+                "results.csv: seed {} was recorded for a specimen of H0 = {recorded:e} m; tamp now fills one of {:e} m: re-record (regenerate.sh)",
+                run.seed, specimen.h0
+            )));
+        }
+        let solid = die_replay::solid_sphere_scene(&run.scene);
+        let mut scene = die_replay::replay_scene(&solid, &specimen, &run.stroke)?;
+        scene.run.duration = None;
+        scene.run.steps = Some(per_record * run.stroke.heights.len() as u64);
+        let walls = Walls::of(&scene)?;
+        Ok((scene, (specimen.h0, walls)))
+    };
+    let measure = |rec: &Recording, (h0, walls): &(f64, Walls)| {
+        let area = PI * (0.5 * dc.die_diameter).powi(2);
+        rec.frames
+            .iter()
+            .map(|f| {
+                let height = h0 + f.walls[walls.punch].displacement.z;
+                let positions: Vec<Vec3> = f.bodies.iter().map(|b| b.position).collect();
+                let radii: Vec<f64> = f.bodies.iter().map(|b| b.radius).collect();
+                let (density_specimen, density_rve) =
+                    densities_in(&positions, &radii, dc.die_diameter, dc.rve_diameter, height)?;
+                Ok(ReplayRecord {
+                    time: f.step as f64 * rec.dt,
+                    height,
+                    punch_pressure: f.walls[walls.punch].force.z / area,
+                    floor_pressure: -f.walls[walls.floor].force.z / area,
+                    density_specimen,
+                    density_rve,
+                })
+            })
+            .collect()
+    };
+    // The replay is made from the die-compaction file and the stroke alone.
+    let key = (&run.scene, &run.stroke);
     ctx.record_and_keep(
         store,
-        &format!("{label}.replay.json"),
-        (&label, &scene, spec),
-        |rec| {
-            let area = PI * (0.5 * dc.die_diameter).powi(2);
-            rec.frames
-                .iter()
-                .map(|f| {
-                    let height = specimen.h0 + f.walls[walls.punch].displacement.z;
-                    let positions: Vec<Vec3> = f.bodies.iter().map(|b| b.position).collect();
-                    let radii: Vec<f64> = f.bodies.iter().map(|b| b.radius).collect();
-                    let (density_specimen, density_rve) =
-                        densities_in(&positions, &radii, dc.die_diameter, dc.rve_diameter, height)?;
-                    Ok(ReplayRecord {
-                        time: f.step as f64 * rec.dt,
-                        height,
-                        punch_pressure: f.walls[walls.punch].force.z / area,
-                        floor_pressure: -f.walls[walls.floor].force.z / area,
-                        density_specimen,
-                        density_rve,
-                    })
-                })
-                .collect()
-        },
+        (&format!("{label}.replay.json"), &key),
+        (&label, spec),
+        scene,
+        measure,
     )
 }
 

@@ -6,7 +6,9 @@
 //! - linear momentum Σ m v is conserved (each contact force acts equally and oppositely);
 //! - angular momentum about the origin Σ (m x × v + I ω) is conserved, when the two
 //!   lever arms of each contact add up to the centre distance (tamp's and LIGGGHTS's
-//!   contact point mid-overlap, LAMMPS's R − δ/2);
+//!   contact point mid-overlap, LAMMPS's R − δ/2); with `gran/hooke/history`'s full
+//!   radii (`"lever_arm": "full_radius"`) each contact adds at most μ δ_max ∫|F_n| dt,
+//!   a bound the case file derives from the scene's inputs;
 //! - the kinetic energy (translational and rotational) after the last contact lies
 //!   between 0 and its initial value (passive contacts).
 //!

@@ -177,7 +177,7 @@ impl TangentialModel for LammpsLinearHistory {
             LammpsHistory::LinearHistoryClassic => "linear_history_classic",
             LammpsHistory::GranHookeHistory => {
                 return Err(NoLammpsModel(
-                    "pair granular has no tangential model with gran/hooke/history's unscaled spring: the scene is exported as pair_style gran/hooke/history where that style can say the rest".into(),
+                    "pair granular has no tangential model with gran/hooke/history's unscaled spring (tamp export-lammps writes a scene with this history as pair_style gran/hooke/history, where that style can say the rest)".into(),
                 ));
             }
         };
