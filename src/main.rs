@@ -328,18 +328,7 @@ fn main() -> ExitCode {
             tamp::lammps::export::export,
             tamp::lammps::die_compaction::export_pressing,
         )
-        .map(|x| {
-            println!(
-                "exported {} particles, {} steps of {:e} s to {} ({}); run: cd {} && lmp -in in.tamp",
-                x.particles,
-                x.steps,
-                x.dt,
-                out.display(),
-                x.files.join(", "),
-                out.display()
-            );
-            0
-        }),
+        .map(|x| exported(&x, &out, "lmp")),
         Command::ExportLiggghts {
             scene,
             out,
@@ -352,21 +341,7 @@ fn main() -> ExitCode {
             tamp::liggghts::export::export,
             tamp::liggghts::die_compaction::export_pressing,
         )
-        .map(|x| {
-            for note in &x.notes {
-                eprintln!("note: {note}");
-            }
-            println!(
-                "exported {} particles, {} steps of {:e} s to {} ({}); run: cd {} && liggghts -in in.tamp",
-                x.particles,
-                x.steps,
-                x.dt,
-                out.display(),
-                x.files.join(", "),
-                out.display()
-            );
-            0
-        }),
+        .map(|x| exported(&x, &out, "liggghts")),
         Command::ImportLiggghtsDump {
             file,
             out,
@@ -374,23 +349,21 @@ fn main() -> ExitCode {
             gravity,
             average_from,
             die_stroke,
-        } => {
-            tamp::liggghts::import::run_cli(
-                &file,
-                &out,
-                floor,
-                gravity,
-                average_from,
-                die_stroke.as_deref(),
-            )
-            .map(|q| {
-                for (name, value) in q {
-                    println!("{name} = {value:e}");
-                }
-                println!("wrote {}/trajectory.csv and quantities.csv", out.display());
-                0
-            })
-        }
+        } => tamp::liggghts::import::run_cli(
+            &file,
+            &out,
+            floor,
+            gravity,
+            average_from,
+            die_stroke.as_deref(),
+        )
+        .map(|q| {
+            for (name, value) in q {
+                println!("{name} = {value:e}");
+            }
+            println!("wrote {}/trajectory.csv and quantities.csv", out.display());
+            0
+        }),
         Command::Compare { a, b, tolerances } => {
             tamp::compare::run_cli(&a, &b, tolerances.as_deref())
         }
@@ -400,9 +373,7 @@ fn main() -> ExitCode {
             peers,
             cases,
             report,
-        } => {
-            tamp::verify::crosscheck::run_cli(live, tier, &peers, &cases, &report)
-        }
+        } => tamp::verify::crosscheck::run_cli(live, tier, &peers, &cases, &report),
         Command::Study {
             study:
                 Study::AccuracyCost {
@@ -542,4 +513,22 @@ fn run_document(
         }
     }
     Ok(0)
+}
+
+/// What `export-lammps` and `export-liggghts` print of a deck written to `out`: the
+/// differences it cannot avoid (stderr), then what it holds and how `peer` runs it.
+fn exported(x: &tamp::peer_deck::Exported, out: &std::path::Path, peer: &str) -> u8 {
+    for note in &x.notes {
+        eprintln!("note: {note}");
+    }
+    println!(
+        "exported {} particles, {} steps of {:e} s to {} ({}); run: cd {} && {peer} -in in.tamp",
+        x.particles,
+        x.steps,
+        x.dt,
+        out.display(),
+        x.files.join(", "),
+        out.display()
+    );
+    0
 }
