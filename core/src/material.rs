@@ -97,10 +97,10 @@ pub struct PairProperties {
     pub effective_shear_modulus: Option<f64>,
     /// σ0* and m (Rojek eq 18); `None` unless a material of the pair has Hollomon constants.
     pub hollomon: Option<Hollomon>,
-    /// The factor of Storåkers' plastic constant that `hollomon` alone sets
-    /// (`contact::normal::storakers::storakers_pair_constant`), computed once per pair
-    /// by the scene's build; `None` before, or without `hollomon`.
-    pub storakers_constant: Option<f64>,
+    /// What the scene's normal law derives from this pair once, when the scene is
+    /// built, rather than at every contact (`NormalModel::pair_constant`: Storåkers'
+    /// plastic factor); `None` for a law that derives nothing, or before the build.
+    pub law_constant: Option<f64>,
     /// Coulomb friction coefficient μ of this pair.
     pub friction: f64,
 }
@@ -165,7 +165,7 @@ impl PairTable {
                     effective_modulus: effective_modulus(&materials[a], &materials[b]),
                     effective_shear_modulus: effective_shear_modulus(&materials[a], &materials[b]),
                     hollomon,
-                    storakers_constant: None,
+                    law_constant: None,
                     friction: friction(a, b),
                 });
             }

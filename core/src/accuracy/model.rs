@@ -12,9 +12,6 @@
 //! Verlet is second order); p ≈ 1 where it jumps (a dashpot's γ v at first touch).
 
 use crate::contact::ContactLaw;
-use crate::contact::damping::Damping;
-use crate::contact::normal::thornton::{Thornton, Unloading};
-use crate::contact::normal::{NormalLaw, Storakers};
 
 /// The largest Δt/t_c the model gives: the calibration's coarser steps are not yet
 /// on the power law (some laws stop earlier: `calibration::largest_ratio`).
@@ -63,53 +60,19 @@ impl ErrorModel {
     }
 }
 
-/// The model of the scene's law; `None` where the calibration has none (laws with
-/// no impact closed form, pure Storåkers, cohesion). Friction does not enter: it does
-/// not change a head-on impact.
+/// The model of the scene's law, as its normal law names it beside the damping
+/// (`NormalModel::error_model`); `None` where the calibration has none (laws with no
+/// impact closed form, pure Storåkers, cohesion). Friction does not enter: it does not
+/// change a head-on impact.
 pub fn for_law(law: &ContactLaw) -> Option<&'static ErrorModel> {
     // The error models are calibrated on dashpots that pull at the end of a contact;
     // the clamp ends the contact earlier, at another restitution.
     if law.no_pull {
         return None;
     }
-    let name = match (law.normal, law.damping, law.cohesion) {
-        (_, _, Some(_)) => return None,
-        (NormalLaw::Linear(_), None, None) => "linear",
-        (
-            NormalLaw::Linear(_),
-            Some(Damping::Constant(_) | Damping::MassVelocity(_) | Damping::CriticalFraction(_)),
-            None,
-        ) => "linear_damped",
-        (NormalLaw::Hertz(_), None, None) => "hertz",
-        (NormalLaw::WaltonBraun(_), None, None) => "walton_braun",
-        // η_n0·m* is one constant γ_n for a given impact.
-        (NormalLaw::Hertz(_), Some(Damping::Constant(_) | Damping::MassVelocity(_)), None) => {
-            "hertz_constant_damped"
-        }
-        (NormalLaw::KuwabaraKono(_), None, None) => "kuwabara_kono",
-        (
-            NormalLaw::Storakers(Storakers {
-                min_with_hertz: true,
-            }),
-            None,
-            None,
-        ) => "storakers_min_hertz",
-        (
-            NormalLaw::Hertz(_),
-            Some(
-                Damping::CriticalFraction(_) | Damping::LiggghtsRestitution(_) | Damping::Tsuji(_),
-            ),
-            None,
-        ) => "hertz_damped",
-        (
-            NormalLaw::Thornton(Thornton {
-                unloading: Unloading::Thornton1997,
-                ..
-            }),
-            None,
-            None,
-        ) => "thornton",
-        _ => return None,
-    };
+    if law.cohesion.is_some() {
+        return None;
+    }
+    let name = law.normal.error_model(law.damping.as_ref())?;
     super::calibration::MODELS.iter().find(|m| m.law == name)
 }

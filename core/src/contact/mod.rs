@@ -41,14 +41,11 @@ pub mod states;
 pub mod tangential;
 pub mod van_der_waals;
 
-use crate::each_tangential;
+use crate::each_family;
 use crate::material::PairProperties;
 use crate::particles::Vec3;
 use damping::Damping;
-use model::{
-    CohesionModel, Composed, DampingModel, LawVisitor, NoCohesion, NoDamping, NoFriction,
-    NormalModel, Roles, TangentialModel,
-};
+use model::{Composed, LawVisitor, NoFriction, NormalModel, Roles, TangentialModel};
 use normal::NormalLaw;
 use tangential::TangentialLaw;
 use van_der_waals::Cohesion;
@@ -93,7 +90,7 @@ pub struct ContactForce {
 }
 
 /// The scene's law: one value per role, as the scene file gives them, turned into
-/// the monomorphic `Composed` type once per run by `visit`.
+/// its `Composed` type once per run by `visit`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ContactLaw {
     /// The normal law (always present).
@@ -154,9 +151,9 @@ impl ContactLaw {
         struct Along<'a>(&'a PairProperties, &'a [(ContactGeometry, f64)]);
         impl LawVisitor for Along<'_> {
             type Output = Vec<ContactForce>;
-            fn visit<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel>(
+            fn visit<N: NormalModel, T: TangentialModel>(
                 self,
-                law: Composed<N, D, T, C>,
+                law: Composed<N, T>,
             ) -> Vec<ContactForce> {
                 let mut state = model::StateOf::<N, T>::default();
                 self.1
@@ -168,8 +165,8 @@ impl ContactLaw {
         self.visit(Along(pair, path))
     }
 
-    /// Run `visitor` with the scene's laws as types: every combination of the roles
-    /// is monomorphised, so the visitor's code holds no `match` on a law.
+    /// Run `visitor` with the scene's normal law and tangential family as types (one
+    /// compiled visitor per combination; the other roles are values, model.rs).
     pub fn visit<V: LawVisitor>(&self, visitor: V) -> V::Output {
         // The library's unit-test build would compile every combination a second time
         // (docs/performance.md, "Compile time"): tests that build or run a simulation
@@ -182,93 +179,50 @@ impl ContactLaw {
             );
         }
         #[cfg(not(test))]
-        crate::each_normal!(self.normal, n => self.with_damping(n, visitor))
+        crate::each_normal!(self.normal, n => self.with_tangential(n, visitor))
     }
 
     #[cfg_attr(test, allow(dead_code))]
-    fn with_damping<N: NormalModel, V: LawVisitor>(&self, n: N, v: V) -> V::Output {
-        // Validation refuses a damping role beside a law that dissipates by itself;
-        // a constant condition, so the damped variants of such a law are not compiled.
-        if N::OWN_DISSIPATION {
-            return self.with_tangential(n, NoDamping, v);
-        }
-        match self.damping {
-            None => self.with_tangential(n, NoDamping, v),
-            Some(Damping::CriticalFraction(d)) => self.with_tangential(n, d, v),
-            Some(
-                d @ (Damping::Constant(_) | Damping::MassVelocity(_) | Damping::Viscoelastic(_)),
-            ) => self.with_tangential(n, d.viscous().expect("a viscous kind"), v),
-            Some(Damping::LiggghtsRestitution(d)) => {
-                let d = d
-                    .with(&self.normal)
-                    .expect("validation refuses liggghts_restitution beside this normal law");
-                self.with_tangential(n, d, v)
-            }
-            Some(Damping::Tsuji(d)) => {
-                let d = d
-                    .with(&self.normal)
-                    .expect("validation refuses tsuji beside this normal law");
-                self.with_tangential(n, d, v)
-            }
-        }
-    }
-
-    #[cfg_attr(test, allow(dead_code))]
-    fn with_tangential<N: NormalModel, D: DampingModel, V: LawVisitor>(
-        &self,
-        n: N,
-        d: D,
-        v: V,
-    ) -> V::Output {
+    fn with_tangential<N: NormalModel, V: LawVisitor>(&self, n: N, v: V) -> V::Output {
         match self.tangential {
-            None => self.with_cohesion(n, d, NoFriction, v),
-            Some(tangential) => each_tangential!(tangential, t => self.with_cohesion(n, d, t, v)),
+            None => self.compose(n, NoFriction, v),
+            Some(tangential) => each_family!(tangential, t => self.compose(n, t, v)),
         }
     }
 
     #[cfg_attr(test, allow(dead_code))]
-    fn with_cohesion<N: NormalModel, D: DampingModel, T: TangentialModel, V: LawVisitor>(
+    fn compose<N: NormalModel, T: TangentialModel, V: LawVisitor>(
         &self,
         normal: N,
-        damping: D,
         tangential: T,
         v: V,
     ) -> V::Output {
-        match self.cohesion {
-            None => v.visit(Composed {
-                normal,
-                damping,
-                tangential,
-                cohesion: NoCohesion,
-                no_pull: self.no_pull,
-            }),
-            Some(Cohesion::VanDerWaals(cohesion)) => v.visit(Composed {
-                normal,
-                damping,
-                tangential,
-                cohesion,
-                no_pull: self.no_pull,
-            }),
-        }
+        v.visit(Composed {
+            normal,
+            damping: self.damping.and_then(|d| d.dashpot(&self.normal)),
+            tangential,
+            cohesion: self.cohesion,
+            no_pull: self.no_pull,
+        })
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::contact::damping::CriticalFraction;
+    use crate::contact::damping::{CriticalFraction, Dashpot};
     use crate::contact::model::StateOf;
     use crate::contact::normal::Hertz;
     use crate::contact::tangential::CundallStrack;
 
-    type Law = Composed<Hertz, CriticalFraction, CundallStrack, NoCohesion>;
+    type Law = Composed<Hertz, CundallStrack>;
 
     fn law() -> Law {
         Composed {
             normal: Hertz {},
-            damping: CriticalFraction { xi: 0.3 },
+            damping: Some(Dashpot::CriticalFraction(CriticalFraction { xi: 0.3 })),
             tangential: CundallStrack { stiffness: 1e5 },
-            cohesion: NoCohesion,
+            cohesion: None,
             no_pull: false,
         }
     }
@@ -320,7 +274,7 @@ mod tests {
             effective_modulus: Some(1e9),
             effective_shear_modulus: Some(4e8),
             hollomon: None,
-            storakers_constant: None,
+            law_constant: None,
             friction: 0.5,
         }
     }
@@ -369,7 +323,7 @@ mod tests {
     fn contact_state_is_sized_to_the_laws() {
         assert_eq!(std::mem::size_of::<StateOf<Hertz, NoFriction>>(), 0);
         assert_eq!(std::mem::size_of::<StateOf<Hertz, CundallStrack>>(), 24);
-        const { assert!(!Composed::<Hertz, NoDamping, NoFriction, NoCohesion>::HAS_STATE) };
+        const { assert!(!Composed::<Hertz, NoFriction>::HAS_STATE) };
         const { assert!(Law::HAS_STATE) };
     }
 }

@@ -1,23 +1,27 @@
 //! The four roles of a contact law as traits, and their composition.
 //!
 //! Each law is one type implementing its role's trait (`NormalModel`,
-//! `DampingModel`, `TangentialModel`, `CohesionModel`); a role the scene leaves out
-//! is a type too (`NoDamping`, `NoFriction`, `NoCohesion`) whose code compiles to
-//! nothing. `Composed<N, D, T, C>` evaluates the four in their fixed order. The scene's
-//! `ContactLaw` (runtime enums) is turned into its `Composed` type once per run by
-//! `ContactLaw::visit`, so the force loops are monomorphised on the scene's laws and
-//! hold no `match` on a law inside.
+//! `DampingModel`, `TangentialModel`, `CohesionModel`). `Composed<N, T>` evaluates the
+//! four roles in their fixed order. The scene's `ContactLaw` (runtime enums) is turned
+//! into its `Composed` type once per run by `ContactLaw::visit`. What is a type there is
+//! what decides the loop's storage and most of its arithmetic: the normal law `N`, and
+//! the tangential law's family `T` (tangential/families.rs), by the state a contact
+//! keeps, with `NoFriction` for friction off, whose code compiles to nothing. The
+//! damping kind, the law within a tangential family and cohesion are branches fixed for
+//! the run (a `match` the processor predicts every time): as types they multiplied the
+//! compiled loops by their number (docs/performance.md, "Compile time").
 //!
-//! What a contact remembers is typed by its laws too (`ContactState`): the pair
+//! What a contact remembers is typed by its laws (`ContactState`): the pair
 //! `(N::State, T::State)`, zero bytes for a frictionless Hertz contact, one 3-vector
 //! for a spring.
 
-use crate::contact::damping::Damping;
 use crate::contact::damping::liggghts::LiggghtsModel;
+use crate::contact::damping::{Damping, Dashpot};
 use crate::contact::lammps::{LammpsNormal, NoLammpsModel};
 use crate::contact::normal::NormalLaw;
 use crate::contact::registry::{NormalExample, TangentialExample};
 use crate::contact::states::ContactStates;
+use crate::contact::van_der_waals::Cohesion;
 use crate::contact::{ContactForce, ContactGeometry};
 use crate::error::Errors;
 use crate::material::PairProperties;
@@ -196,7 +200,7 @@ pub trait NormalModel: Copy + Debug + PartialEq {
     /// What one contact of this law remembers between steps (`()` for an elastic law).
     type State: ContactState;
     /// Whether the law dissipates by itself: a separate damping role is then
-    /// refused, and no damped variant of it is compiled.
+    /// refused.
     const OWN_DISSIPATION: bool = false;
 
     /// The `law` of the scene file, also the law's name in outputs.
@@ -294,12 +298,22 @@ pub trait NormalModel: Copy + Debug + PartialEq {
     /// Whether `impact_stiffness` depends on the impact speed (the nonlinear laws):
     /// the time step then needs a characteristic velocity before contacts exist.
     fn stiffness_depends_on_speed(&self) -> bool;
+
+    /// What the law derives from a material pair once, when the scene is built
+    /// (`PairProperties::law_constant`), rather than at every contact.
+    fn pair_constant(&self, _pair: &PairProperties) -> Option<f64> {
+        None
+    }
+
+    /// The name in `accuracy::calibration::MODELS` of the error model calibrated for
+    /// this law beside `damping`, or `None` where it has none (no impact closed form).
+    fn error_model(&self, _damping: Option<&Damping>) -> Option<&'static str> {
+        None
+    }
 }
 
 /// A viscous normal dashpot c_n · dδ/dt.
 pub trait DampingModel: Copy + Debug {
-    /// False for `NoDamping`: its coefficient is never asked for.
-    const ACTIVE: bool;
     /// The `kind` of the scene file.
     fn name(&self) -> &'static str;
     /// The rules of its own parameters; `path` is where the scene holds them.
@@ -315,24 +329,6 @@ pub trait DampingModel: Copy + Debug {
     /// Damping ratio ξ of a contact with this mass, stiffness and contact radius
     /// (Rojek eq 28).
     fn ratio(&self, effective_mass: f64, stiffness: f64, contact_radius: f64) -> f64;
-}
-
-/// No normal dashpot.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct NoDamping;
-
-impl DampingModel for NoDamping {
-    const ACTIVE: bool = false;
-    fn name(&self) -> &'static str {
-        "none"
-    }
-    #[inline(always)]
-    fn coefficient(&self, _: f64, _: f64, _: impl FnOnce() -> f64) -> f64 {
-        0.0
-    }
-    fn ratio(&self, _: f64, _: f64, _: f64) -> f64 {
-        0.0
-    }
 }
 
 /// The tangential force, limited by the contact's normal force.
@@ -431,8 +427,6 @@ impl TangentialModel for NoFriction {
 
 /// An attraction acting across a gap up to `reach`.
 pub trait CohesionModel: Copy + Debug {
-    /// False for `NoCohesion`: no attraction is computed.
-    const ACTIVE: bool;
     /// The rules of its own parameters; `path` is where the scene holds them.
     fn check(&self, _path: &str, _errors: &mut Errors) {}
     /// How far beyond touching it acts, m.
@@ -443,35 +437,17 @@ pub trait CohesionModel: Copy + Debug {
     fn energy(&self, gap: f64, effective_radius: f64) -> f64;
 }
 
-/// No cohesion.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct NoCohesion;
-
-impl CohesionModel for NoCohesion {
-    const ACTIVE: bool = false;
-    fn reach(&self) -> f64 {
-        0.0
-    }
-    #[inline(always)]
-    fn force(&self, _: f64, _: f64) -> f64 {
-        0.0
-    }
-    fn energy(&self, _: f64, _: f64) -> f64 {
-        0.0
-    }
-}
-
 /// One law per role, evaluated as normal → damping → tangential → cohesion.
 #[derive(Clone, Copy, Debug)]
-pub struct Composed<N, D, T, C> {
+pub struct Composed<N, T> {
     /// The normal law.
     pub normal: N,
-    /// The normal dashpot (`NoDamping` when off).
-    pub damping: D,
-    /// The friction law (`NoFriction` when off).
+    /// The normal dashpot, if any.
+    pub damping: Option<Dashpot>,
+    /// The friction law's family (`NoFriction` when off).
     pub tangential: T,
-    /// The attraction (`NoCohesion` when off).
-    pub cohesion: C,
+    /// The attraction, if any.
+    pub cohesion: Option<Cohesion>,
     /// Whether the elastic plus damping normal force is clamped at zero: a branch
     /// fixed for the run, not a type, as it only compares one number.
     pub no_pull: bool,
@@ -480,9 +456,15 @@ pub struct Composed<N, D, T, C> {
 /// The state a composed law keeps per contact.
 pub type StateOf<N, T> = Composite<<N as NormalModel>::State, <T as TangentialModel>::State>;
 
-impl<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel> Composed<N, D, T, C> {
+impl<N: NormalModel, T: TangentialModel> Composed<N, T> {
     /// Whether contacts keep anything between steps.
     pub const HAS_STATE: bool = ContactStates::<StateOf<N, T>>::KEPT;
+
+    /// How far beyond touching the law acts (the cohesion cut-off), m.
+    #[inline(always)]
+    pub fn reach(&self) -> f64 {
+        self.cohesion.map_or(0.0, |c| c.reach())
+    }
 
     #[inline(always)]
     fn tangential_input(
@@ -544,22 +526,20 @@ impl<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel> Comp
                 self.normal
                     .response(g.overlap, rate, g.effective_radius, pair, &mut state.normal);
             force.normal = elastic.force;
-            let damping = if D::ACTIVE {
-                self.damping
-                    .coefficient(g.effective_mass, elastic.stiffness, || {
-                        (g.overlap * g.effective_radius).sqrt()
-                    })
-            } else {
-                0.0
-            };
-            if D::ACTIVE {
-                force.normal += damping * rate;
+            let damping = if let Some(dashpot) = &self.damping {
+                let c = dashpot.coefficient(g.effective_mass, elastic.stiffness, || {
+                    (g.overlap * g.effective_radius).sqrt()
+                });
+                force.normal += c * rate;
                 // LAMMPS's `limit_damping`, LIGGGHTS's `limitForce on`: the clamp comes
                 // before the friction law reads the normal force, as in both.
                 if self.no_pull && force.normal < 0.0 {
                     force.normal = 0.0;
                 }
-            }
+                c
+            } else {
+                0.0
+            };
             if T::ACTIVE {
                 let input =
                     Self::tangential_input(g, pair, force.normal, elastic.stiffness, damping, dt);
@@ -568,8 +548,8 @@ impl<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel> Comp
         } else if Self::HAS_STATE {
             *state = StateOf::<N, T>::default();
         }
-        if C::ACTIVE {
-            force.normal -= self.cohesion.force(-g.overlap, g.effective_radius);
+        if let Some(cohesion) = &self.cohesion {
+            force.normal -= cohesion.force(-g.overlap, g.effective_radius);
         }
         force
     }
@@ -583,11 +563,9 @@ impl<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel> Comp
         pair: &PairProperties,
         state: &StateOf<N, T>,
     ) -> f64 {
-        let cohesion = if C::ACTIVE {
-            self.cohesion.energy(-overlap, effective_radius)
-        } else {
-            0.0
-        };
+        let cohesion = self
+            .cohesion
+            .map_or(0.0, |c| c.energy(-overlap, effective_radius));
         if overlap <= 0.0 {
             return cohesion;
         }
@@ -636,8 +614,5 @@ pub trait LawVisitor {
     /// What the visit returns.
     type Output;
     /// Run with the scene's law as the composed type `law`.
-    fn visit<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel>(
-        self,
-        law: Composed<N, D, T, C>,
-    ) -> Self::Output;
+    fn visit<N: NormalModel, T: TangentialModel>(self, law: Composed<N, T>) -> Self::Output;
 }

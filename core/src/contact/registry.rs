@@ -37,7 +37,7 @@ pub fn pair() -> PairProperties {
         effective_modulus: Some(EFFECTIVE_MODULUS),
         effective_shear_modulus: Some(EFFECTIVE_SHEAR_MODULUS),
         hollomon: Some(HOLLOMON),
-        storakers_constant: Some(crate::contact::normal::storakers::storakers_pair_constant(
+        law_constant: Some(crate::contact::normal::storakers::storakers_pair_constant(
             HOLLOMON,
         )),
         friction: FRICTION,

@@ -53,6 +53,21 @@ impl Cohesion {
             Cohesion::VanDerWaals(c) => c.check(path, errors),
         }
     }
+
+    /// See `CohesionModel::force`.
+    #[inline(always)]
+    pub fn force(&self, gap: f64, effective_radius: f64) -> f64 {
+        match self {
+            Cohesion::VanDerWaals(c) => CohesionModel::force(c, gap, effective_radius),
+        }
+    }
+
+    /// See `CohesionModel::energy`.
+    pub fn energy(&self, gap: f64, effective_radius: f64) -> f64 {
+        match self {
+            Cohesion::VanDerWaals(c) => CohesionModel::energy(c, gap, effective_radius),
+        }
+    }
 }
 
 impl VanDerWaals {
@@ -79,7 +94,6 @@ impl VanDerWaals {
 }
 
 impl CohesionModel for VanDerWaals {
-    const ACTIVE: bool = true;
     fn check(&self, path: &str, e: &mut Errors) {
         let (min, cutoff) = (self.min_separation, self.cutoff);
         e.positive(format!("{path}.hamaker"), self.hamaker);

@@ -17,7 +17,6 @@ use crate::contact::damping::Damping;
 use crate::contact::lever_arm::LeverArm;
 use crate::contact::model::{Needs, Roles};
 use crate::contact::normal::NormalLaw;
-use crate::contact::normal::storakers::storakers_pair_constant;
 use crate::contact::tangential::TangentialLaw;
 use crate::contact::van_der_waals::Cohesion;
 use crate::error::Errors;
@@ -292,7 +291,7 @@ pub fn pair_table(
             .map_or(default_friction, |o| o.2)
     });
     for pair in table.pairs_mut() {
-        pair.storakers_constant = pair.hollomon.map(storakers_pair_constant);
+        pair.law_constant = contact.normal.pair_constant(pair);
     }
     table
 }

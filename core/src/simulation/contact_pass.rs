@@ -1,27 +1,23 @@
-//! A pass over the contacts specialised to the scene: its laws as types, so the
-//! compiler builds one loop per combination of laws and a scene pays only for the laws
-//! it names. The force loop is such a pass. Whether spins enter, and through which
-//! lever arms, is a value fixed for the run (`Spins`) that the loop branches on per
-//! contact: as types they compiled every law's loop three times, each a copy of the
-//! law's whole evaluation, for a few multiplications per contact (docs/performance.md,
-//! "Compile time"). This is the one place that maps the scene's settings onto the pass.
+//! A pass over the contacts specialised to the scene: its normal law and tangential
+//! family as types (contact/model.rs), so the compiler builds one loop per pair of them.
+//! The force loop is such a pass. Whether spins enter, and through which lever arms, is
+//! a value fixed for the run (`Spins`) that the loop branches on per contact, as are the
+//! other roles: as types they multiplied the compiled loops, each a copy of the law's
+//! whole evaluation, for a few operations per contact (docs/performance.md, "Compile
+//! time"). This is the one place that maps the scene's settings onto the pass.
 
 use crate::contact::ContactLaw;
 use crate::contact::lever_arm::LeverArm;
-use crate::contact::model::{
-    CohesionModel, Composed, DampingModel, LawVisitor, NormalModel, TangentialModel,
-};
+use crate::contact::model::{Composed, LawVisitor, NormalModel, TangentialModel};
 
 /// A computation over the contacts, written once for any laws (`N`, `D`, `T`, `C`)
 /// and spins.
 pub(super) trait ContactPass {
     type Output;
-    fn run<N, D, T, C>(self, law: &Composed<N, D, T, C>, spins: Spins) -> Self::Output
+    fn run<N, T>(self, law: &Composed<N, T>, spins: Spins) -> Self::Output
     where
         N: NormalModel,
-        D: DampingModel,
-        T: TangentialModel,
-        C: CohesionModel;
+        T: TangentialModel;
 }
 
 /// How spins enter the contacts: whether they do (`on`: spins in the contact
@@ -57,10 +53,7 @@ struct Typed<P>(P, Spins);
 
 impl<P: ContactPass> LawVisitor for Typed<P> {
     type Output = P::Output;
-    fn visit<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel>(
-        self,
-        law: Composed<N, D, T, C>,
-    ) -> P::Output {
+    fn visit<N: NormalModel, T: TangentialModel>(self, law: Composed<N, T>) -> P::Output {
         self.0.run(&law, self.1)
     }
 }

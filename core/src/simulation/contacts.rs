@@ -2,9 +2,8 @@
 //! stored contact states, overlaps and counts.
 
 use super::Simulation;
-use crate::contact::model::{
-    CohesionModel, Composed, DampingModel, LawVisitor, NormalModel, StateOf, TangentialModel,
-};
+use super::narrow_phase::NarrowPhase;
+use crate::contact::model::{Composed, LawVisitor, NormalModel, StateOf, TangentialModel};
 use crate::contact::states::{ContactStates, StateStore};
 use crate::material::{PairProperties, effective_radius};
 use crate::particles::Vec3;
@@ -17,10 +16,7 @@ pub(super) struct NewStates {
 
 impl LawVisitor for NewStates {
     type Output = Box<dyn StateStore>;
-    fn visit<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel>(
-        self,
-        _: Composed<N, D, T, C>,
-    ) -> Box<dyn StateStore> {
+    fn visit<N: NormalModel, T: TangentialModel>(self, _: Composed<N, T>) -> Box<dyn StateStore> {
         Box::new(ContactStates::<StateOf<N, T>>::new(
             self.particles,
             self.boundaries,
@@ -29,38 +25,50 @@ impl LawVisitor for NewStates {
 }
 
 impl Simulation {
+    /// The narrow phase of the current state (narrow_phase.rs).
+    pub(super) fn narrow_phase(&self) -> NarrowPhase<'_> {
+        let p = &self.state.particles;
+        let n = p.len();
+        NarrowPhase {
+            image: self.model.detection.space.minimum_image(),
+            pairs: &self.state.neighbors.pairs,
+            position: &p.position[..n],
+            radius: &p.radius[..n],
+        }
+    }
+
     /// Particle pairs closer than `beyond` to touching (overlap > −beyond):
     /// (neighbour-list index, i, j, overlap).
     pub(super) fn touching_pairs(
         &self,
         beyond: f64,
     ) -> impl Iterator<Item = (usize, usize, usize, f64)> + '_ {
-        self.state
-            .neighbors
-            .pairs
-            .iter()
-            .enumerate()
-            .filter_map(move |(k, &(i, j))| {
-                let (i, j) = (i as usize, j as usize);
-                let overlap = self.overlap(i, j);
-                (overlap > -beyond).then_some((k, i, j, overlap))
-            })
+        let narrow = self.narrow_phase();
+        let mut near = Vec::new();
+        narrow.pairs_within(beyond, &mut near, |_| {});
+        near.into_iter().filter_map(move |(k, d)| {
+            let (i, j) = narrow.pair(k);
+            let overlap = narrow.radius[i] + narrow.radius[j] - d.norm();
+            (overlap > -beyond).then_some((k as usize, i, j, overlap))
+        })
     }
 
     /// Particle–boundary contacts closer than `beyond` to touching:
     /// (boundary, particle, facet, overlap).
     pub(super) fn touching_walls(&self, beyond: f64) -> Vec<(usize, usize, u32, f64)> {
-        let p = &self.state.particles;
+        let (walls, poses) = (&self.model.walls[..], &self.state.walls[..]);
         let mut out = Vec::new();
-        let mut found = Vec::new();
-        let walls = self.model.walls.iter().zip(&self.state.walls);
-        for (w, (wall, pose)) in walls.enumerate() {
-            for i in 0..p.len() {
-                found.clear();
-                wall.contacts(pose, &p.position[i], p.radius[i], beyond, &mut found);
+        let all: Result<(), ()> = self.narrow_phase().wall_contacts(
+            walls,
+            poses,
+            beyond,
+            &mut Vec::new(),
+            |w, _, _, i, found| {
                 out.extend(found.iter().map(|c| (w, i, c.facet, c.overlap)));
-            }
-        }
+                Ok(())
+            },
+        );
+        all.expect("the walk's visitor never fails");
         out
     }
 

@@ -3,9 +3,7 @@
 
 use super::Simulation;
 use super::force_loop::contact_mass;
-use crate::contact::model::{
-    CohesionModel, Composed, DampingModel, LawVisitor, NormalModel, StateOf, TangentialModel,
-};
+use crate::contact::model::{Composed, LawVisitor, NormalModel, StateOf, TangentialModel};
 use crate::timestep::{critical_time_step, critical_time_step_with_dashpot};
 
 /// `Simulation::critical_time_step` for the scene's laws as types.
@@ -13,10 +11,7 @@ pub(super) struct CriticalStep<'a>(&'a Simulation, Option<f64>);
 
 impl LawVisitor for CriticalStep<'_> {
     type Output = Option<f64>;
-    fn visit<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel>(
-        self,
-        law: Composed<N, D, T, C>,
-    ) -> Option<f64> {
+    fn visit<N: NormalModel, T: TangentialModel>(self, law: Composed<N, T>) -> Option<f64> {
         self.0.critical_time_step_with(&law, self.1)
     }
 }
@@ -47,34 +42,28 @@ impl Simulation {
             .visit(CriticalStep(self, characteristic_velocity))
     }
 
-    pub(super) fn critical_time_step_with<N, D, T, C>(
+    pub(super) fn critical_time_step_with<N, T>(
         &self,
-        law: &Composed<N, D, T, C>,
+        law: &Composed<N, T>,
         characteristic_velocity: Option<f64>,
     ) -> Option<f64>
     where
         N: NormalModel,
-        D: DampingModel,
         T: TangentialModel,
-        C: CohesionModel,
     {
         let p = &self.state.particles;
         let states = self.states_as::<StateOf<N, T>>();
         // LAMMPS's tangential dashpot x_γ,t c_n, c_n the contact's normal dashpot.
-        let x_gamma_t = if D::ACTIVE && T::ACTIVE {
+        let x_gamma_t = if law.damping.is_some() && T::ACTIVE {
             law.tangential.dashpot_over_normal()
         } else {
             0.0
         };
-        let dashpot = |effective_mass: f64, k_n: f64, contact_radius: f64| {
-            if x_gamma_t > 0.0 {
-                x_gamma_t
-                    * law
-                        .damping
-                        .coefficient(effective_mass, k_n, || contact_radius)
-            } else {
-                0.0
+        let dashpot = |effective_mass: f64, k_n: f64, contact_radius: f64| match law.damping {
+            Some(d) if x_gamma_t > 0.0 => {
+                x_gamma_t * d.coefficient(effective_mass, k_n, || contact_radius)
             }
+            _ => 0.0,
         };
         let mut met = vec![ContactsMet::default(); p.len()];
         for (k, i, j, overlap) in self.touching_pairs(0.0) {
@@ -155,12 +144,8 @@ impl Simulation {
                 .tangential
                 .viscous_coefficient()
                 .map(|damping| 2.0 * mass / (damping * lever * met.count.max(1) as f64));
-            let xi = if D::ACTIVE {
-                // The body's radius bounds the contact radius (damping/viscous.rs).
-                law.damping.ratio(mass, k, radius)
-            } else {
-                0.0
-            };
+            // The body's radius bounds the contact radius (damping/viscous.rs).
+            let xi = law.damping.map_or(0.0, |d| d.ratio(mass, k, radius));
             let elastic = critical_time_step(k, mass, xi);
             let mut dt = viscous.map_or(elastic, |v| v.min(elastic));
             if x_gamma_t > 0.0 {

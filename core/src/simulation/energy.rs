@@ -2,9 +2,7 @@
 //! gravity and prescribed bodies, and the check that a run does not create energy.
 
 use super::Simulation;
-use crate::contact::model::{
-    CohesionModel, Composed, DampingModel, LawVisitor, NormalModel, StateOf, TangentialModel,
-};
+use crate::contact::model::{Composed, LawVisitor, NormalModel, StateOf, TangentialModel};
 use crate::error::Result;
 use serde::{Deserialize, Serialize};
 
@@ -27,10 +25,7 @@ pub(super) struct StoredEnergy<'a>(&'a Simulation);
 
 impl LawVisitor for StoredEnergy<'_> {
     type Output = f64;
-    fn visit<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel>(
-        self,
-        law: Composed<N, D, T, C>,
-    ) -> f64 {
+    fn visit<N: NormalModel, T: TangentialModel>(self, law: Composed<N, T>) -> f64 {
         self.0.stored_energy_with(&law)
     }
 }
@@ -71,14 +66,12 @@ impl Simulation {
         self.model.law.visit(StoredEnergy(self))
     }
 
-    pub(super) fn stored_energy_with<N, D, T, C>(&self, law: &Composed<N, D, T, C>) -> f64
+    pub(super) fn stored_energy_with<N, T>(&self, law: &Composed<N, T>) -> f64
     where
         N: NormalModel,
-        D: DampingModel,
         T: TangentialModel,
-        C: CohesionModel,
     {
-        let reach = law.cohesion.reach();
+        let reach = law.reach();
         let states = self.states_as::<StateOf<N, T>>();
         let pairs: f64 = self
             .touching_pairs(reach)

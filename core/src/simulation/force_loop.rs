@@ -4,11 +4,10 @@
 
 use super::Simulation;
 use super::contact_pass::{ContactPass, Spins};
+use super::narrow_phase::NarrowPhase;
 use crate::boundary::{Boundary, WallPose, shape::ShapeContact};
 use crate::contact::lever_arm::Arms;
-use crate::contact::model::{
-    CohesionModel, Composed, DampingModel, NormalModel, StateOf, TangentialModel,
-};
+use crate::contact::model::{Composed, NormalModel, StateOf, TangentialModel};
 use crate::contact::states::ContactStates;
 use crate::contact::{ContactForce, ContactGeometry};
 use crate::error::Result;
@@ -55,8 +54,8 @@ pub(super) fn add_weights(p: &mut Particles, g: Vec3) {
 /// limit, the scene's laws, and a finite force. Returns the force on particle i
 /// and its parts; the error says what went wrong, for the caller to place.
 #[inline(always)]
-pub(super) fn resolve<N, D, T, C>(
-    law: &Composed<N, D, T, C>,
+pub(super) fn resolve<N, T>(
+    law: &Composed<N, T>,
     g: &ContactGeometry,
     ratio: f64,
     max_fraction: f64,
@@ -66,9 +65,7 @@ pub(super) fn resolve<N, D, T, C>(
 ) -> std::result::Result<(Vec3, ContactForce), String>
 where
     N: NormalModel,
-    D: DampingModel,
     T: TangentialModel,
-    C: CohesionModel,
 {
     let overlap = g.overlap;
     if ratio > max_fraction {
@@ -115,11 +112,27 @@ pub(super) fn carried_state<S: Copy + Default>(previous: &[(u32, S)], facet: u32
 
 /// The particle arrays a contact's geometry reads, as slices of one length.
 pub(super) struct Bodies<'a> {
+    pub(super) position: &'a [Vec3],
     pub(super) velocity: &'a [Vec3],
     pub(super) omega: &'a [Vec3],
     pub(super) radius: &'a [f64],
     pub(super) mass: &'a [f64],
     pub(super) prescribed: &'a [bool],
+}
+
+impl<'a> Bodies<'a> {
+    /// The arrays of `p`, as slices of its length.
+    pub(super) fn of(p: &'a Particles) -> Self {
+        let n = p.len();
+        Bodies {
+            position: &p.position[..n],
+            velocity: &p.velocity[..n],
+            omega: &p.omega[..n],
+            radius: &p.radius[..n],
+            mass: &p.mass[..n],
+            prescribed: &p.prescribed[..n],
+        }
+    }
 }
 
 /// The geometry of the pair contact i–j at separation d = x_i − x_j (nearest image,
@@ -159,7 +172,7 @@ pub(super) fn pair_geometry(
 /// in the scene's convention.
 #[inline(always)]
 pub(super) fn wall_geometry(
-    p: &Particles,
+    b: &Bodies,
     spins: Spins,
     i: usize,
     c: &ShapeContact,
@@ -167,16 +180,16 @@ pub(super) fn wall_geometry(
     pose: &WallPose,
 ) -> (ContactGeometry, Arms) {
     let (overlap, normal) = (c.overlap, c.normal);
-    let arm = spins.arms.wall(p.radius[i], overlap);
-    let mut relative_velocity = p.velocity[i] - pose.velocity;
+    let arm = spins.arms.wall(b.radius[i], overlap);
+    let mut relative_velocity = b.velocity[i] - pose.velocity;
     if spins.on {
-        relative_velocity -= p.omega[i].cross(&normal) * arm.velocity;
+        relative_velocity -= b.omega[i].cross(&normal) * arm.velocity;
     }
     let g = ContactGeometry {
         normal,
         overlap,
-        effective_radius: wall.effective_radius(pose, &p.position[i], p.radius[i]),
-        effective_mass: p.mass[i],
+        effective_radius: wall.effective_radius(pose, &b.position[i], b.radius[i]),
+        effective_mass: b.mass[i],
         relative_velocity,
     };
     (g, arm)
@@ -187,12 +200,10 @@ pub(super) struct ForceLoop<'a>(pub(super) &'a mut Simulation);
 
 impl ContactPass for ForceLoop<'_> {
     type Output = Result<()>;
-    fn run<N, D, T, C>(self, law: &Composed<N, D, T, C>, spins: Spins) -> Result<()>
+    fn run<N, T>(self, law: &Composed<N, T>, spins: Spins) -> Result<()>
     where
         N: NormalModel,
-        D: DampingModel,
         T: TangentialModel,
-        C: CohesionModel,
     {
         self.0.compute_forces_with(law, spins)
     }
@@ -202,16 +213,14 @@ impl Simulation {
     /// Contact, wall and body forces at the current positions, for the scene's laws
     /// as types. With `spins` on, spins enter contact velocities and torques are
     /// accumulated, with the lever arms of the scene's convention.
-    pub(super) fn compute_forces_with<N, D, T, C>(
+    pub(super) fn compute_forces_with<N, T>(
         &mut self,
-        law: &Composed<N, D, T, C>,
+        law: &Composed<N, T>,
         spins: Spins,
     ) -> Result<()>
     where
         N: NormalModel,
-        D: DampingModel,
         T: TangentialModel,
-        C: CohesionModel,
     {
         let kept = ContactStates::<StateOf<N, T>>::KEPT;
         let gravity = self.active_gravity();
@@ -229,8 +238,7 @@ impl Simulation {
         let max_fraction = self.model.limits.max_overlap_fraction;
         let mut worst = self.state.max_overlap_ratio;
         let torques = spins.on && T::ACTIVE;
-        let law_reach = law.cohesion.reach();
-        let image = self.model.detection.space.minimum_image();
+        let law_reach = law.reach();
         let states = self
             .state
             .contacts
@@ -243,6 +251,7 @@ impl Simulation {
         // The particle arrays as slices of one length n, so that one bounds check
         // per index covers them all, and none of them is re-read through `self`.
         let Particles {
+            id,
             position,
             velocity,
             omega,
@@ -254,86 +263,65 @@ impl Simulation {
             prescribed,
             ..
         } = p;
-        let (position, velocity, omega, radius, mass, material, prescribed) = (
-            &position[..n],
-            &velocity[..n],
-            &omega[..n],
-            &radius[..n],
-            &mass[..n],
-            &material[..n],
-            &prescribed[..n],
-        );
-        let (force, torque) = (&mut force[..n], &mut torque[..]);
         let bodies = Bodies {
-            velocity,
-            omega,
-            radius,
-            mass,
-            prescribed,
+            position: &position[..n],
+            velocity: &velocity[..n],
+            omega: &omega[..n],
+            radius: &radius[..n],
+            mass: &mass[..n],
+            prescribed: &prescribed[..n],
         };
-        let pairs = &self.state.neighbors.pairs[..];
+        let (id, material) = (&id[..n], &material[..n]);
+        let (force, torque) = (&mut force[..n], &mut torque[..]);
+        let narrow = NarrowPhase {
+            image: self.model.detection.space.minimum_image(),
+            pairs: &self.state.neighbors.pairs[..],
+            position: bodies.position,
+            radius: bodies.radius,
+        };
         let pair_states: &mut [StateOf<N, T>] = if kept {
-            &mut states.pairs[..pairs.len()]
+            &mut states.pairs[..narrow.pairs.len()]
         } else {
             &mut []
         };
 
-        // Pass 1, over every pair of the list: the pairs within reach of their law,
-        // with their separation; the state of every other pair is reset (it is apart).
-        // Most pairs of a Verlet list are apart, and this loop is all they cost.
+        // The pairs within reach of their law, with their separation; the state of
+        // every other pair is reset (it is apart). Then those pairs, in the list's
+        // order (so forces are summed in the same order as by one loop over the list).
         let mut near = std::mem::take(&mut self.work.near);
-        near.clear();
-        for (k, &(i, j)) in pairs.iter().enumerate() {
-            let (i, j) = (i as usize, j as usize);
-            let d = image.displacement(&position[i], &position[j]);
-            let reach = radius[i] + radius[j];
-            if d.norm_squared() >= (reach + law_reach).powi(2) {
-                if kept {
-                    pair_states[k] = Default::default();
-                }
-            } else {
-                near.push((k as u32, d));
+        narrow.pairs_within(law_reach, &mut near, |k| {
+            if kept {
+                pair_states[k] = Default::default();
             }
-        }
-
-        // Pass 2, over the pairs within reach, in the list's order (so forces are
-        // summed in the same order as by one loop over the list).
-        for &(k, d) in &near {
-            let k = k as usize;
-            let (i, j) = (pairs[k].0 as usize, pairs[k].1 as usize);
+        });
+        let radius = bodies.radius;
+        let pairs = near.iter().try_for_each(|&(k, d)| {
+            let (i, j) = narrow.pair(k);
             let reach = radius[i] + radius[j];
             let dist2 = d.norm_squared();
             let dist = dist2.sqrt();
             let overlap = reach - dist;
             let ratio = overlap / radius[i].min(radius[j]);
             worst = worst.max(ratio);
+            let name = || format!("contact {}-{}", id[i], id[j]);
             if dist == 0.0 {
                 // The build refuses coincident centres, and a pair driven together
                 // meets the overlap limit first unless it is at least (R_i + R_j)/R_min ≥ 2.
-                self.work.near = near;
-                return Err(self.unstable(format!(
-                    "contact {}-{}: the centres coincide (overlap {overlap:.4e} m), so the contact normal is undefined",
-                    self.state.particles.id[i], self.state.particles.id[j]
-                )));
+                return Err(format!(
+                    "{}: the centres coincide (overlap {overlap:.4e} m), so the contact normal is undefined",
+                    name()
+                ));
             }
             let (g, arm_i, arm_j) = pair_geometry(&bodies, spins, i, j, d, dist, overlap);
             let normal = g.normal;
             let pair = self.model.pair_table.get(material[i], material[j]);
             let state = if kept {
-                &mut pair_states[k]
+                &mut pair_states[k as usize]
             } else {
                 &mut fresh
             };
-            let (total, f) = match resolve(law, &g, ratio, max_fraction, pair, state, dt) {
-                Ok(forces) => forces,
-                Err(what) => {
-                    self.work.near = near;
-                    return Err(self.unstable(format!(
-                        "contact {}-{}: {what}",
-                        self.state.particles.id[i], self.state.particles.id[j]
-                    )));
-                }
-            };
+            let (total, f) = resolve(law, &g, ratio, max_fraction, pair, state, dt)
+                .map_err(|what| format!("{}: {what}", name()))?;
             force[i] += total;
             force[j] -= total;
             if torques {
@@ -341,53 +329,56 @@ impl Simulation {
                 torque[i] += t * arm_i.torque;
                 torque[j] += t * arm_j.torque;
             }
-        }
+            Ok(())
+        });
         self.work.near = near;
-        let p = &mut self.state.particles;
 
         let mut found = std::mem::take(&mut self.work.found);
-        let walls = self.model.walls.iter().zip(&self.state.walls);
-        for (w, (wall, pose)) in walls.enumerate() {
-            let mut on_wall = Vec3::zeros();
-            for i in 0..n {
-                found.clear();
-                wall.contacts(pose, &p.position[i], p.radius[i], law_reach, &mut found);
-                if kept {
-                    // The states of the facets touched last step, carried to this
-                    // step's contacts by facet.
-                    carry_facet_states(&mut states.walls[w][i], &found);
-                }
-                for (c, contact) in found.iter().enumerate() {
-                    let (facet, normal) = (contact.facet, contact.normal);
-                    let ratio = contact.overlap / p.radius[i];
-                    worst = worst.max(ratio);
-                    let (g, arm) = wall_geometry(p, spins, i, contact, wall, pose);
-                    let pair = self.model.pair_table.get(p.material[i], wall.material);
-                    let state = if kept {
-                        &mut states.walls[w][i][c].1
-                    } else {
-                        &mut fresh
-                    };
-                    let (total, f) = match resolve(law, &g, ratio, max_fraction, pair, state, dt) {
-                        Ok(forces) => forces,
-                        Err(what) => {
-                            let what = format!(
-                                "contact {}-wall '{}' (facet {facet}): {what}",
-                                p.id[i], wall.name
-                            );
-                            return Err(self.unstable(what));
-                        }
-                    };
-                    p.force[i] += total;
-                    on_wall -= total;
-                    if torques {
-                        p.torque[i] += -normal.cross(&f.tangential) * arm.torque;
+        let wall_force = &mut self.state.wall_force;
+        let walls = pairs.and_then(|()| {
+            wall_force.iter_mut().for_each(|f| *f = Vec3::zeros());
+            let (walls, poses) = (&self.model.walls[..], &self.state.walls[..]);
+            narrow.wall_contacts(
+                walls,
+                poses,
+                law_reach,
+                &mut found,
+                |w, wall, pose, i, found| {
+                    if kept {
+                        // The states of the facets touched last step, carried to this
+                        // step's contacts by facet.
+                        carry_facet_states(&mut states.walls[w][i], found);
                     }
-                }
-            }
-            self.state.wall_force[w] = on_wall;
-        }
+                    for (c, contact) in found.iter().enumerate() {
+                        let (facet, normal) = (contact.facet, contact.normal);
+                        let ratio = contact.overlap / radius[i];
+                        worst = worst.max(ratio);
+                        let (g, arm) = wall_geometry(&bodies, spins, i, contact, wall, pose);
+                        let pair = self.model.pair_table.get(material[i], wall.material);
+                        let state = if kept {
+                            &mut states.walls[w][i][c].1
+                        } else {
+                            &mut fresh
+                        };
+                        let (total, f) = resolve(law, &g, ratio, max_fraction, pair, state, dt)
+                            .map_err(|what| {
+                                format!(
+                                    "contact {}-wall '{}' (facet {facet}): {what}",
+                                    id[i], wall.name
+                                )
+                            })?;
+                        force[i] += total;
+                        wall_force[w] -= total;
+                        if torques {
+                            torque[i] += -normal.cross(&f.tangential) * arm.torque;
+                        }
+                    }
+                    Ok(())
+                },
+            )
+        });
         self.work.found = found;
+        walls.map_err(|what| self.unstable(what))?;
         self.state.max_overlap_ratio = worst;
         Ok(())
     }

@@ -2,8 +2,8 @@
 //!
 //! Each step: half kick → drift (walls move too) → neighbour-list check → forces
 //! (pairs, walls, gravity) → half kick. Only the effects the scene enabled run:
-//! rotation and friction select a monomorphised force loop, gravity and walls are
-//! skipped when absent.
+//! friction off selects a force loop without tangential code, rotation, damping and
+//! cohesion are branches fixed for the run, gravity and walls are skipped when absent.
 //!
 //! Energy book: E_mech = kinetic (translation + spin) + energy stored in contact
 //! springs. External work W is the work of gravity and of prescribed bodies (moving
@@ -45,6 +45,7 @@ mod energy;
 mod force_loop;
 mod growth_stage;
 mod limits;
+mod narrow_phase;
 mod model;
 mod pour;
 mod records;

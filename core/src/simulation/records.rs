@@ -4,9 +4,7 @@
 use super::Simulation;
 use super::contact_pass::Spins;
 use super::force_loop::{Bodies, carried_state, pair_geometry, resolve, wall_geometry};
-use crate::contact::model::{
-    CohesionModel, Composed, DampingModel, LawVisitor, NormalModel, StateOf, TangentialModel,
-};
+use crate::contact::model::{Composed, LawVisitor, NormalModel, StateOf, TangentialModel};
 use crate::contact::record::{ContactRecord, Partner};
 use crate::contact::states::ContactStates;
 
@@ -15,10 +13,7 @@ struct Records<'a>(&'a Simulation);
 
 impl LawVisitor for Records<'_> {
     type Output = Vec<ContactRecord>;
-    fn visit<N: NormalModel, D: DampingModel, T: TangentialModel, C: CohesionModel>(
-        self,
-        law: Composed<N, D, T, C>,
-    ) -> Vec<ContactRecord> {
+    fn visit<N: NormalModel, T: TangentialModel>(self, law: Composed<N, T>) -> Vec<ContactRecord> {
         self.0.contact_records_with(&law)
     }
 }
@@ -33,44 +28,34 @@ impl Simulation {
         self.model.law.visit(Records(self))
     }
 
-    fn contact_records_with<N, D, T, C>(&self, law: &Composed<N, D, T, C>) -> Vec<ContactRecord>
+    fn contact_records_with<N, T>(&self, law: &Composed<N, T>) -> Vec<ContactRecord>
     where
         N: NormalModel,
-        D: DampingModel,
         T: TangentialModel,
-        C: CohesionModel,
     {
         let kept = ContactStates::<StateOf<N, T>>::KEPT;
         let spins = Spins::of(&self.model.law, self.model.rotation);
         let states = self.states_as::<StateOf<N, T>>();
         let p = &self.state.particles;
-        let n = p.len();
-        let bodies = Bodies {
-            velocity: &p.velocity[..n],
-            omega: &p.omega[..n],
-            radius: &p.radius[..n],
-            mass: &p.mass[..n],
-            prescribed: &p.prescribed[..n],
-        };
+        let bodies = Bodies::of(p);
         let (dt, max_fraction) = (self.state.dt, self.model.limits.max_overlap_fraction);
-        let law_reach = law.cohesion.reach();
-        let image = self.model.detection.space.minimum_image();
+        let law_reach = law.reach();
+        let narrow = self.narrow_phase();
         let mut out = Vec::new();
-        for (k, &(i, j)) in self.state.neighbors.pairs.iter().enumerate() {
-            let (i, j) = (i as usize, j as usize);
-            let d = image.displacement(&p.position[i], &p.position[j]);
-            let reach = p.radius[i] + p.radius[j];
-            let dist2 = d.norm_squared();
-            if dist2 >= (reach + law_reach).powi(2) || dist2 == 0.0 {
+        let mut near = Vec::new();
+        narrow.pairs_within(law_reach, &mut near, |_| {});
+        for &(k, d) in &near {
+            let (i, j) = narrow.pair(k);
+            let dist = d.norm_squared().sqrt();
+            if dist == 0.0 {
                 continue;
             }
-            let dist = dist2.sqrt();
-            let overlap = reach - dist;
+            let overlap = p.radius[i] + p.radius[j] - dist;
             let ratio = overlap / p.radius[i].min(p.radius[j]);
             let (g, arm_i, _) = pair_geometry(&bodies, spins, i, j, d, dist, overlap);
             let pair = self.model.pair_table.get(p.material[i], p.material[j]);
             let mut state = if kept {
-                states.pairs[k]
+                states.pairs[k as usize]
             } else {
                 Default::default()
             };
@@ -88,15 +73,17 @@ impl Simulation {
                 });
             }
         }
+        let (walls, poses) = (&self.model.walls[..], &self.state.walls[..]);
         let mut found = Vec::new();
-        let walls = self.model.walls.iter().zip(&self.state.walls);
-        for (w, (wall, pose)) in walls.enumerate() {
-            for i in 0..n {
-                found.clear();
-                wall.contacts(pose, &p.position[i], p.radius[i], law_reach, &mut found);
-                for contact in &found {
+        let all: Result<(), ()> = narrow.wall_contacts(
+            walls,
+            poses,
+            law_reach,
+            &mut found,
+            |w, wall, pose, i, found| {
+                for contact in found {
                     let ratio = contact.overlap / p.radius[i];
-                    let (g, arm) = wall_geometry(p, spins, i, contact, wall, pose);
+                    let (g, arm) = wall_geometry(&bodies, spins, i, contact, wall, pose);
                     let pair = self.model.pair_table.get(p.material[i], wall.material);
                     let mut state = if kept {
                         carried_state(&states.walls[w][i], contact.facet)
@@ -119,8 +106,10 @@ impl Simulation {
                         });
                     }
                 }
-            }
-        }
+                Ok(())
+            },
+        );
+        all.expect("the walk's visitor never fails");
         out
     }
 }

@@ -24,6 +24,7 @@ pub mod viscous;
 use crate::contact::lammps::{LammpsDamping, LammpsNormal, NoLammpsModel};
 pub use crate::contact::model::DampingModel;
 use crate::contact::model::Roles;
+use crate::contact::normal::NormalLaw;
 use crate::error::Errors;
 pub use liggghts::LiggghtsRestitution;
 pub use tsuji::Tsuji;
@@ -38,7 +39,6 @@ pub struct CriticalFraction {
 }
 
 impl DampingModel for CriticalFraction {
-    const ACTIVE: bool = true;
     fn name(&self) -> &'static str {
         "critical_fraction"
     }
@@ -148,6 +148,66 @@ impl Damping {
                 self.viscous().expect("a viscous kind").lammps(normal)
             }
         }
+    }
+}
+
+/// The dashpot the force loop runs: the scene's kind resolved against its normal law
+/// (`Damping::dashpot`). Which of the two runs is a branch fixed for the run.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Dashpot {
+    /// c_n = ξ · 2√(m* k_n), also for `liggghts_restitution` and `tsuji`.
+    CriticalFraction(CriticalFraction),
+    /// A coefficient that does not follow k_n (viscous.rs).
+    Viscous(Viscous),
+}
+
+impl Dashpot {
+    /// See `DampingModel::coefficient`.
+    #[inline(always)]
+    pub fn coefficient(
+        &self,
+        effective_mass: f64,
+        stiffness: f64,
+        contact_radius: impl FnOnce() -> f64,
+    ) -> f64 {
+        match self {
+            Dashpot::CriticalFraction(d) => {
+                d.coefficient(effective_mass, stiffness, contact_radius)
+            }
+            Dashpot::Viscous(d) => d.coefficient(effective_mass, stiffness, contact_radius),
+        }
+    }
+
+    /// See `DampingModel::ratio`.
+    pub fn ratio(&self, effective_mass: f64, stiffness: f64, contact_radius: f64) -> f64 {
+        match self {
+            Dashpot::CriticalFraction(d) => d.ratio(effective_mass, stiffness, contact_radius),
+            Dashpot::Viscous(d) => d.ratio(effective_mass, stiffness, contact_radius),
+        }
+    }
+}
+
+impl Damping {
+    /// The dashpot this kind runs as beside `normal`; `None` beside a law that
+    /// dissipates by itself, which validation refuses a damping role.
+    pub fn dashpot(&self, normal: &NormalLaw) -> Option<Dashpot> {
+        if normal.has_own_dissipation() {
+            return None;
+        }
+        Some(match *self {
+            Damping::CriticalFraction(d) => Dashpot::CriticalFraction(d),
+            Damping::Constant(_) | Damping::MassVelocity(_) | Damping::Viscoelastic(_) => {
+                Dashpot::Viscous(self.viscous().expect("a viscous kind"))
+            }
+            Damping::LiggghtsRestitution(d) => Dashpot::CriticalFraction(
+                d.with(normal)
+                    .expect("validation refuses liggghts_restitution beside this normal law"),
+            ),
+            Damping::Tsuji(d) => Dashpot::CriticalFraction(
+                d.with(normal)
+                    .expect("validation refuses tsuji beside this normal law"),
+            ),
+        })
     }
 }
 

@@ -15,9 +15,9 @@
 //! total force at zero: like every damping kind here, it may pull at the end of a
 //! contact, as LAMMPS's default `limit_damping` off.
 //!
-//! The three are one type whose form is chosen at run time, not three: each damping
-//! type multiplies the compiled combinations of the force loop (docs/performance.md,
-//! "Compile time"), and a predictable branch per contact costs less than that.
+//! The three are one type whose form is chosen at run time, as every damping kind is
+//! (`Dashpot`): a predictable branch per contact costs less than a compiled force loop
+//! per kind (docs/performance.md, "Compile time").
 //!
 //! For the critical time step the damping ratio ξ = η_n/(2√(m k)) of the viscoelastic
 //! form needs a contact radius before any contact: tamp takes the body's radius R, a
@@ -65,7 +65,6 @@ pub enum Viscous {
 }
 
 impl DampingModel for Viscous {
-    const ACTIVE: bool = true;
     fn name(&self) -> &'static str {
         match self {
             Viscous::Constant(_) => "constant",

@@ -157,6 +157,18 @@ impl NormalModel for Hertz {
     fn stiffness_depends_on_speed(&self) -> bool {
         true
     }
+
+    fn error_model(&self, damping: Option<&Damping>) -> Option<&'static str> {
+        match damping {
+            None => Some("hertz"),
+            // η_n0·m* is one constant γ_n for a given impact.
+            Some(Damping::Constant(_) | Damping::MassVelocity(_)) => Some("hertz_constant_damped"),
+            Some(
+                Damping::CriticalFraction(_) | Damping::LiggghtsRestitution(_) | Damping::Tsuji(_),
+            ) => Some("hertz_damped"),
+            Some(Damping::Viscoelastic(_)) => None,
+        }
+    }
 }
 
 #[cfg(test)]

@@ -15,6 +15,7 @@
 use super::NormalLaw;
 use super::hertz::{Hertz, hertz_force, hertz_stiffness};
 use super::{NormalModel, NormalResponse};
+use crate::contact::damping::Damping;
 use crate::contact::model::Needs;
 use crate::contact::registry::{self, NormalExample};
 use crate::error::Errors;
@@ -106,6 +107,10 @@ impl NormalModel for KuwabaraKono {
 
     fn stiffness_depends_on_speed(&self) -> bool {
         true
+    }
+
+    fn error_model(&self, damping: Option<&Damping>) -> Option<&'static str> {
+        damping.is_none().then_some("kuwabara_kono")
     }
 }
 

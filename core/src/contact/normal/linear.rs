@@ -259,6 +259,16 @@ impl NormalModel for Linear {
     fn stiffness_depends_on_speed(&self) -> bool {
         false
     }
+
+    fn error_model(&self, damping: Option<&Damping>) -> Option<&'static str> {
+        match damping {
+            None => Some("linear"),
+            Some(
+                Damping::Constant(_) | Damping::MassVelocity(_) | Damping::CriticalFraction(_),
+            ) => Some("linear_damped"),
+            Some(_) => None,
+        }
+    }
 }
 
 #[cfg(test)]

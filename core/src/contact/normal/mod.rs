@@ -12,6 +12,7 @@ pub mod storakers;
 pub mod thornton;
 pub mod walton_braun;
 
+use crate::contact::damping::Damping;
 use crate::contact::damping::liggghts::LiggghtsModel;
 use crate::contact::lammps::{LammpsNormal, NoLammpsModel};
 pub use crate::contact::model::{
@@ -145,6 +146,16 @@ impl NormalLaw {
     /// See `NormalModel::stiffness_depends_on_speed`.
     pub fn stiffness_depends_on_speed(&self) -> bool {
         each_normal!(self, n => n.stiffness_depends_on_speed())
+    }
+
+    /// See `NormalModel::pair_constant`.
+    pub fn pair_constant(&self, pair: &PairProperties) -> Option<f64> {
+        each_normal!(self, n => n.pair_constant(pair))
+    }
+
+    /// See `NormalModel::error_model`.
+    pub fn error_model(&self, damping: Option<&Damping>) -> Option<&'static str> {
+        each_normal!(self, n => n.error_model(damping))
     }
 }
 

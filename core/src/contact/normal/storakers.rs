@@ -27,6 +27,7 @@
 use super::NormalLaw;
 use super::hertz::{Hertz, hertz_force, hertz_stiffness};
 use super::{NormalModel, NormalResponse};
+use crate::contact::damping::Damping;
 use crate::contact::model::Needs;
 use crate::contact::registry::{self, NormalExample};
 use crate::material::{Hollomon, PairProperties};
@@ -38,8 +39,8 @@ pub fn storakers_c_power(exponent: f64) -> f64 {
 
 /// The factor of eq 16's C that the pair's Hollomon constants alone set,
 /// 2^{1−m/2} 3^{1−m} π c^{2+m} σ0 (C is it times R*^{1−m/2}). The pair table holds
-/// it (`PairProperties::storakers_constant`), so that a contact's step does not
-/// evaluate its two powers and exponential again.
+/// it (`PairProperties::law_constant`, from `NormalModel::pair_constant`), so that a
+/// contact's step does not evaluate its two powers and exponential again.
 pub fn storakers_pair_constant(hollomon: Hollomon) -> f64 {
     let m = hollomon.exponent;
     2f64.powf(1.0 - 0.5 * m)
@@ -429,7 +430,7 @@ impl Storakers {
             effective_modulus: pair.effective_modulus.unwrap_or(0.0),
             hollomon,
             pair_constant: pair
-                .storakers_constant
+                .law_constant
                 .unwrap_or_else(|| storakers_pair_constant(hollomon)),
             min_with_hertz: self.min_with_hertz,
         }
@@ -562,6 +563,15 @@ impl NormalModel for Storakers {
     fn stiffness_depends_on_speed(&self) -> bool {
         true
     }
+
+    /// Calibrated with the Hertz cap only: pure Storåkers has no impact closed form.
+    fn pair_constant(&self, pair: &PairProperties) -> Option<f64> {
+        pair.hollomon.map(storakers_pair_constant)
+    }
+
+    fn error_model(&self, damping: Option<&Damping>) -> Option<&'static str> {
+        (self.min_with_hertz && damping.is_none()).then_some("storakers_min_hertz")
+    }
 }
 
 #[cfg(test)]
@@ -600,7 +610,7 @@ mod tests {
                 effective_modulus: Some(reference.effective_modulus),
                 effective_shear_modulus: None,
                 hollomon: Some(reference.hollomon),
-                storakers_constant: Some(reference.pair_constant),
+                law_constant: Some(reference.pair_constant),
                 friction: 0.0,
             };
             let law = Storakers { min_with_hertz: capped };

@@ -102,6 +102,7 @@ use super::hertz::{
     hertz_contact_duration, hertz_energy, hertz_force, hertz_max_overlap, hertz_stiffness,
 };
 use super::{LiggghtsDeck, LiggghtsRefusal, LiggghtsScene, NormalModel, NormalResponse};
+use crate::contact::damping::Damping;
 use crate::contact::model::{LiggghtsProperty, LiggghtsValues, Needs};
 use crate::contact::registry::{self, NormalExample};
 use crate::error::Errors;
@@ -618,6 +619,11 @@ impl NormalModel for Thornton {
     fn stiffness_depends_on_speed(&self) -> bool {
         true
     }
+
+    /// Calibrated for Thornton's own unloading, whose restitution has a closed form.
+    fn error_model(&self, damping: Option<&Damping>) -> Option<&'static str> {
+        (self.unloading == Unloading::Thornton1997 && damping.is_none()).then_some("thornton")
+    }
 }
 
 #[cfg(test)]
@@ -650,7 +656,7 @@ mod tests {
             effective_modulus: Some(modulus()),
             effective_shear_modulus: None,
             hollomon: None,
-            storakers_constant: None,
+            law_constant: None,
             friction: 0.0,
         }
     }

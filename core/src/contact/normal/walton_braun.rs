@@ -15,6 +15,7 @@
 
 use super::NormalLaw;
 use super::{NormalModel, NormalResponse, PeakOverlap};
+use crate::contact::damping::Damping;
 use crate::contact::registry::{self, NormalExample};
 use crate::error::Errors;
 use crate::material::PairProperties;
@@ -153,6 +154,10 @@ impl NormalModel for WaltonBraun {
 
     fn stiffness_depends_on_speed(&self) -> bool {
         false
+    }
+
+    fn error_model(&self, damping: Option<&Damping>) -> Option<&'static str> {
+        damping.is_none().then_some("walton_braun")
     }
 }
 

@@ -188,7 +188,7 @@ impl TangentialModel for LammpsLinearHistory {
         ))
     }
 
-    #[inline]
+    #[inline(always)]
     fn force(&self, input: &TangentialInput, h: &mut Vec3) -> Vec3 {
         let k = self.stiffness;
         let damping = self.x_gamma_t * input.normal_damping;

@@ -82,7 +82,7 @@ impl TangentialModel for LammpsLinearNohistory {
         ))
     }
 
-    #[inline]
+    #[inline(always)]
     fn force(&self, input: &TangentialInput, _: &mut ()) -> Vec3 {
         let damping = self.x_gamma_t * input.normal_damping;
         let limit = input.normal_force.abs() * input.friction;

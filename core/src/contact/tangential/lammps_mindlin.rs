@@ -236,7 +236,7 @@ impl TangentialModel for LammpsMindlin {
         ))
     }
 
-    #[inline]
+    #[inline(always)]
     fn force(&self, input: &TangentialInput, state: &mut MindlinHistory) -> Vec3 {
         let force_history = self.variant.force();
         let a = (input.overlap * input.effective_radius).sqrt();

@@ -1,10 +1,12 @@
 //! Tangential contact laws, one file and one type (implementing `TangentialModel`)
 //! per law. An absent law (friction off) is `None` in `ContactLaw` and `NoFriction`
-//! in the force loop: no tangential velocity is computed and nothing is stored.
+//! in the force loop: no tangential velocity is computed and nothing is stored. The
+//! force loop runs a law as its family's type, by the state it keeps (`families.rs`).
 //! The shared pieces are `incremental.rs` (Rojek eq 11 with the Coulomb cap) and `scalar_axis.rs` (how the 1D history laws act in 3D).
 
 pub mod coulomb;
 pub mod cundall_strack;
+pub mod families;
 pub mod haff_werner;
 pub mod incremental;
 pub mod lammps_linear_history;
