@@ -1,5 +1,5 @@
-//! Effects on demand (issue 8): the cost of one time step with the scene's effects
-//! switched on one at a time. A scene pays only for what it enables.
+//! Effects on demand: the cost of one time step with the scene's effects switched on
+//! one at a time. A scene pays only for what it enables.
 //!
 //! Two groups, because a bed needs gravity and a floor to stay a bed:
 //! - `bed_2000`: 2000 spheres (R = 0.5 mm) deposited ballistically on a 15 mm × 15 mm

@@ -1,6 +1,6 @@
-//! Cost of one full time step (`Simulation::step`) per particle on a dense settled
-//! bed, against the number of spheres N = 1e3, 4e3, 1.6e4, 6.4e4, 1e5 (issue 8:
-//! "show cost per step grows linearly in N").
+//! Cost of one full time step (`Simulation::step`) per particle on a dense settled bed,
+//! against the number of spheres N = 1e3, 4e3, 1.6e4, 6.4e4, 1e5, to show that the cost
+//! per step grows linearly in N.
 //!
 //! The physics is that of a realistic frictional bed: glass spheres (R = 0.5 mm,
 //! E = 1e8 Pa), Hertz with damping ξ = 0.3, Mindlin–Deresiewicz friction μ = 0.5,
@@ -112,7 +112,7 @@ fn small_bed() -> Simulation {
 /// The small bed copied k × k times, numbered at random, and renumbered by cell at
 /// build (`broad_phase.sort`) when `sorted`.
 fn tiled_bed(small: &Simulation, k: usize, sorted: bool) -> Simulation {
-    let p = &small.state.particles;
+    let p = &small.state().particles;
     let n = p.len();
     let position = |c: usize| {
         let (copy, i) = (c / n, c % n);
@@ -148,23 +148,23 @@ fn tiled_bed(small: &Simulation, k: usize, sorted: bool) -> Simulation {
 /// contact for one.
 fn coordination(sim: &Simulation) -> (f64, f64) {
     let pairs = sim
-        .state
+        .state()
         .neighbors
         .pairs
         .iter()
         .filter(|&&(i, j)| sim.overlap(i as usize, j as usize) > 0.0)
         .count();
     let walls = sim.contact_count() - pairs;
-    let n = sim.state.particles.len() as f64;
+    let n = sim.state().particles.len() as f64;
     (2.0 * pairs as f64 / n, walls as f64 / n)
 }
 
 /// Prints the checks of the module doc; panics if 100 trial steps fail.
 fn report(name: &str, sim: &Simulation, prepared_in: Duration) {
-    let n = sim.state.particles.len();
+    let n = sim.state().particles.len();
     let (pair_z, wall_z) = coordination(sim);
     let speed: Vec<f64> = sim
-        .state
+        .state()
         .particles
         .velocity
         .iter()
@@ -173,7 +173,7 @@ fn report(name: &str, sim: &Simulation, prepared_in: Duration) {
     let max_speed = speed.iter().cloned().fold(0.0, f64::max);
     let mean_speed = speed.iter().sum::<f64>() / n as f64;
     let mut trial = sim.clone();
-    let builds = trial.state.neighbors.builds;
+    let builds = trial.state().neighbors.builds;
     trial
         .run_with(100, |_| {})
         .expect("100 trial steps are stable");
@@ -182,10 +182,10 @@ fn report(name: &str, sim: &Simulation, prepared_in: Duration) {
         "{name}/{n}: prepared in {prepared_in:.1?}; {} pairs in the list, contacts per sphere {pair_z:.3} \
          between spheres + {wall_z:.3} with the floor; speed max {:.2} mm/s, mean {:.3} mm/s \
          (√(g·2R) = 99 mm/s); over 100 trial steps: {} list rebuilds, contacts per sphere {after_z:.3}",
-        sim.state.neighbors.pairs.len(),
+        sim.state().neighbors.pairs.len(),
         1e3 * max_speed,
         1e3 * mean_speed,
-        trial.state.neighbors.builds - builds,
+        trial.state().neighbors.builds - builds,
     );
 }
 
@@ -210,7 +210,7 @@ fn full_step(c: &mut Criterion<ThreadCpuTime>) {
             let start = Instant::now();
             let sim = tiled_bed(&small, k, sorted);
             report(name, &sim, start.elapsed());
-            let n = sim.state.particles.len();
+            let n = sim.state().particles.len();
             group.throughput(Throughput::Elements(n as u64));
             group.bench_function(BenchmarkId::new(name, n), |b| {
                 b.iter_custom(|steps| {

@@ -54,10 +54,10 @@ pub struct Run {
 impl Run {
     /// Add the simulation's present state to the trajectory (ids = index + 1).
     pub fn record(&mut self, sim: &crate::simulation::Simulation) {
-        let p = &sim.state.particles;
+        let p = &sim.state().particles;
         for i in 0..p.len() {
             self.trajectory.insert(
-                (sim.state.step, i as u64 + 1),
+                (sim.state().step, i as u64 + 1),
                 State {
                     radius: p.radius[i],
                     position: p.position[i],

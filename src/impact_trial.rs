@@ -119,7 +119,7 @@ impl Trial {
     /// velocity of its contact (the scene's law must be `thornton`).
     pub fn at_yield_ratio(mut self, v_over_vy: f64) -> Result<Trial> {
         let sim = self.built()?;
-        let NormalLaw::Thornton(law) = sim.model.law.normal else {
+        let NormalLaw::Thornton(law) = sim.model().law.normal else {
             return Err(TampError::Other(format!(
                 "{}: not a thornton law",
                 self.name
@@ -135,7 +135,7 @@ impl Trial {
     /// Storåkers loading leaves Hertz's curve (the scene's law must be `storakers`).
     pub fn at_hertz_crossing_ratio(mut self, ratio: f64) -> Result<Trial> {
         let sim = self.built()?;
-        let NormalLaw::Storakers(law) = sim.model.law.normal else {
+        let NormalLaw::Storakers(law) = sim.model().law.normal else {
             return Err(TampError::Other(format!(
                 "{}: not a storakers law",
                 self.name
@@ -151,26 +151,26 @@ impl Trial {
 
     /// Effective mass and radius of the impact, and its pair's properties.
     fn effective(&self, sim: &crate::simulation::Simulation) -> (f64, f64, PairProperties) {
-        let p = &sim.state.particles;
+        let p = &sim.state().particles;
         match self.partner {
             Partner::Sphere(_) => (
                 effective_mass(p.mass[0], p.mass[1]),
                 effective_radius(p.radius[0], p.radius[1]),
-                *sim.model.pair_table.get(p.material[0], p.material[1]),
+                *sim.model().pair_table.get(p.material[0], p.material[1]),
             ),
             Partner::Wall => (
                 p.mass[0],
                 p.radius[0],
-                *sim.model
+                *sim.model()
                     .pair_table
-                    .get(p.material[0], sim.model.walls[0].material),
+                    .get(p.material[0], sim.model().walls[0].material),
             ),
         }
     }
 
     fn closed_form(&self, sim: &crate::simulation::Simulation) -> Result<Impact> {
         let (m, r, pair) = self.effective(sim);
-        closed_form(&sim.model.law, m, r, &pair, self.speed).ok_or_else(|| {
+        closed_form(&sim.model().law, m, r, &pair, self.speed).ok_or_else(|| {
             TampError::Other(format!("{}: the law has no impact closed form", self.name))
         })
     }

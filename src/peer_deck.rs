@@ -1,14 +1,129 @@
 //! What a LIGGGHTS deck and a LAMMPS deck share, whichever peer reads it: the scene
 //! file read with an optional new seed, the neighbour skin, the interval between
 //! dumped frames, the dump's columns and number format, the choice between a scene and
-//! a die-compaction file, and what an export reports. Each peer's own commands are in
-//! `liggghts::export` and `lammps::export`.
+//! a die-compaction file, what neither peer can express, the deck's head, time step,
+//! gravity, integration, dumps and run, and what an export reports. Each peer's own
+//! commands are in `liggghts::export` and `lammps::export`.
 
+use crate::decimal::g;
 use crate::document::Document;
 use crate::error::Result;
 use crate::process::die_compaction_file::DieCompactionFile;
 use crate::scene::Scene;
+use crate::simulation::Simulation;
+use std::fmt::Write as _;
 use std::path::Path;
+
+/// The peer a deck is for: its name in messages and file names, and how its
+/// `dump_modify` spells a line format.
+#[derive(Clone, Copy, Debug)]
+pub struct Peer {
+    /// `LIGGGHTS` or `LAMMPS`, in refusals.
+    pub name: &'static str,
+    /// The dump files' extension: `liggghts` or `lammps`.
+    pub extension: &'static str,
+    /// `format` (LIGGGHTS 3.8) or `format line` (LAMMPS).
+    pub format_keyword: &'static str,
+}
+
+/// LIGGGHTS 3.8.
+pub const LIGGGHTS: Peer = Peer {
+    name: "LIGGGHTS",
+    extension: "liggghts",
+    format_keyword: "format",
+};
+
+/// LAMMPS 22 Jul 2025.
+pub const LAMMPS: Peer = Peer {
+    name: "LAMMPS",
+    extension: "lammps",
+    format_keyword: "format line",
+};
+
+/// What neither peer's deck expresses, whatever the laws: a growth stage, pouring
+/// during the run and prescribed particles, as (field, reason).
+pub fn scene_refusals(scene: &Scene, peer: Peer) -> Vec<(String, String)> {
+    let name = peer.name;
+    let mut out = Vec::new();
+    if scene.growth.is_some() {
+        out.push((
+            "growth".to_string(),
+            format!("{name} has no radius growth stage; export the grown state instead"),
+        ));
+    }
+    for (k, ins) in scene.insert.iter().enumerate() {
+        if ins.schedule.is_some() {
+            out.push((
+                format!("insert[{k}].schedule"),
+                format!("{name} pours with its own random placement; export scenes whose particles are all placed at t = 0"),
+            ));
+        }
+    }
+    for (k, p) in scene.particles.iter().enumerate() {
+        if p.prescribed_velocity.is_some() {
+            out.push((
+                format!("particles[{k}].prescribed_velocity"),
+                format!("not exported ({name} would need a separate fix for each driven particle)"),
+            ));
+        }
+    }
+    out
+}
+
+/// The deck's first lines: which peer and tamp wrote it, from which scene.
+pub fn head(deck: &mut String, peer_version: &str, scene: &Scene, sha: &str) {
+    let _ = writeln!(
+        deck,
+        "# {peer_version} deck exported by tamp {} (commit {})",
+        crate::VERSION,
+        crate::GIT_COMMIT
+    );
+    let _ = write!(
+        deck,
+        "# scene '{}', sha256 {sha}, seed {}",
+        scene.name.replace(['\n', '\r'], " "),
+        scene.seed,
+    );
+}
+
+/// `timestep`, and the `fix gravity` of a scene with gravity.
+pub fn timestep_and_gravity(deck: &mut String, sim: &Simulation) {
+    let _ = writeln!(deck, "timestep     {}", g(sim.dt()));
+    if let Some(gv) = sim.model().gravity {
+        let norm = gv.norm();
+        if norm > 0.0 {
+            let d = gv / norm;
+            let _ = writeln!(
+                deck,
+                "fix          gravi all gravity {} vector {} {} {}",
+                g(norm),
+                g(d.x),
+                g(d.y),
+                g(d.z)
+            );
+        }
+    }
+}
+
+/// The deck's last lines: velocity Verlet with spins, a frame every `every` steps in
+/// `dump.<peer>`, thermo output, the run of `steps`, and the final state in
+/// `final.<peer>`.
+pub fn integrate_and_run(deck: &mut String, peer: Peer, every: u64, steps: u64) {
+    let (ext, keyword) = (peer.extension, peer.format_keyword);
+    let format = dump_format();
+    deck.push_str("fix          integr all nve/sphere\n");
+    let _ = writeln!(
+        deck,
+        "dump         dmp all custom {every} dump.{ext} {DUMP_COLUMNS}\ndump_modify  dmp {keyword} \"{format}\" sort id"
+    );
+    deck.push_str("thermo_style custom step time atoms ke\nthermo_modify norm no lost ignore\n");
+    let _ = writeln!(deck, "thermo       {}", (steps / 20).max(1));
+    let _ = writeln!(deck, "run          {steps}");
+    let _ = writeln!(
+        deck,
+        "write_dump   all custom final.{ext} {DUMP_COLUMNS} modify {keyword} \"{format}\" sort id"
+    );
+}
 
 /// Columns of every dump a deck writes (`liggghts::dump::Frame` reads them back, from
 /// either peer: both write `dump custom` the same way).
@@ -41,7 +156,7 @@ pub fn load_with_seed(path: &Path, seed: Option<u64>) -> Result<(Document, Strin
     if let Some(seed) = seed {
         match &mut document {
             Document::Scene(s) => s.seed = seed,
-            Document::DieCompaction(d) => d.seed = seed,
+            Document::DieCompaction(d) => d.scene.seed = seed,
         }
     }
     Ok((document, sha))

@@ -44,7 +44,7 @@ fn through_impact(b: &mut scene::BuiltScene, mut during: impl FnMut(&Simulation)
     let mut touched = false;
     for _ in 0..2_000_000 {
         b.sim.step().unwrap();
-        largest = largest.max(b.sim.state.max_overlap_ratio * R);
+        largest = largest.max(b.sim.state().max_overlap_ratio * R);
         let in_contact = b.sim.contact_count() > 0;
         touched |= in_contact;
         if touched && !in_contact {
@@ -73,7 +73,7 @@ fn bounce(shape: Value, start: [f64; 3], normal: [f64; 3]) {
         (max_overlap / expected - 1.0).abs() < 2e-3,
         "largest overlap {max_overlap:e}, closed form {expected:e}"
     );
-    let v = b.sim.state.particles.velocity[0];
+    let v = b.sim.state().particles.velocity[0];
     assert!(
         (v - n * V).norm() < 2e-3 * V,
         "rebound velocity {v:?}, expected {:?}",
@@ -94,12 +94,12 @@ fn rest(shape: Value, at: [f64; 3]) {
         b.sim.step().unwrap();
     }
     let expected = mass() * 9.81 / K;
-    let overlap = R - (b.sim.state.particles.position[0].z - (at[2] - R));
+    let overlap = R - (b.sim.state().particles.position[0].z - (at[2] - R));
     assert!(
         (overlap / expected - 1.0).abs() < 1e-6,
         "resting overlap {overlap:e}, expected m g / k = {expected:e}"
     );
-    assert!(b.sim.state.particles.velocity[0].norm() < 1e-9);
+    assert!(b.sim.state().particles.velocity[0].norm() < 1e-9);
 }
 
 #[test]
@@ -137,12 +137,12 @@ fn servo_holds_its_target_force() {
     for _ in 0..steps {
         b.sim.step().unwrap();
     }
-    let reaction = b.sim.state.wall_force[1].z;
+    let reaction = b.sim.state().wall_force[1].z;
     assert!(
         (reaction / target - 1.0).abs() < 1e-6,
         "lid reaction {reaction:e}, target {target:e}"
     );
-    let floor_overlap = R - b.sim.state.particles.position[0].z;
+    let floor_overlap = R - b.sim.state().particles.position[0].z;
     assert!((floor_overlap * K / target - 1.0).abs() < 1e-6);
     assert!(b.sim.dissipated_energy() >= 0.0);
 }
@@ -165,13 +165,13 @@ fn displacement_motion_carries_a_resting_sphere() {
     let mut worst = 0.0f64;
     for _ in 0..steps {
         b.sim.step().unwrap();
-        let t = b.sim.state.time;
+        let t = b.sim.state().time;
         if t < 0.05 {
             continue; // the start-up transient of the damped contact
         }
         let floor = a * (w * t).sin();
         let expected = mass() * (9.81 - a * w * w * (w * t).sin()) / K;
-        let overlap = R - (b.sim.state.particles.position[0].z - floor);
+        let overlap = R - (b.sim.state().particles.position[0].z - floor);
         worst = worst.max((overlap - expected).abs() / expected);
     }
     assert!(
@@ -291,7 +291,7 @@ fn periodic_faces_collide_through_the_boundary() {
     let mut b = scene::build(&scene::parse(&s.to_string()).unwrap()).unwrap();
     let (worst, touched) = through_impact(&mut b, |sim| {
         assert!(
-            sim.state
+            sim.state()
                 .particles
                 .position
                 .iter()
@@ -299,7 +299,7 @@ fn periodic_faces_collide_through_the_boundary() {
         );
     });
     assert!(touched, "the spheres never met through the periodic faces");
-    let v = &b.sim.state.particles.velocity;
+    let v = &b.sim.state().particles.velocity;
     assert!(
         (v[0].x - V).abs() < 2e-3 * V && (v[1].x + V).abs() < 2e-3 * V,
         "{v:?}"

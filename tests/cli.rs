@@ -446,9 +446,9 @@ fn study_accuracy_cost_sweeps_one_case_and_writes_the_page() {
     );
 }
 
-/// Issue 27, class 6: a run that fails in a directory holding an earlier run's
-/// outputs leaves none of them behind to be taken for its own, and a scene file
-/// inside `--out` named like an output is refused (exit 2), never overwritten.
+/// A run that fails in a directory holding an earlier run's outputs leaves none of them
+/// behind to be taken for its own, and a scene file inside `--out` named like an output
+/// is refused (exit 2), never overwritten.
 #[test]
 fn a_failed_run_leaves_no_earlier_outputs_and_never_overwrites_its_scene() {
     let (_dir, scene, out) = scene_in_tempdir(&base());
@@ -500,9 +500,9 @@ fn a_failed_run_leaves_no_earlier_outputs_and_never_overwrites_its_scene() {
     );
 }
 
-/// Issue 31 item 2: help a user can act on. `run --help` names the files it writes
-/// and the exit codes; `verify --help` gives the tiers' real durations; the studies
-/// write where the user says, `docs/` only when named.
+/// Help a user can act on. `run --help` names the files it writes and the exit codes;
+/// `verify --help` gives the tiers' real durations; the studies write where the user
+/// says, `docs/` only when named.
 #[test]
 fn help_texts_name_files_exit_codes_durations_and_where_studies_write() {
     let text = |args: &[&str]| String::from_utf8(tamp(args).stdout).unwrap();
@@ -532,8 +532,8 @@ fn help_texts_name_files_exit_codes_durations_and_where_studies_write() {
     }
 }
 
-/// Issue 31 item 1: the README is a front door of about one screen before its
-/// documentation list, and every file its commands name exists.
+/// The README is a front door of about one screen before its documentation list, and
+/// every file its commands name exists.
 #[test]
 fn readme_front_door_is_one_screen_and_names_existing_files() {
     let readme = include_str!("../README.md");

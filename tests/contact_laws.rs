@@ -1,8 +1,8 @@
-//! Properties every contact law must have, checked over the whole library (issue 3):
-//! force against its closed form at several overlaps, continuity at first touch,
-//! symmetry under swapping the bodies, Newton's third law in a running simulation,
-//! non-positive work of the contact over closed cycles for the dissipative laws, and
-//! the friction cone. The laws and their closed forms come from the registry
+//! Properties every contact law must have, checked over the whole library: force
+//! against its closed form at several overlaps, continuity at first touch, symmetry
+//! under swapping the bodies, Newton's third law in a running simulation, non-positive
+//! work of the contact over closed cycles for the dissipative laws, and the friction
+//! cone. The laws and their closed forms come from the registry
 //! (`tamp::contact::registry`): a registered law is checked here without being named.
 
 use tamp::contact::normal::{NormalLaw, WaltonBraun};
@@ -295,7 +295,7 @@ fn newtons_third_law_holds_in_a_simulation() {
         let mut sim = scene::build(&s).unwrap().sim;
         for _ in 0..50 {
             sim.step().unwrap();
-            let p = &sim.state.particles;
+            let p = &sim.state().particles;
             assert!(p.force[0].norm() > 0.0, "{}: no contact", law.normal.name());
             assert!((p.force[0] + p.force[1]).norm() <= 1e-12 * p.force[0].norm());
         }

@@ -85,8 +85,8 @@ fn killed_compaction_resumes_to_identical_outputs() {
         );
         assert!(x == y, "{file} differs after resuming");
     }
-    // One layout for every run (issue 31 item 6): `scene_name` in summary.json, and
-    // quantities.csv and series.csv that `tamp compare` reads like a plain run's.
+    // One layout for every run: `scene_name` in summary.json, and quantities.csv and
+    // series.csv that `tamp compare` reads like a plain run's.
     let summary: serde_json::Value =
         serde_json::from_slice(&std::fs::read(a.join("summary.json")).unwrap()).unwrap();
     assert!(summary["scene_name"].is_string(), "{summary}");
@@ -102,14 +102,14 @@ fn killed_compaction_resumes_to_identical_outputs() {
     fresh(&base);
 }
 
-/// Issue 29 point 4: the funnel pour (Rojek Fig 13a) loses no particle and leaves
-/// every one whole inside the die after settling and flattening: the count is
-/// conserved, and each sphere lies inside the die's cylinder (radius R), above the
-/// floor and below H₀, up to the overlap a wall contact may press it in by. That
-/// overlap is bounded by the Hertz overlap under the bed's whole weight on one
-/// contact, F = M g′: δ = (3F/(4E*√r))^(2/3) ≈ 7e-9 m for the 60 particles at g′ =
-/// 9.81e6 m/s² (r = 2 µm, E* = 1.0e11 Pa); 2e-8 m is about three times that. The settled column of the same seed is
-/// the other filling; the two must be different beds (the funnel is really used).
+/// The funnel pour (Rojek Fig 13a) loses no particle and leaves every one whole inside
+/// the die after settling and flattening: the count is conserved, and each sphere lies
+/// inside the die's cylinder (radius R), above the floor and below H₀, up to the
+/// overlap a wall contact may press it in by. That overlap is bounded by the Hertz
+/// overlap under the bed's whole weight on one contact, F = M g′:
+/// δ = (3F/(4E*√r))^(2/3) ≈ 7e-9 m for the 60 particles at g′ = 9.81e6 m/s² (r = 2 µm,
+/// E* = 1.0e11 Pa); 2e-8 m is about three times that. The settled column of the same
+/// seed is the other filling; the two must be different beds (the funnel is really used).
 #[test]
 fn a_funnel_pour_fills_the_die_with_every_particle() {
     use tamp::process::die_compaction_file::{DieCompactionFile, FillMethod};

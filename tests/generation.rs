@@ -36,10 +36,10 @@ fn generate_monodisperse_bulk_matches_visscher_bolsterli() {
     assert!((z_mean - 6.0).abs() < 0.003, "bulk Z {z_mean} ({z:?})");
 }
 
-/// Issue 27 class 7: random sequential insertion was all-pairs, so a bed of N
-/// spheres cost O(N²) clearance tests (100 000 spheres took 32 s to place). With
-/// the cell grid, the pairs examined per draw must not grow with N at fixed solid
-/// fraction: counted, not timed, so the test holds on any machine.
+/// Random sequential insertion was all-pairs, so a bed of N spheres cost O(N²)
+/// clearance tests (100 000 spheres took 32 s to place). With the cell grid, the pairs
+/// examined per draw must not grow with N at fixed solid fraction: counted, not timed,
+/// so the test holds on any machine.
 #[test]
 fn random_insertion_examines_a_bounded_number_of_pairs_per_draw() {
     use tamp::generate::rsi::{InsertionBox, Placed};

@@ -42,7 +42,7 @@ fn mean_curvature_gives_the_effective_radius_of_the_signed_mean_curvature_sphere
         [0.0, 0.0, 0.001001],
     );
     let sim = scene::build(&mean).unwrap().sim;
-    let (wall, pose) = (&sim.model.walls[0], &sim.state.walls[0]);
+    let (wall, pose) = (&sim.model().walls[0], &sim.state().walls[0]);
     let inside = wall.effective_radius(pose, &Vec3::new(0.0, 0.3, 0.0011), r);
     let outside = wall.effective_radius(pose, &Vec3::new(0.0, 0.0, -0.0009), r);
     assert!(
@@ -56,8 +56,8 @@ fn mean_curvature_gives_the_effective_radius_of_the_signed_mean_curvature_sphere
     let flat = scene_with(&cylinder([0.0, 1.0, 0.0], ""), "", [0.0, 0.0, 0.001001]);
     let sim = scene::build(&flat).unwrap().sim;
     let at = Vec3::new(0.0, 0.0, 0.0011);
-    let pose = &sim.state.walls[0];
-    assert_eq!(sim.model.walls[0].effective_radius(pose, &at, r), r);
+    let pose = &sim.state().walls[0];
+    assert_eq!(sim.model().walls[0].effective_radius(pose, &at, r), r);
 }
 
 #[test]

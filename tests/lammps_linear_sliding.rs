@@ -32,7 +32,7 @@ fn slide(contact: Value, v_t: f64, v_n: f64, dt: f64) -> (f64, f64, f64) {
         sim.step().unwrap();
         let touching = sim.contact_count() > 0;
         if touched && !touching {
-            let p = &sim.state.particles;
+            let p = &sim.state().particles;
             return (
                 v_t - p.velocity[0].x,
                 p.omega[0].y * p.radius[0],

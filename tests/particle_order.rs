@@ -44,25 +44,29 @@ fn built(sort: bool) -> (Simulation, u64) {
 fn sorting_renumbers_the_storage_but_not_the_ids_or_the_motion() {
     let (mut plain, steps) = built(false);
     let (mut sorted, _) = built(true);
-    let n = plain.state.particles.len();
-    assert_eq!(plain.state.particles.id, (1..=n as u64).collect::<Vec<_>>());
+    let n = plain.state().particles.len();
+    assert_eq!(
+        plain.state().particles.id,
+        (1..=n as u64).collect::<Vec<_>>()
+    );
     // Sorted: a permutation of the same ids, no longer in id order, and stored by
     // z-layer (the slowest key of the cell order).
-    let mut ids = sorted.state.particles.id.clone();
+    let mut ids = sorted.state().particles.id.clone();
     assert_ne!(
-        ids, plain.state.particles.id,
+        ids,
+        plain.state().particles.id,
         "the sort must reorder a deposited bed"
     );
     ids.sort_unstable();
-    assert_eq!(ids, plain.state.particles.id);
+    assert_eq!(ids, plain.state().particles.id);
     let z: Vec<f64> = sorted
-        .state
+        .state()
         .particles
         .position
         .iter()
         .map(|x| x.z)
         .collect();
-    let r = &sorted.state.particles.radius;
+    let r = &sorted.state().particles.radius;
     let (r_min, r_max) = r
         .iter()
         .fold((1.0f64, 0.0f64), |(a, b), &x| (a.min(x), b.max(x)));
@@ -74,7 +78,7 @@ fn sorting_renumbers_the_storage_but_not_the_ids_or_the_motion() {
     assert!(z.windows(2).all(|w| layer(w[0]) <= layer(w[1])));
     // The same bed, particle for particle.
     let by_id = |s: &Simulation| -> BTreeMap<u64, usize> {
-        s.state
+        s.state()
             .particles
             .id
             .iter()
@@ -84,19 +88,19 @@ fn sorting_renumbers_the_storage_but_not_the_ids_or_the_motion() {
     };
     let at = by_id(&sorted);
     for i in 0..n {
-        let k = at[&plain.state.particles.id[i]];
+        let k = at[&plain.state().particles.id[i]];
         assert_eq!(
-            plain.state.particles.position[i],
-            sorted.state.particles.position[k]
+            plain.state().particles.position[i],
+            sorted.state().particles.position[k]
         );
         assert_eq!(
-            plain.state.particles.radius[i],
-            sorted.state.particles.radius[k]
+            plain.state().particles.radius[i],
+            sorted.state().particles.radius[k]
         );
     }
     plain.run_with(steps, |_| {}).expect("stable");
     sorted.run_with(steps, |_| {}).expect("stable");
-    let contacts = plain.state.neighbors.pairs.len();
+    let contacts = plain.state().neighbors.pairs.len();
     assert!(
         contacts > n,
         "the bed must be in contact to test anything ({contacts} pairs)"
@@ -108,9 +112,10 @@ fn sorting_renumbers_the_storage_but_not_the_ids_or_the_motion() {
     let at = by_id(&sorted);
     let mut worst = 0.0f64;
     for i in 0..n {
-        let k = at[&plain.state.particles.id[i]];
-        let dx = (plain.state.particles.position[i] - sorted.state.particles.position[k]).norm();
-        worst = worst.max(dx / plain.state.particles.radius[i]);
+        let k = at[&plain.state().particles.id[i]];
+        let dx =
+            (plain.state().particles.position[i] - sorted.state().particles.position[k]).norm();
+        worst = worst.max(dx / plain.state().particles.radius[i]);
     }
     assert!(worst <= 1e-9, "positions differ by up to {worst:e} R");
 }

@@ -24,7 +24,7 @@ fn initial_contact_starts_with_an_unloaded_spring() {
         "time_step": {"alpha": 0.1, "characteristic_velocity": 0.1},
         "run": {"steps": 1}
     }));
-    let f = b.sim.state.particles.force[0];
+    let f = b.sim.state().particles.force[0];
     assert_eq!(
         f.x, 0.0,
         "tangential force at t = 0 must be zero, got {f:?}"
@@ -51,11 +51,11 @@ fn prescribed_partner_damps_like_a_wall() {
         }));
         for _ in 0..200_000 {
             b.sim.step().unwrap();
-            if b.sim.state.particles.velocity[0].z > 0.0 && b.sim.contact_count() == 0 {
+            if b.sim.state().particles.velocity[0].z > 0.0 && b.sim.contact_count() == 0 {
                 break;
             }
         }
-        b.sim.state.particles.velocity[0].z / 0.1
+        b.sim.state().particles.velocity[0].z / 0.1
     };
     let against_wall = restitution(
         serde_json::Value::Null,
@@ -167,7 +167,7 @@ fn prescribed_velocity_changes_at_its_step_and_keeps_the_energy_book() {
     let mut x = Vec::new();
     for _ in 0..40 {
         sim.step().unwrap();
-        x.push(sim.state.particles.position[0]);
+        x.push(sim.state().particles.position[0]);
     }
     let expect = |n: f64| {
         let [a, c] = [n.min(10.0), (n.min(25.0) - 10.0).max(0.0)];

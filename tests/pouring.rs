@@ -29,22 +29,22 @@ fn batches_arrive_on_schedule_and_the_energy_book_closes() {
     let built = scene::build(&scene::parse(&s.to_string()).unwrap()).unwrap();
     let mut sim = built.sim;
     assert_eq!(
-        sim.state.particles.len(),
+        sim.state().particles.len(),
         0,
         "nothing is placed before the first event"
     );
     let mut counts = Vec::new();
     let mut worst = 0.0f64;
     sim.run_with(built.steps, |s| {
-        counts.push((s.state.time, s.state.particles.len()));
-        worst = worst.max(s.state.max_overlap_ratio);
+        counts.push((s.state().time, s.state().particles.len()));
+        worst = worst.max(s.state().max_overlap_ratio);
     })
     .unwrap();
-    assert_eq!(sim.state.particles.len(), 60, "all particles poured");
+    assert_eq!(sim.state().particles.len(), 60, "all particles poured");
     // Ten per event, events at 0, 0.02, 0.04, …: after t = 0.05 exactly 30 are in.
     let at = |t: f64| counts.iter().find(|(time, _)| *time >= t).unwrap().1;
     assert_eq!(at(0.05), 30);
     assert!(worst < 0.05, "largest overlap ratio {worst}");
     assert!(sim.dissipated_energy() >= 0.0);
-    assert!(sim.state.energy.external_work > 0.0);
+    assert!(sim.state().energy.external_work > 0.0);
 }

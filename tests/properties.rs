@@ -1,10 +1,10 @@
-//! Property tests over random scenes (issue 8): a few spheres with radii ratios up to
-//! 100, Young's moduli from 1e6 to 4e11 Pa, densities from 1e3 to 2e4 kg/m³, thrown
-//! at each other in open space (no walls, no gravity) under a random contact law.
-//! Whatever the draw: every value stays finite, linear and angular momentum are
-//! conserved (the contact forces are equal and opposite and their torques use lever
-//! arms that add up to the centre distance), a dissipative law never gains energy,
-//! and numbering the particles the other way round gives the same motion.
+//! Property tests over random scenes: a few spheres with radii ratios up to 100,
+//! Young's moduli from 1e6 to 4e11 Pa, densities from 1e3 to 2e4 kg/m³, thrown at each
+//! other in open space (no walls, no gravity) under a random contact law. Whatever the
+//! draw: every value stays finite, linear and angular momentum are conserved (the
+//! contact forces are equal and opposite and their torques use lever arms that add up
+//! to the centre distance), a dissipative law never gains energy, and numbering the
+//! particles the other way round gives the same motion.
 
 use proptest::prelude::*;
 use serde_json::{Value, json};
@@ -152,7 +152,7 @@ fn run(v: &Value) -> Simulation {
 }
 
 fn momenta(sim: &Simulation) -> (Vec3, Vec3, f64) {
-    let p = &sim.state.particles;
+    let p = &sim.state().particles;
     let mut linear = Vec3::zeros();
     let mut angular = Vec3::zeros();
     let mut scale = 0.0;
@@ -182,12 +182,12 @@ proptest! {
         let scene = scene_of(&d, &forward);
         let first = scene::build(&scene::parse(&scene.to_string()).unwrap()).unwrap();
         let p0 = momenta(&first.sim);
-        let e0 = first.sim.state.particles.translational_kinetic_energy();
+        let e0 = first.sim.state().particles.translational_kinetic_energy();
         let sim = run(&scene);
-        let p = &sim.state.particles;
+        let p = &sim.state().particles;
         prop_assert!((0..n).all(|i| p.position[i].iter().chain(p.velocity[i].iter()).chain(p.omega[i].iter()).all(|c| c.is_finite())));
         // The draw must have produced collisions, or it proves nothing.
-        let exchanged = (0..n).any(|i| (p.velocity[i] - first.sim.state.particles.velocity[i]).norm() > 0.01 * speed(&d));
+        let exchanged = (0..n).any(|i| (p.velocity[i] - first.sim.state().particles.velocity[i]).norm() > 0.01 * speed(&d));
         prop_assume!(exchanged, "no collision within the run");
         let (lin, ang, _) = momenta(&sim);
         let lin_scale: f64 = (0..n).map(|i| p.mass[i] * 2.0 * speed(&d)).sum();
@@ -202,7 +202,7 @@ proptest! {
         let other = run(&scene_of(&d, &backward));
         for i in 0..n {
             let j = n - 1 - i;
-            let dx = (p.position[i] - other.state.particles.position[j]).norm();
+            let dx = (p.position[i] - other.state().particles.position[j]).norm();
             prop_assert!(dx <= 1e-9 * p.radius[i], "particle {i} differs by {dx:e} m when renumbered");
         }
     }
@@ -235,7 +235,7 @@ fn soft_pinch_found_in_ci_runs_within_the_overlap_guard() {
     assert!(speed(&d) < SPEED);
     let sim = run(&scene_of(&d, &[0, 1, 2, 3]));
     assert!((0..4).all(|i| {
-        sim.state.particles.velocity[i]
+        sim.state().particles.velocity[i]
             .iter()
             .all(|c| c.is_finite())
     }));
@@ -311,7 +311,7 @@ fn every_registered_law_conserves_momentum_and_ignores_numbering() {
                 sim
             };
             let sim = run(&forward);
-            let p = &sim.state.particles;
+            let p = &sim.state().particles;
             assert!(
                 (0..3).all(|i| p.position[i]
                     .iter()
@@ -320,7 +320,7 @@ fn every_registered_law_conserves_momentum_and_ignores_numbering() {
                 "{label}: not finite"
             );
             assert!(
-                (0..3).any(|i| (p.velocity[i] - first.state.particles.velocity[i]).norm() > 1e-3),
+                (0..3).any(|i| (p.velocity[i] - first.state().particles.velocity[i]).norm() > 1e-3),
                 "{label}: no collision"
             );
             let (lin, ang, _) = momenta(&sim);
@@ -335,7 +335,7 @@ fn every_registered_law_conserves_momentum_and_ignores_numbering() {
             );
             let other = run(&scene(normal_json, t.clone(), &[2, 1, 0]));
             for i in 0..3 {
-                let dx = (p.position[i] - other.state.particles.position[2 - i]).norm();
+                let dx = (p.position[i] - other.state().particles.position[2 - i]).norm();
                 assert!(dx <= 1e-9 * p.radius[i], "{label}: renumbered, {dx:e} m");
             }
             checked += 1;

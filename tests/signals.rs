@@ -1,7 +1,7 @@
-//! Issue 27 class 5: SIGINT and SIGTERM used to kill a run at once, with no message
-//! and the work since the last checkpoint lost. Now the run finishes its step,
-//! writes a checkpoint when checkpoints are on, says how to go on, and exits with
-//! 128 + the signal; the resumed run writes what an uninterrupted one writes.
+//! SIGINT and SIGTERM used to kill a run at once, with no message and the work since
+//! the last checkpoint lost. Now the run finishes its step, writes a checkpoint when
+//! checkpoints are on, says how to go on, and exits with 128 + the signal; the resumed
+//! run writes what an uninterrupted one writes.
 
 mod common;
 

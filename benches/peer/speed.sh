@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Speed against the peer (issue 8): the same scene in tamp and in LIGGGHTS 3.8, single
-# core, same dt and step count, the deck written by `tamp export-liggghts`. Prints each
-# code's wall time for the run and particle-steps per second.
+# Speed against the peer: the same scene in tamp and in LIGGGHTS 3.8, single core, same
+# dt and step count, the deck written by `tamp export-liggghts`. Prints each code's wall
+# time for the run and particle-steps per second.
 # usage: benches/peer/speed.sh [SCENE]   (default: poured_bed_4000.scene.json beside this)
 # Needs `liggghts` on PATH and a release build (cargo build --release).
 set -euo pipefail

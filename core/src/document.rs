@@ -52,7 +52,7 @@ pub fn load(path: &Path) -> Result<(Document, String)> {
             Document::Scene(s)
         }
         Document::DieCompaction(mut d) => {
-            d.base_dir = input.base_dir;
+            d.scene.base_dir = input.base_dir;
             Document::DieCompaction(d)
         }
     };

@@ -67,7 +67,7 @@ pub fn die_refusals(file: &DieCompactionFile) -> Vec<(String, String)> {
     let (scene, dc) = (file, &file.die_compaction);
     let particle = &dc.particles.material;
     let wall = &dc.wall_material;
-    if let Some(t) = &scene.contact.tangential {
+    if let Some(t) = &scene.scene.contact.tangential {
         for (k, p) in t.friction_pairs.iter().enumerate() {
             let known = [particle.as_str(), wall.as_str()];
             if !(known.contains(&p.materials[0].as_str())
@@ -82,6 +82,7 @@ pub fn die_refusals(file: &DieCompactionFile) -> Vec<(String, String)> {
     }
     let elastic = |name: &str| {
         scene
+            .scene
             .materials
             .iter()
             .find(|m| m.name == name)
@@ -166,19 +167,19 @@ pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> R
     crate::output::create_dir(out_dir)?;
 
     let radius = 0.5 * dc.die_diameter;
-    let max_r = sim.state.particles.largest_radius();
+    let max_r = sim.state().particles.largest_radius();
     let side = radius + 2.0 * max_r;
     let bounds = [
         [-side, side],
         [-side, side],
         [-2.0 * max_r, specimen.h0 + 2.0 * max_r],
     ];
-    let p = &sim.state.particles;
+    let p = &sim.state().particles;
     let data = crate::output::data_file::particles_data(
         &sim,
         "LAMMPS",
         sha,
-        &format!(": the flattened specimen of seed {}", scene.seed),
+        &format!(": the flattened specimen of seed {}", scene.scene.seed),
         &bounds,
         "Atoms # sphere",
     );
@@ -188,6 +189,7 @@ pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> R
     let particle = &dc.particles.material;
     let material = |name: &str| {
         scene
+            .scene
             .materials
             .iter()
             .find(|m| m.name == name)
@@ -200,10 +202,10 @@ pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> R
             .replace("{nu}", &g(m.poisson_ratio.unwrap_or(0.0)))
             .replace("{mu}", &g(mu))
     };
-    let pair = line(particle, friction(&scene.contact, particle, particle));
+    let pair = line(particle, friction(&scene.scene.contact, particle, particle));
     let wall = line(
         &dc.wall_material,
-        friction(&scene.contact, particle, &dc.wall_material),
+        friction(&scene.scene.contact, particle, &dc.wall_material),
     );
     let n = stroke.steps_per_record;
     let steps = n * stroke.heights.len() as u64;
@@ -219,7 +221,12 @@ pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> R
         "the die is LAMMPS's infinite zcylinder wall, its contacts with the wall radius -2 R_c (tamp's die_curvature mean); the floor a zplane; the punch a moving region plane".into(),
     ];
     let mut notes = notes;
-    if let Some(r) = scene.rotation.as_ref().filter(|r| r.inertia_scale != 1.0) {
+    if let Some(r) = scene
+        .scene
+        .rotation
+        .as_ref()
+        .filter(|r| r.inertia_scale != 1.0)
+    {
         notes.push(format!(
             "tamp filled, flattened and pressed with rotation.inertia_scale {}; LAMMPS's fix nve/sphere has the solid sphere's only, so the replay uses 1",
             r.inertia_scale
@@ -233,8 +240,8 @@ pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> R
         "# LAMMPS (22 Jul 2025) deck exported by tamp {} (commit {})\n# scene '{}', sha256 {sha}, seed {}\n# run: lmp -in in.tamp",
         crate::VERSION,
         crate::GIT_COMMIT,
-        scene.name.replace(['\n', '\r'], " "),
-        scene.seed
+        scene.scene.name.replace(['\n', '\r'], " "),
+        scene.scene.seed
     );
     deck.push_str(
         "units        si\natom_style   sphere\natom_modify  map array\nboundary     f f f\n\
@@ -248,7 +255,7 @@ pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> R
         g(neighbor_skin(&replay, &p.radius)),
         g(stroke.dt)
     );
-    if let Some(gv) = sim.model.gravity.filter(|gv| gv.norm() > 0.0) {
+    if let Some(gv) = sim.model().gravity.filter(|gv| gv.norm() > 0.0) {
         let d = gv / gv.norm();
         let _ = writeln!(
             deck,
@@ -325,7 +332,7 @@ mod tests {
             ]
         );
         let mut other = scene("lammps_die_compaction_small");
-        other.materials[1].youngs_modulus = Some(2e11);
+        other.scene.materials[1].youngs_modulus = Some(2e11);
         let paths: Vec<String> = die_refusals(&other).into_iter().map(|(p, _)| p).collect();
         assert_eq!(paths, ["die_compaction.wall_material"]);
         let mut flat = scene("lammps_die_compaction_small");
@@ -459,8 +466,8 @@ mod tests {
     #[test]
     fn walls_take_the_particle_wall_friction_and_particles_their_own() {
         let s = scene("lammps_die_compaction_small");
-        assert_eq!(friction(&s.contact, "NiAl", "NiAl"), 0.0);
-        assert_eq!(friction(&s.contact, "NiAl", "die"), 0.02);
-        assert_eq!(friction(&s.contact, "die", "NiAl"), 0.02);
+        assert_eq!(friction(&s.scene.contact, "NiAl", "NiAl"), 0.0);
+        assert_eq!(friction(&s.scene.contact, "NiAl", "die"), 0.02);
+        assert_eq!(friction(&s.scene.contact, "die", "NiAl"), 0.02);
     }
 }

@@ -46,7 +46,10 @@ use crate::contact::tangential::TangentialLaw;
 use crate::contact::tangential::lammps_linear_history::LammpsHistory;
 use crate::error::{Result, TampError};
 use crate::particles::Vec3;
-use crate::peer_deck::{DUMP_COLUMNS, Exported, dump_format, frame_every, neighbor_skin};
+use crate::peer_deck::{
+    Exported, LAMMPS, frame_every, head, integrate_and_run, neighbor_skin, scene_refusals,
+    timestep_and_gravity,
+};
 use crate::scene::walls::{Curvature, MotionSpec, ShapeSpec, WallSpec};
 use crate::scene::{self, Scene};
 use std::fmt::Write as _;
@@ -236,27 +239,8 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
         ),
         _ => {}
     }
-    if scene.growth.is_some() {
-        refuse(
-            "growth".into(),
-            "LAMMPS has no radius growth stage here; export the grown state instead",
-        );
-    }
-    for (k, ins) in scene.insert.iter().enumerate() {
-        if ins.schedule.is_some() {
-            refuse(
-                format!("insert[{k}].schedule"),
-                "LAMMPS pours with its own random placement; export scenes whose particles are all placed at t = 0",
-            );
-        }
-    }
-    for (k, p) in scene.particles.iter().enumerate() {
-        if p.prescribed_velocity.is_some() {
-            refuse(
-                format!("particles[{k}].prescribed_velocity"),
-                "not exported (LAMMPS would need a separate fix for each driven particle)",
-            );
-        }
+    for (path, why) in scene_refusals(scene, LAMMPS) {
+        refuse(path, &why);
     }
     let hertz = scene.contact.normal.lammps() == Ok(LammpsNormal::HertzMaterial);
     for (k, m) in scene.materials.iter().enumerate() {
@@ -705,7 +689,7 @@ fn starts_outside(w: &WallSpec, sim: &crate::simulation::Simulation, shift: Vec3
         return None;
     };
     let (o, a) = (Vec3::from(*origin), Vec3::from(*axis).normalize());
-    let p = &sim.state.particles;
+    let p = &sim.state().particles;
     (0..p.len())
         .find(|&i| {
             let x = p.position[i] - shift - o;
@@ -734,7 +718,7 @@ pub fn export(
     let model = style.model();
     let built = scene::build(scene)?;
     let sim = built.sim;
-    let p = &sim.state.particles;
+    let p = &sim.state().particles;
     // A particle spanning a box touches both faces of an axis in tamp, only the nearer
     // in LAMMPS (wall_fixes).
     let diameter = 2.0 * p.largest_radius();
@@ -759,7 +743,7 @@ pub fn export(
         .iter()
         .enumerate()
         .filter_map(|(k, w)| {
-            starts_outside(w, &sim, sim.state.walls[k].displacement).map(|id| {
+            starts_outside(w, &sim, sim.state().walls[k].displacement).map(|id| {
                 (
                     format!("walls[{k}].shape"),
                     format!("particle {id} does not start inside the cylinder: LAMMPS's region cylinder (side in) has no contact from outside or beyond its ends, tamp's wall is a two-sided shell with rims"),
@@ -775,7 +759,7 @@ pub fn export(
         };
         (0..p.len())
             .find(|&i| {
-                sim.model.walls[k].deepest_overlap(&sim.state.walls[k], &p.position[i], p.radius[i]) > 0.0
+                sim.model().walls[k].deepest_overlap(&sim.state().walls[k], &p.position[i], p.radius[i]) > 0.0
             })
             .map(|i| {
                 (
@@ -855,17 +839,10 @@ pub fn export(
     let every = dump_every.unwrap_or_else(|| frame_every(scene, built.steps));
 
     let mut deck = String::new();
+    head(&mut deck, "LAMMPS (22 Jul 2025)", scene, sha);
     let _ = writeln!(
         deck,
-        "# LAMMPS (22 Jul 2025) deck exported by tamp {} (commit {})",
-        crate::VERSION,
-        crate::GIT_COMMIT
-    );
-    let _ = writeln!(
-        deck,
-        "# scene '{}', sha256 {sha}, seed {}, dt {}\n# run: lmp -in in.tamp   (or mpiexec -n N lmp -in in.tamp)",
-        scene.name.replace(['\n', '\r'], " "),
-        scene.seed,
+        ", dt {}\n# run: lmp -in in.tamp   (or mpiexec -n N lmp -in in.tamp)",
         g(sim.dt())
     );
     deck.push_str("units        si\natom_style   sphere\natom_modify  map array\n");
@@ -882,13 +859,13 @@ pub fn export(
         .is_some_and(|t| !t.friction_pairs.is_empty());
     // The pair model with material `m`'s E and ν and the friction `mu`.
     let line = |m: usize, mu: f64| {
-        let m = &sim.model.materials[m];
+        let m = &sim.model().materials[m];
         model
             .replace("{E}", &g(m.youngs_modulus.unwrap_or(0.0)))
             .replace("{nu}", &g(m.poisson_ratio.unwrap_or(0.0)))
             .replace("{mu}", &g(mu))
     };
-    let mu = |a: usize, b: usize| sim.model.pair_table.get(a, b).friction;
+    let mu = |a: usize, b: usize| sim.model().pair_table.get(a, b).friction;
     // Particle types: the materials particles are made of (the data file's types).
     let mut kinds: Vec<usize> = p.material.clone();
     kinds.sort_unstable();
@@ -901,7 +878,7 @@ pub fn export(
             // scene's (refusals checked that the two materials share E and ν, so E* is
             // mixed as tamp mixes it).
             let mut pairs: Vec<(usize, usize)> =
-                (0..sim.model.materials.len()).map(|k| (k, k)).collect();
+                (0..sim.model().materials.len()).map(|k| (k, k)).collect();
             if has_friction_pairs {
                 for (x, &a) in kinds.iter().enumerate() {
                     pairs.extend(kinds[x + 1..].iter().map(|&b| (a, b)));
@@ -926,27 +903,13 @@ pub fn export(
             );
         }
     }
-    let _ = writeln!(deck, "timestep     {}", g(sim.dt()));
-    if let Some(gv) = sim.model.gravity {
-        let norm = gv.norm();
-        if norm > 0.0 {
-            let d = gv / norm;
-            let _ = writeln!(
-                deck,
-                "fix          gravi all gravity {} vector {} {} {}",
-                g(norm),
-                g(d.x),
-                g(d.y),
-                g(d.z)
-            );
-        }
-    }
+    timestep_and_gravity(&mut deck, &sim);
     // Walls take the pair's model with the wall material's E and ν. A fix wall/gran has
     // one μ: where the particle materials meet a wall with different μ (friction
     // pairs), the wall is one fix per particle type, each on the group of that type.
     let mut grouped = Vec::new();
     for (k, w) in scene.walls.iter().enumerate() {
-        let wm = sim.model.walls[k].material;
+        let wm = sim.model().walls[k].material;
         let groups: Vec<(String, String, f64)> =
             if kinds.iter().all(|&a| mu(a, wm) == mu(kinds[0], wm)) {
                 let mu0 = kinds.first().map_or(mu(wm, wm), |&a| mu(a, wm));
@@ -996,19 +959,7 @@ pub fn export(
             }
         }
     }
-    deck.push_str("fix          integr all nve/sphere\n");
-    let format = dump_format();
-    let _ = writeln!(
-        deck,
-        "dump         dmp all custom {every} dump.lammps {DUMP_COLUMNS}\ndump_modify  dmp format line \"{format}\" sort id"
-    );
-    deck.push_str("thermo_style custom step time atoms ke\nthermo_modify norm no lost ignore\n");
-    let _ = writeln!(deck, "thermo       {}", (built.steps / 20).max(1));
-    let _ = writeln!(deck, "run          {}", built.steps);
-    let _ = writeln!(
-        deck,
-        "write_dump   all custom final.lammps {DUMP_COLUMNS} modify format line \"{format}\" sort id"
-    );
+    integrate_and_run(&mut deck, LAMMPS, every, built.steps);
     crate::output::write_atomic(&out_dir.join("in.tamp"), deck.as_bytes())?;
     Ok(Exported {
         particles: p.len(),

@@ -99,7 +99,7 @@ pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> R
 
     // A fixed box around the die, its floor and the punch's start.
     let radius = 0.5 * dc.die_diameter;
-    let max_r = sim.state.particles.largest_radius();
+    let max_r = sim.state().particles.largest_radius();
     // LIGGGHTS 3.8 refuses a mesh whose coordinates span less than 1e-4 length
     // units (multi_node_mesh_parallel_I.h, initalSetup): the squares reach past
     // the die, where no particle goes.
@@ -124,7 +124,7 @@ pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> R
     files.push("stroke.json".into());
 
     let mut deck = deck_head(&replay, sha, &sim, &["f", "f", "f"], &model);
-    let wall_type = sim.model.walls[0].material + 1;
+    let wall_type = sim.model().walls[0].material + 1;
     let wall = &model.pair_style;
     let n = stroke.steps_per_record;
     let format = dump_format();
@@ -172,7 +172,12 @@ pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> R
         ),
         "the die is LIGGGHTS's infinite zcylinder primitive; floor and punch are STL squares (run LIGGGHTS with its screen output on: 3.8 crashes reading an STL mesh without a screen)".into(),
     ];
-    if let Some(r) = file.rotation.as_ref().filter(|r| r.inertia_scale != 1.0) {
+    if let Some(r) = file
+        .scene
+        .rotation
+        .as_ref()
+        .filter(|r| r.inertia_scale != 1.0)
+    {
         notes.push(format!(
             "tamp filled, flattened and pressed with rotation.inertia_scale {}; LIGGGHTS's fix nve/sphere has the solid sphere's only, so the replay uses 1",
             r.inertia_scale
@@ -183,7 +188,7 @@ pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> R
     }
     crate::output::write_atomic(&out_dir.join("in.tamp"), deck.as_bytes())?;
     Ok(Exported {
-        particles: sim.state.particles.len(),
+        particles: sim.state().particles.len(),
         steps: n * stroke.heights.len() as u64,
         dt: stroke.dt,
         files,

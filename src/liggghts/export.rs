@@ -37,7 +37,10 @@ use crate::contact::tangential::TangentialLaw;
 use crate::error::{Result, TampError};
 use crate::material::{effective_mass, effective_modulus, effective_radius};
 use crate::particles::Vec3;
-use crate::peer_deck::{DUMP_COLUMNS, Exported, dump_format, frame_every, neighbor_skin};
+use crate::peer_deck::{
+    Exported, LIGGGHTS, frame_every, head, integrate_and_run, neighbor_skin, scene_refusals,
+    timestep_and_gravity,
+};
 use crate::scene::walls::{Curvature, MotionSpec, ShapeSpec};
 use crate::scene::{self, Scene};
 use std::fmt::Write as _;
@@ -174,27 +177,8 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
             "LIGGGHTS 3.8 has no van der Waals (Hamaker) cohesion model",
         );
     }
-    if scene.growth.is_some() {
-        refuse(
-            "growth",
-            "LIGGGHTS has no radius growth stage; export the grown state instead",
-        );
-    }
-    for (k, ins) in scene.insert.iter().enumerate() {
-        if ins.schedule.is_some() {
-            refuse(
-                &format!("insert[{k}].schedule"),
-                "LIGGGHTS pours with its own random placement; export scenes whose particles are all placed at t = 0",
-            );
-        }
-    }
-    for (k, p) in scene.particles.iter().enumerate() {
-        if p.prescribed_velocity.is_some() {
-            refuse(
-                &format!("particles[{k}].prescribed_velocity"),
-                "not exported (LIGGGHTS would need a separate fix for each driven particle)",
-            );
-        }
+    for (path, why) in scene_refusals(scene, LIGGGHTS) {
+        refuse(&path, &why);
     }
     for (k, m) in scene.materials.iter().enumerate() {
         if m.rigid {
@@ -297,7 +281,7 @@ fn deck_scene<'a>(
     let types = scene.materials.len();
     let friction = match sim {
         Some(sim) if scene.contact.tangential.is_some() => (0..types * types)
-            .map(|k| sim.model.pair_table.get(k / types, k % types).friction)
+            .map(|k| sim.model().pair_table.get(k / types, k % types).friction)
             .collect(),
         _ => vec![0.0; types * types],
     };
@@ -321,7 +305,7 @@ pub(super) fn contact_model(
 ) -> Result<ContactModel> {
     let mut properties = Vec::new();
     let per_type = |f: &dyn Fn(&crate::material::Material) -> f64| -> String {
-        sim.model
+        sim.model()
             .materials
             .iter()
             .map(|m| g(f(m)))
@@ -336,7 +320,7 @@ pub(super) fn contact_model(
         "fix m2 all property/global poissonsRatio peratomtype {}",
         per_type(&|m| m.poisson_ratio.expect("checked"))
     ));
-    let n = sim.model.materials.len();
+    let n = sim.model().materials.len();
     let deck = match scene
         .contact
         .normal
@@ -383,7 +367,7 @@ fn join(values: &[f64]) -> String {
 /// The contact kinds of a scene: every pair of particle classes (mass, radius,
 /// material) and every class against every wall.
 fn contact_kinds(sim: &crate::simulation::Simulation) -> Vec<LiggghtsContact> {
-    let p = &sim.state.particles;
+    let p = &sim.state().particles;
     let mut classes: Vec<(f64, f64, usize)> = Vec::new();
     for i in 0..p.len() {
         let c = (p.mass[i], p.radius[i], p.material[i]);
@@ -395,7 +379,7 @@ fn contact_kinds(sim: &crate::simulation::Simulation) -> Vec<LiggghtsContact> {
         }
     }
     let e_star = |a: usize, b: usize| {
-        effective_modulus(&sim.model.materials[a], &sim.model.materials[b]).expect("checked")
+        effective_modulus(&sim.model().materials[a], &sim.model().materials[b]).expect("checked")
     };
     let mut kinds = Vec::new();
     for (k, a) in classes.iter().enumerate() {
@@ -408,7 +392,7 @@ fn contact_kinds(sim: &crate::simulation::Simulation) -> Vec<LiggghtsContact> {
                 second: Some((b.2, b.1)),
             });
         }
-        for w in &sim.model.walls {
+        for w in &sim.model().walls {
             kinds.push(LiggghtsContact {
                 effective_mass: a.0,
                 effective_radius: a.1,
@@ -480,7 +464,7 @@ pub(super) fn plane_triangles(point: &Vec3, normal: &Vec3, half: f64) -> Vec<[Ve
 
 /// The scene's extent: the particles' bounding box, widened by the periodic box.
 fn extent(sim: &crate::simulation::Simulation, scene: &Scene) -> (Vec3, Vec3) {
-    let p = &sim.state.particles;
+    let p = &sim.state().particles;
     let mut lo = Vec3::repeat(f64::INFINITY);
     let mut hi = Vec3::repeat(f64::NEG_INFINITY);
     for (x, r) in p.position.iter().zip(&p.radius) {
@@ -520,25 +504,15 @@ pub(super) fn deck_head(
     model: &ContactModel,
 ) -> String {
     let moduli: Vec<f64> = sim
-        .model
+        .model()
         .materials
         .iter()
         .filter_map(|m| m.youngs_modulus)
         .collect();
-    let skin = neighbor_skin(scene, &sim.state.particles.radius);
+    let skin = neighbor_skin(scene, &sim.state().particles.radius);
     let mut deck = String::new();
-    let _ = writeln!(
-        deck,
-        "# LIGGGHTS-PUBLIC 3.8 deck exported by tamp {} (commit {})",
-        crate::VERSION,
-        crate::GIT_COMMIT
-    );
-    let _ = writeln!(
-        deck,
-        "# scene '{}', sha256 {sha}, seed {}\n# run: liggghts -in in.tamp",
-        scene.name.replace(['\n', '\r'], " "),
-        scene.seed
-    );
+    head(&mut deck, "LIGGGHTS-PUBLIC 3.8", scene, sha);
+    deck.push_str("\n# run: liggghts -in in.tamp\n");
     deck.push_str("atom_style   granular\natom_modify  map array\n");
     let _ = writeln!(deck, "boundary     {}", boundary.join(" "));
     deck.push_str("newton       off\ncommunicate  single vel yes\nunits        si\n");
@@ -571,21 +545,7 @@ pub(super) fn deck_head(
         "pair_style   gran {}\npair_coeff   * *",
         model.pair_style
     );
-    let _ = writeln!(deck, "timestep     {}", g(sim.dt()));
-    if let Some(gv) = sim.model.gravity {
-        let norm = gv.norm();
-        if norm > 0.0 {
-            let d = gv / norm;
-            let _ = writeln!(
-                deck,
-                "fix          gravi all gravity {} vector {} {} {}",
-                g(norm),
-                g(d.x),
-                g(d.y),
-                g(d.z)
-            );
-        }
-    }
+    timestep_and_gravity(&mut deck, sim);
 
     deck
 }
@@ -607,7 +567,7 @@ pub fn export(
     crate::output::create_dir(out_dir)?;
     let mut files = Vec::new();
     let mut notes = Vec::new();
-    let p = &sim.state.particles;
+    let p = &sim.state().particles;
 
     // Box: periodic axes exactly; the others shrink-wrap (`m`) around a start box.
     let (lo, hi) = extent(&sim, scene);
@@ -636,7 +596,7 @@ pub fn export(
     let half = (hi - lo).norm() * 2.0 + 10.0 * max_r;
     let wall_model = &model.pair_style;
     let mut meshes: Vec<String> = Vec::new();
-    for (k, (wall, spec)) in sim.model.walls.iter().zip(&scene.walls).enumerate() {
+    for (k, (wall, spec)) in sim.model().walls.iter().zip(&scene.walls).enumerate() {
         let wtype = wall.material + 1;
         let velocity = match &spec.motion {
             MotionSpec::Velocity { velocity } => Some(*velocity),
@@ -741,19 +701,7 @@ pub fn export(
             meshes.join(" ")
         );
     }
-    deck.push_str("fix          integr all nve/sphere\n");
-    let format = dump_format();
-    let _ = writeln!(
-        deck,
-        "dump         dmp all custom {every} dump.liggghts {DUMP_COLUMNS}\ndump_modify  dmp format \"{format}\" sort id"
-    );
-    deck.push_str("thermo_style custom step time atoms ke\nthermo_modify norm no lost ignore\n");
-    let _ = writeln!(deck, "thermo       {}", (built.steps / 20).max(1));
-    let _ = writeln!(deck, "run          {}", built.steps);
-    let _ = writeln!(
-        deck,
-        "write_dump   all custom final.liggghts {DUMP_COLUMNS} modify format \"{format}\" sort id"
-    );
+    integrate_and_run(&mut deck, LIGGGHTS, every, built.steps);
     if !meshes.is_empty() {
         notes.push(
             "run LIGGGHTS with its screen output on (not -screen none): LIGGGHTS 3.8 crashes reading an STL mesh without a screen".into(),

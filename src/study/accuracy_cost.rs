@@ -117,7 +117,7 @@ fn sweep_case(spec: &CaseSpec, dir: &Path, scratch: &Path, opts: &Options) -> Re
     let scene_file = dir.join(spec.scene.as_deref().unwrap_or_default());
     let base = super::case_scene(&scene_file)?;
     let particles = scene::build(&base)
-        .map(|b| b.sim.state.particles.len() + b.sim.state.still_to_pour())
+        .map(|b| b.sim.state().particles.len() + b.sim.state().still_to_pour())
         .unwrap_or(0);
     let mut variants: Vec<Variant> = if reference_fixes_the_step(dir, &spec.name) {
         vec![Variant::default()]

@@ -58,7 +58,7 @@ pub fn run(scene_path: &Path, out: &Path) -> Result<u8> {
     let mut runs = Vec::new();
     for (ramp, alpha, axis) in SETTINGS {
         let mut s = scene.clone();
-        s.time_step.alpha = Some(alpha);
+        s.scene.time_step.alpha = Some(alpha);
         s.die_compaction.press.ramp_time = ramp;
         let started = Instant::now();
         let pressing = die_compaction::press(&s, &specimen, false, None, 0, &mut |_| Ok(()))?;

@@ -163,7 +163,7 @@ fn measure(
     sigma: Option<f64>,
 ) -> Result<FillRow> {
     let mut s = scene.clone();
-    s.seed = seed;
+    s.scene.seed = seed;
     let dc = &mut s.die_compaction;
     dc.fill.method = method;
     if method == FillMethod::SettledColumn {

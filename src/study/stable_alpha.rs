@@ -351,7 +351,7 @@ fn vibration(law: &Law) -> Result<Vec<([f64; 3], [f64; 3])>> {
     let mut rng = ChaCha8Rng::seed_from_u64(8);
     let mut draw =
         |scale: f64| -> [f64; 3] { [0; 3].map(|_| scale * (2.0 * rng.random::<f64>() - 1.0)) };
-    Ok((0..built.sim.state.particles.len())
+    Ok((0..built.sim.state().particles.len())
         .map(|_| (draw(v0), draw(v0 / RADIUS)))
         .collect())
 }

@@ -483,8 +483,8 @@ impl<'a> CaseContext<'a> {
         let mut process = DieCompactionFile::load(path)?.0;
         let mut shared = process.shared_scene();
         self.variant.apply(&mut shared);
-        process.time_step = shared.time_step;
-        process.broad_phase = shared.broad_phase;
+        process.scene.time_step = shared.time_step;
+        process.scene.broad_phase = shared.broad_phase;
         Ok(process)
     }
 }

@@ -35,76 +35,98 @@
 pub use super::funnel::{FillMethod, FunnelSpec};
 use crate::error::{Errors, Result};
 use crate::scene::contact::{self, LawContext};
-use crate::scene::schema::{
-    BroadPhaseSpec, ContactSpec, DepositSpec, GrowthSpec, InsertSpec, MaterialSpec, OutputSpec,
-    ParticleSpec, PeriodicSpec, RadiusSpec, RotationSpec, RunSpec, Scene, StabilitySpec,
-    TimeStepSpec, WallSpec,
-};
+use crate::scene::schema::{ContactSpec, RadiusSpec, Scene};
 use crate::scene::walls::Curvature;
 use crate::scene::{materials, physics, run};
 use serde::{Deserialize, Serialize};
 use std::collections::HashSet;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
-/// A die-compaction file: the blocks its stage scenes share, and the process. Its
-/// fields are those of a scene (`scene::Scene`, whose documentation they share) with
-/// `die_compaction` added; the blocks the stages set are read only to be refused.
-#[derive(Clone, Debug, Deserialize, Serialize)]
-#[serde(deny_unknown_fields)]
+/// A die-compaction file: the scene its stages share, and the process. In the file
+/// the scene's blocks and `die_compaction` are members of one object; the blocks the
+/// stages set (particles, walls, periodic axes, growth, the run's length) are refused
+/// when given.
+#[derive(Clone, Debug)]
 pub struct DieCompactionFile {
-    /// A title, copied to the outputs.
-    #[serde(default)]
-    pub name: String,
-    /// Seed of every random choice the process makes (the fill's radii and places).
-    #[serde(default)]
-    pub seed: u64,
-    /// The materials of the particles and of the die.
-    pub materials: Vec<MaterialSpec>,
-    /// The pressing stage's contact law.
-    pub contact: ContactSpec,
-    /// Set by the stages: refused when given.
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub particles: Vec<ParticleSpec>,
-    /// Set by the stages: refused when given.
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub insert: Vec<InsertSpec>,
-    /// Set by the stages: refused when given.
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub deposit: Vec<DepositSpec>,
-    /// Set by the stages: refused when given.
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub walls: Vec<WallSpec>,
-    /// Gravitational acceleration, m/s²: required (the die is filled by settling).
-    #[serde(default)]
-    pub gravity: Option<[f64; 3]>,
-    /// Refused when given: the die is not periodic.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub periodic: Option<PeriodicSpec>,
-    /// Refused when given: the stages grow nothing.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub growth: Option<GrowthSpec>,
-    /// Absent means particles do not rotate.
-    #[serde(default)]
-    pub rotation: Option<RotationSpec>,
-    /// How the stages' time step is chosen (α; the press re-estimates it).
-    pub time_step: TimeStepSpec,
-    /// The stages set the run's length: a length given here is refused.
-    #[serde(default)]
-    pub run: RunSpec,
-    /// Contact detection of every stage.
-    #[serde(default)]
-    pub broad_phase: BroadPhaseSpec,
-    /// The limits that stop a stage going wrong (exit 3).
-    #[serde(default)]
-    pub stability: StabilitySpec,
-    /// The files a run writes.
-    #[serde(default)]
-    pub output: OutputSpec,
+    /// The blocks the stage scenes share, read by the scene's own reader and rules:
+    /// the pressing stage's contact law, the materials, gravity (required), rotation,
+    /// the time step, detection, stability and output.
+    pub scene: Scene,
     /// The process: die, particles, fill, flatten, press and RVE.
     pub die_compaction: DieCompactionSpec,
-    /// Directory of the file, for relative paths; not a JSON field.
-    #[serde(skip)]
-    pub base_dir: PathBuf,
+}
+
+/// The `die_compaction` member, the file's other members passed over.
+#[derive(Deserialize)]
+struct Process<T> {
+    die_compaction: T,
+}
+
+/// The text with the `die_compaction` member (key, value and one separating comma)
+/// replaced by spaces, line breaks kept, so that every other member keeps its line
+/// and column.
+fn without_process(text: &str) -> Result<String> {
+    #[derive(Deserialize)]
+    struct Raw<'a> {
+        #[serde(borrow)]
+        die_compaction: &'a serde_json::value::RawValue,
+    }
+    // The process member was read from this text already, so it is well formed.
+    let raw: Raw = serde_json::from_str(text).map_err(|e| {
+        crate::error::TampError::input("die_compaction", format!("could not be placed: {e}"))
+    })?;
+    let value = raw.die_compaction.get();
+    // The value borrows from `text`, so its place there is the pointers' difference.
+    let start = value.as_ptr() as usize - text.as_ptr() as usize;
+    let end = start + value.len();
+    let key = "\"die_compaction\"";
+    let before = text[..start]
+        .trim_end()
+        .strip_suffix(':')
+        .map(str::trim_end);
+    let Some(key_start) = before.and_then(|b| b.strip_suffix(key)).map(|b| b.len()) else {
+        return Err(crate::error::TampError::input(
+            "die_compaction",
+            "must be written as the plain key \"die_compaction\" (no escapes in its name)",
+        ));
+    };
+    let mut blank = vec![(key_start, end)];
+    let after = end + (text.len() - end - text[end..].trim_start().len());
+    if text[after..].starts_with(',') {
+        blank.push((after, after + 1));
+    } else if let Some(comma) = text[..key_start].trim_end().strip_suffix(',') {
+        blank.push((comma.len(), comma.len() + 1));
+    }
+    let mut out = text.as_bytes().to_vec();
+    for (a, b) in blank {
+        for byte in &mut out[a..b] {
+            if *byte != b'\n' && *byte != b'\r' {
+                *byte = b' ';
+            }
+        }
+    }
+    Ok(String::from_utf8(out).expect("multi-byte characters are blanked whole"))
+}
+
+/// The file as written: the scene's members, then `die_compaction`.
+#[derive(Serialize)]
+struct Written<'a> {
+    #[serde(flatten)]
+    scene: &'a Scene,
+    die_compaction: &'a DieCompactionSpec,
+}
+
+impl Serialize for DieCompactionFile {
+    fn serialize<S: serde::Serializer>(
+        &self,
+        serializer: S,
+    ) -> std::result::Result<S::Ok, S::Error> {
+        Written {
+            scene: &self.scene,
+            die_compaction: &self.die_compaction,
+        }
+        .serialize(serializer)
+    }
 }
 
 impl DieCompactionFile {
@@ -122,9 +144,22 @@ impl DieCompactionFile {
     }
 
     /// `parse` of a text already known to be a die-compaction file (`document::parse`
-    /// has looked).
+    /// has looked). Each part is read by its own reader from the text as written, so
+    /// errors give the file's own lines and columns: `die_compaction` by a reader of
+    /// that member alone, the scene's members by the scene's reader from the text with
+    /// `die_compaction` blanked out, so they meet every rule of a scene (an unknown
+    /// member is refused by name, which one reader of both could not do: serde's
+    /// `flatten` lets unknown members through).
     pub(crate) fn parse_known(text: &str) -> Result<Self> {
-        let file: DieCompactionFile = crate::scene::parse_json(text)?;
+        // Malformed JSON first, named at its path as in a scene (the process reader
+        // passes over the other members without following their paths).
+        let _: serde_json::Value = crate::scene::parse_json(text)?;
+        let scene: Scene = crate::scene::parse_json(&without_process(text)?)?;
+        let process: Process<DieCompactionSpec> = crate::scene::parse_json(text)?;
+        let file = DieCompactionFile {
+            scene,
+            die_compaction: process.die_compaction,
+        };
         file.validate()?;
         Ok(file)
     }
@@ -134,52 +169,34 @@ impl DieCompactionFile {
     pub fn load(path: &Path) -> Result<(Self, String)> {
         let input = crate::scene::read_input(path)?;
         let mut file = Self::parse(&input.text)?;
-        file.base_dir = input.base_dir;
+        file.scene.base_dir = input.base_dir;
         Ok((file, input.sha256))
     }
 
-    /// The scene every stage starts from: this file's shared blocks, with no
-    /// particles, walls or run length (each stage sets its own).
+    /// The scene every stage starts from: the file's shared blocks, with no particles,
+    /// walls or run length (each stage sets its own).
     pub fn shared_scene(&self) -> Scene {
-        Scene {
-            name: self.name.clone(),
-            seed: self.seed,
-            materials: self.materials.clone(),
-            contact: self.contact.clone(),
-            particles: Vec::new(),
-            insert: Vec::new(),
-            deposit: Vec::new(),
-            walls: Vec::new(),
-            gravity: self.gravity,
-            periodic: None,
-            growth: None,
-            rotation: self.rotation.clone(),
-            time_step: self.time_step.clone(),
-            run: RunSpec::default(),
-            broad_phase: self.broad_phase.clone(),
-            stability: self.stability.clone(),
-            output: self.output.clone(),
-            resolved_from: None,
-            base_dir: self.base_dir.clone(),
-        }
+        self.scene.clone()
     }
 
     /// Every rule of the file; all violations are listed together (exit 2). The
     /// shared blocks are checked by the scene topics' own rules, the fill stage's
     /// contact block at its path.
     pub fn validate(&self) -> Result<()> {
-        let dc = &self.die_compaction;
+        let (scene, dc) = (&self.scene, &self.die_compaction);
         let mut e = Errors(Vec::new());
         let owned = [
-            ("particles", !self.particles.is_empty()),
-            ("insert", !self.insert.is_empty()),
-            ("deposit", !self.deposit.is_empty()),
-            ("walls", !self.walls.is_empty()),
-            ("periodic", self.periodic.is_some()),
-            ("growth", self.growth.is_some()),
+            ("particles", !scene.particles.is_empty()),
+            ("insert", !scene.insert.is_empty()),
+            ("deposit", !scene.deposit.is_empty()),
+            ("walls", !scene.walls.is_empty()),
+            ("periodic", scene.periodic.is_some()),
+            ("growth", scene.growth.is_some()),
             (
                 "run",
-                self.run.duration.is_some() || self.run.steps.is_some() || self.run.until.is_some(),
+                scene.run.duration.is_some()
+                    || scene.run.steps.is_some()
+                    || scene.run.until.is_some(),
             ),
         ];
         for (field, given) in owned {
@@ -190,21 +207,21 @@ impl DieCompactionFile {
                 );
             }
         }
-        if self.gravity.is_none() {
+        if scene.gravity.is_none() {
             e.push(
                 "gravity",
                 "is required by die_compaction: the die is filled by settling under it",
             );
         }
-        if self.time_step.accuracy.is_some() {
+        if scene.time_step.accuracy.is_some() {
             e.push(
                 "time_step.accuracy",
                 "is not available in a die_compaction scene (its press stage re-estimates the step from the contacts with time_step.alpha); give time_step.alpha",
             );
         }
-        let names: HashSet<&str> = self.materials.iter().map(|m| m.name.as_str()).collect();
+        let names: HashSet<&str> = scene.materials.iter().map(|m| m.name.as_str()).collect();
         dc.validate(&|name| names.contains(name), &mut e);
-        if let Some(m) = self
+        if let Some(m) = scene
             .materials
             .iter()
             .find(|m| m.rigid && m.name == dc.particles.material)
@@ -220,19 +237,18 @@ impl DieCompactionFile {
         if e.0.is_empty() {
             // The topics the stages share with an ordinary scene, the particles being
             // the specimen's and the run's length the stages'.
-            let shared = self.shared_scene();
-            let names = materials::validate(&self.materials, &mut e);
+            let names = materials::validate(&scene.materials, &mut e);
             let ctx = LawContext {
                 particle_materials: [dc.particles.material.as_str()].into(),
-                rotation: self.rotation.is_some(),
-                materials: &self.materials,
+                rotation: scene.rotation.is_some(),
+                materials: &scene.materials,
                 names: &names,
             };
-            contact::validate(&self.contact, "contact", &ctx, &mut e);
-            materials::validate_hardening(&self.materials, &mut e);
-            physics::validate(&shared, &mut e);
-            run::validate_time_step(&self.time_step, &mut e);
-            run::validate_detection_limits_and_output(&shared, &mut e);
+            contact::validate(&scene.contact, "contact", &ctx, &mut e);
+            materials::validate_hardening(&scene.materials, &mut e);
+            physics::validate(scene, &mut e);
+            run::validate_time_step(&scene.time_step, &mut e);
+            run::validate_detection_limits_and_output(scene, &mut e);
             contact::validate(
                 &dc.fill.contact,
                 "die_compaction.fill.contact",

@@ -59,7 +59,7 @@ pub fn run_scene(
     quiet: bool,
     resume: bool,
 ) -> Result<CompactionSummary> {
-    let every = file.output.checkpoint_every;
+    let every = file.scene.output.checkpoint_every;
     crate::checkpoint::require_checkpoints_for_resume(resume, every)?;
     // The specimen and the checkpoint are what a resumed run starts from.
     let keep: &[&str] = if resume {
@@ -148,8 +148,14 @@ pub fn run_scene(
         .expect("at least two records")
         .clone();
     let summary = CompactionSummary {
-        provenance: Provenance::new(sha.to_string(), file.seed, last.dt, None, pressing.steps),
-        scene_name: file.name.clone(),
+        provenance: Provenance::new(
+            sha.to_string(),
+            file.scene.seed,
+            last.dt,
+            None,
+            pressing.steps,
+        ),
+        scene_name: file.scene.name.clone(),
         particles: specimen.particles.len(),
         h0: specimen.h0,
         initial_density_specimen: specimen.density_specimen,

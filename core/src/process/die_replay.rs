@@ -119,7 +119,7 @@ pub fn press_for_replay(file: &DieCompactionFile, solid: &DieCompactionFile) -> 
 /// factor; both replays use this one.
 pub fn solid_sphere_scene(file: &DieCompactionFile) -> DieCompactionFile {
     let mut s = file.clone();
-    if let Some(r) = s.rotation.as_mut() {
+    if let Some(r) = s.scene.rotation.as_mut() {
         r.inertia_scale = 1.0;
     }
     s

@@ -106,8 +106,11 @@ fn first(v: &Value, path: &str, found: &Found) -> Option<String> {
 /// The full path of the value an error at `path` with message `rule` is about, in the
 /// file `text` (which parsed as JSON); `path` itself when nothing more can be told.
 pub(super) fn refine(text: &str, path: &str, rule: &str) -> String {
+    // The reader's path ends at an unknown field's own name (it read the key before
+    // refusing it), and at the object for a missing one.
     let join = |field: &str| match path {
         "" | "." => field.to_string(),
+        _ if path.rsplit('.').next() == Some(field) => path.to_string(),
         _ => format!("{path}.{field}"),
     };
     for prefix in ["missing field `", "unknown field `", "duplicate field `"] {
@@ -163,6 +166,11 @@ mod tests {
             "contact.normal"
         );
         assert_eq!(refined(".", "unknown field `colour`"), "colour");
+        assert_eq!(refined("colour", "unknown field `colour`"), "colour");
+        assert_eq!(
+            refined("particles[1].colour", "unknown field `colour`"),
+            "particles[1].colour"
+        );
         // Nothing in the block is what the message found: the block's path stays.
         assert_eq!(
             refined("contact.damping", "invalid type: integer `7`, expected f64"),

@@ -45,8 +45,8 @@ mod energy;
 mod force_loop;
 mod growth_stage;
 mod limits;
-mod narrow_phase;
 mod model;
+mod narrow_phase;
 mod pour;
 mod records;
 mod resume;
@@ -54,17 +54,55 @@ mod state;
 mod velocity_changes;
 mod workspace;
 
-/// One DEM run: its model, its state, and the step's scratch.
+/// One DEM run: its model, its state, and the step's scratch. Outside the core both
+/// are read-only (`model`, `state`): the step keeps invariants across them (contact
+/// states typed by the laws and indexed by the neighbour list, wall poses and forces
+/// one per wall, the energy book, the time step), so they change only through the
+/// step and the few setters below.
 #[derive(Clone, Debug)]
 pub struct Simulation {
     /// What the scene fixes; the step only reads it.
-    pub model: Model,
+    pub(crate) model: Model,
     /// What the step changes; a checkpoint stores it.
-    pub state: State,
+    pub(crate) state: State,
     work: Workspace,
 }
 
 impl Simulation {
+    /// What the scene fixes.
+    pub fn model(&self) -> &Model {
+        &self.model
+    }
+
+    /// What the step changes.
+    pub fn state(&self) -> &State {
+        &self.state
+    }
+
+    /// Set particle `i`'s velocity, m/s, between steps (an initial condition no scene
+    /// states, or a kick).
+    pub fn set_velocity(&mut self, i: usize, velocity: Vec3) {
+        self.state.particles.velocity[i] = velocity;
+    }
+
+    /// From the next step on, particle `i` moves at `velocity`, m/s, whatever the force
+    /// (as a scene's `prescribed_velocity`, which this changes between steps).
+    pub fn prescribe(&mut self, i: usize, velocity: Vec3) {
+        self.state.particles.prescribe(i, velocity);
+    }
+
+    /// Set particle `i`'s spin, rad/s, between steps.
+    pub fn set_spin(&mut self, i: usize, omega: Vec3) {
+        self.state.particles.omega[i] = omega;
+    }
+
+    /// Move particle `i` to `position`, m, between steps. The next step's first half
+    /// kick still uses the forces of the old position, and its skin check (every
+    /// particle's move since the neighbour list was built) rebuilds the list if needed.
+    pub fn set_position(&mut self, i: usize, position: Vec3) {
+        self.state.particles.position[i] = position;
+    }
+
     /// A run at t = 0 of `model` with `particles`: builds the neighbour list and the
     /// forces at t = 0 and opens the energy book. The run has no time step until
     /// `set_time_step` gives it one. Fails when a contact at t = 0 is already

@@ -280,7 +280,7 @@ fn sliding() -> Trial {
 fn model_of(t: &Trial) -> Result<&'static str> {
     let s = scene::parse(&t.scene(json!({"fixed": 1e-15}), t.radius).to_string())?;
     let sim = scene::build(&s)?.sim;
-    Ok(for_law(&sim.model.law).map_or("none", |m| m.law))
+    Ok(for_law(&sim.model().law).map_or("none", |m| m.law))
 }
 
 pub fn run(_ctx: &CaseContext) -> Result<Vec<Measured>> {
@@ -353,10 +353,10 @@ fn sliding_impulse_error(accuracy: f64) -> Result<f64> {
         s["particles"][0]["velocity"] = json!(SLIDING);
         s["rotation"] = json!({});
         let mut sim = scene::build(&scene::parse(&s.to_string())?)?.sim;
-        let v0 = sim.state.particles.velocity[0];
+        let v0 = sim.state().particles.velocity[0];
         plane_collision(&mut sim, 0, Vec3::zeros(), Vec3::z(), 10_000_000)?;
         let limit = FRICTION * 2.0 * -v0.z;
-        let dv = v0.x - sim.state.particles.velocity[0].x;
+        let dv = v0.x - sim.state().particles.velocity[0].x;
         worst = worst.max(((dv - limit) / limit).abs());
     }
     Ok(worst)

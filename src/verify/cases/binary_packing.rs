@@ -44,7 +44,7 @@ use crate::verify::{CaseContext, Measured};
 use std::fmt::Write as _;
 use std::time::Instant;
 
-/// N_s/N_b of the sweep (the list; Zhong's Fig 4 spans 10 to 500).
+/// N_s/N_b of the sweep (Zhong's Fig 4 spans 10 to 500).
 const RATIOS: [usize; 7] = [0, 10, 50, 100, 200, 300, 500];
 /// Smallest side of the container, in large diameters (see the module comment).
 const MIN_SIDE_DIAMETERS: f64 = 2.5;

@@ -30,7 +30,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let built = scene::build(&scene)?;
     let mut sim = built.sim;
     sim.run_with(built.steps, |_| {})?;
-    let p = &sim.state.particles;
+    let p = &sim.state().particles;
     let light = 0; // material index of "light" in the scene
     let is_light: Vec<bool> = p.material.iter().map(|&m| m == light).collect();
     let d = 2.0 * p.radius[0];
@@ -60,7 +60,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let top = (0..p.len())
         .map(|i| p.position[i].z + p.radius[i])
         .fold(0.0, f64::max);
-    let (lo, len) = sim.model.detection.space.periodic[0].expect("periodic x");
+    let (lo, len) = sim.model().detection.space.periodic[0].expect("periodic x");
     let bounds = [
         crate::particles::Vec3::new(lo, lo, 0.0),
         crate::particles::Vec3::new(lo + len, lo + len, top),

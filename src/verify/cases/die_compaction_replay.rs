@@ -301,7 +301,7 @@ fn recorded_runs(
         let stroke = stroke_of(&mine);
         recorded_deck_is_current(&decks.join(format!("seed{seed}")), &sha, &stroke)?;
         let mut scene = base.clone();
-        scene.seed = seed;
+        scene.scene.seed = seed;
         let theirs: Vec<ReplayRecord> = mine
             .iter()
             .map(|r| ReplayRecord {

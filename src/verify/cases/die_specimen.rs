@@ -70,13 +70,13 @@ mod tests {
         // The LAMMPS scene presses with "die_curvature": "mean", the others flat.
         assert_eq!(nial, lammps);
         let mut other = scene("lammps_die_compaction_small");
-        other.seed = 2;
+        other.scene.seed = 2;
         assert_ne!(fill_key(&other).unwrap(), lammps);
         let mut other = scene("lammps_die_compaction_small");
         other.die_compaction.fill.gravity_scale *= 10.0;
         assert_ne!(fill_key(&other).unwrap(), lammps);
         let mut other = scene("lammps_die_compaction_small");
-        other.rotation = None;
+        other.scene.rotation = None;
         assert_ne!(fill_key(&other).unwrap(), lammps);
     }
 }

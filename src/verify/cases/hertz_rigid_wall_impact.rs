@@ -28,12 +28,12 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     }
     let e_star = e / (1.0 - nu * nu);
     let sim = scene::build(&s)?.sim;
-    let p = &sim.state.particles;
+    let p = &sim.state().particles;
     let (m, r) = (p.mass[0], p.radius[0]);
     let mixed = sim
-        .model
+        .model()
         .pair_table
-        .get(p.material[0], sim.model.walls[0].material)
+        .get(p.material[0], sim.model().walls[0].material)
         .effective_modulus
         .ok_or_else(|| TampError::Other("no E* for the sphere and the rigid wall".into()))?;
     let normal = Vec3::new(0.0, 0.0, 1.0);

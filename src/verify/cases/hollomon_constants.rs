@@ -31,7 +31,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
             }
         }
         let sim = scene::build(&s)?.sim;
-        let strength = sim.model.materials[0]
+        let strength = sim.model().materials[0]
             .hollomon
             .map_or(f64::NAN, |h| h.strength);
         out.push(Measured::new(name, strength, reference));

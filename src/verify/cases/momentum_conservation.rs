@@ -14,7 +14,7 @@ use crate::verify::{CaseContext, Measured};
 pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let scene = ctx.scene()?;
     let built = scene::build(&scene)?;
-    let p = &built.sim.state.particles;
+    let p = &built.sim.state().particles;
     let (mass, inertia) = (p.mass.clone(), p.inertia.clone());
     let (first, last) = ctx.first_and_last("cloud", &scene)?;
     let (first, last) = (&first, &last);

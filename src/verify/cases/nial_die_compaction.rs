@@ -108,16 +108,16 @@ fn full_models() -> Vec<Model> {
 /// middle of the 0.5–5 Olsson & Larsson suggest, since §5 does not state it.
 fn with_model(scene: &DieCompactionFile, model: &Model) -> Result<DieCompactionFile> {
     let mut s = scene.clone();
-    let tangential = s.contact.tangential.as_mut().ok_or_else(|| {
+    let tangential = s.scene.contact.tangential.as_mut().ok_or_else(|| {
         TampError::Other("the NiAl scene must have a tangential law (wall friction)".into())
     })?;
     tangential.friction = model.friction;
     if let Some((m, sigma0)) = model.storakers {
-        s.contact.normal = NormalLaw::Storakers(Storakers {
+        s.scene.contact.normal = NormalLaw::Storakers(Storakers {
             min_with_hertz: false,
         });
         tangential.law = TangentialLaw::Storakers(storakers::Storakers { beta: 1.0 });
-        for material in &mut s.materials {
+        for material in &mut s.scene.materials {
             material.hollomon = Some(HollomonSpec {
                 exponent: m,
                 strength: Some(sigma0),

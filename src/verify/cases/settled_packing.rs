@@ -57,29 +57,29 @@ fn tamp_measures(base: &scene::Scene, seed: u64) -> Result<[f64; 3]> {
     let built = scene::build(&scene)?;
     let mut sim = built.sim;
     let floor = sim
-        .model
+        .model()
         .walls
         .iter()
         .position(|w| w.name == "floor")
         .ok_or_else(|| TampError::Other("the scene has no wall named 'floor'".into()))?;
     let mut floor_force = Vec::new();
     sim.run_with(built.steps, |s| {
-        if s.state.step >= FORCE_FROM && s.state.step % FORCE_EVERY == 0 {
+        if s.state().step >= FORCE_FROM && s.state().step % FORCE_EVERY == 0 {
             // wall_force is the force on the wall; the floor pushes the bed the other way.
-            floor_force.push(-s.state.wall_force[floor].z);
+            floor_force.push(-s.state().wall_force[floor].z);
         }
     })?;
-    let p = &sim.state.particles;
+    let p = &sim.state().particles;
     let q = state_measures(
         &p.position,
         &p.radius,
         &p.velocity,
-        &sim.model.detection.space,
+        &sim.model().detection.space,
         true,
         Some(0.0),
     )?;
     let get = |name: &str| q.iter().find(|(n, _)| n == name).map(|(_, v)| *v);
-    let g = sim.model.gravity.map_or(0.0, |g| g.norm());
+    let g = sim.model().gravity.map_or(0.0, |g| g.norm());
     let weight: f64 = p.mass.iter().sum::<f64>() * g;
     Ok([
         get("packing_fraction").expect("a laterally periodic bed"),

@@ -42,7 +42,7 @@ impl Pair {
     /// The pair of `scene`, which must have at least two particles.
     pub fn of(scene: &Scene) -> Result<Pair> {
         let sim = scene::build(scene)?.sim;
-        let p = &sim.state.particles;
+        let p = &sim.state().particles;
         if p.len() < 2 {
             return Err(TampError::Other(
                 "a two-body case needs two particles".into(),
@@ -52,7 +52,7 @@ impl Pair {
             m_eff: effective_mass(p.mass[0], p.mass[1]),
             r_eff: effective_radius(p.radius[0], p.radius[1]),
             e_eff: sim
-                .model
+                .model()
                 .pair_table
                 .get(p.material[0], p.material[1])
                 .effective_modulus,

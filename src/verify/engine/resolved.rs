@@ -52,13 +52,13 @@ pub fn resolve(scene: &Scene, spec: RecordSpec) -> Result<Resolved, Refusal> {
     let original = serde_json::to_vec(scene).expect("a scene serialises");
     let built = scene::build(scene)?;
     let sim = &built.sim;
-    if sim.state.still_to_pour() > 0 {
+    if sim.state().still_to_pour() > 0 {
         return refuse(
             "insert[].schedule",
             "particles poured during the run are not in the initial list",
         );
     }
-    let p = &sim.state.particles;
+    let p = &sim.state().particles;
     let mut order: Vec<usize> = (0..p.len()).collect();
     order.sort_by_key(|&i| p.id[i]);
     let particles = order
@@ -69,10 +69,10 @@ pub fn resolve(scene: &Scene, spec: RecordSpec) -> Result<Resolved, Refusal> {
                 position: p.position[i].into(),
                 // The final radius: a growth stage starts from its fraction of it.
                 radius: match scene.growth {
-                    Some(_) => sim.state.target_radius[i],
+                    Some(_) => sim.state().target_radius[i],
                     None => p.radius[i],
                 },
-                material: sim.model.materials[p.material[i]].name.clone(),
+                material: sim.model().materials[p.material[i]].name.clone(),
                 velocity: (!prescribed).then(|| p.velocity[i].into()),
                 omega: scene.rotation.is_some().then(|| p.omega[i].into()),
                 prescribed_velocity: prescribed.then(|| p.velocity[i].into()),
@@ -158,8 +158,8 @@ mod tests {
             a.step().unwrap();
             b.step().unwrap();
         }
-        assert_eq!(a.state.particles.position, b.state.particles.position);
-        assert_eq!(a.state.particles.velocity, b.state.particles.velocity);
+        assert_eq!(a.state().particles.position, b.state().particles.position);
+        assert_eq!(a.state().particles.velocity, b.state().particles.velocity);
         let from = again.resolved_from.expect("provenance kept");
         assert_eq!(from.name, "inserted");
         assert_eq!(from.sha256.len(), 64);
@@ -186,9 +186,9 @@ mod tests {
             b.step().unwrap();
         }
         assert!(!a.is_growing(), "the run must outlast the growth stage");
-        assert_eq!(a.state.particles.radius, b.state.particles.radius);
-        assert_eq!(a.state.particles.position, b.state.particles.position);
-        assert_eq!(a.state.particles.velocity, b.state.particles.velocity);
+        assert_eq!(a.state().particles.radius, b.state().particles.radius);
+        assert_eq!(a.state().particles.position, b.state().particles.position);
+        assert_eq!(a.state().particles.velocity, b.state().particles.velocity);
     }
 
     #[test]

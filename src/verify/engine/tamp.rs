@@ -13,9 +13,9 @@ pub fn record(scene: &Scene, spec: RecordSpec) -> Result<Recording> {
     let built = scene::build(scene)?;
     let mut sim = built.sim;
     let mut frames = vec![frame(&sim, spec)];
-    while sim.state.step < built.steps {
+    while sim.state().step < built.steps {
         sim.step()?;
-        if spec.records(sim.state.step, built.steps) {
+        if spec.records(sim.state().step, built.steps) {
             frames.push(frame(&sim, spec));
         }
     }
@@ -29,12 +29,12 @@ pub fn record(scene: &Scene, spec: RecordSpec) -> Result<Recording> {
 /// The particles now, in id order, and the walls when `spec` asks for them.
 fn frame(sim: &Simulation, spec: RecordSpec) -> Frame {
     let forces = spec.forces;
-    let p = &sim.state.particles;
+    let p = &sim.state().particles;
     let mut order: Vec<usize> = (0..p.len()).collect();
     order.sort_by_key(|&i| p.id[i]);
     Frame {
-        step: sim.state.step,
-        time: sim.state.time,
+        step: sim.state().step,
+        time: sim.state().time,
         bodies: order
             .into_iter()
             .map(|i| Body {
@@ -46,7 +46,7 @@ fn frame(sim: &Simulation, spec: RecordSpec) -> Frame {
             })
             .collect(),
         walls: match spec.walls {
-            true => (sim.state.walls.iter().zip(&sim.state.wall_force))
+            true => (sim.state().walls.iter().zip(&sim.state().wall_force))
                 .map(|(pose, force)| WallState {
                     displacement: pose.displacement,
                     force: *force,
