@@ -70,6 +70,40 @@ pub fn scene_refusals(scene: &Scene, peer: Peer) -> Vec<(String, String)> {
     out
 }
 
+/// The scene built, unless the peer refuses any of its fields (`refusals`, all of
+/// them listed at once, exit 2); `peer` names it in the messages.
+pub fn build_unless_refused(
+    scene: &Scene,
+    refusals: Vec<(String, String)>,
+    peer: &str,
+) -> Result<crate::scene::build::BuiltScene> {
+    if !refusals.is_empty() {
+        return Err(crate::error::cannot_export(peer, refusals));
+    }
+    crate::scene::build(scene)
+}
+
+/// The simulation box: each periodic axis exactly (`p`), every other one from `lo` to
+/// `hi` widened by `margin` on both sides, shrink-wrapping with that minimum (`m`).
+/// Returns the `boundary` flags and the bounds.
+pub fn box_axes(
+    periodic: [Option<[f64; 2]>; 3],
+    (lo, hi): ([f64; 3], [f64; 3]),
+    margin: f64,
+) -> (Vec<&'static str>, [[f64; 2]; 3]) {
+    let mut boundary = Vec::new();
+    let mut bounds = [[0.0; 2]; 3];
+    for a in 0..3 {
+        let (l, h, flag) = match periodic[a] {
+            Some([l, h]) => (l, h, "p"),
+            None => (lo[a] - margin, hi[a] + margin, "m"),
+        };
+        boundary.push(flag);
+        bounds[a] = [l, h];
+    }
+    (boundary, bounds)
+}
+
 /// The deck's first lines: which peer and tamp wrote it, from which scene.
 pub fn head(deck: &mut String, peer_version: &str, scene: &Scene, sha: &str) {
     let _ = writeln!(

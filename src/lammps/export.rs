@@ -47,11 +47,11 @@ use crate::contact::tangential::lammps_linear_history::LammpsHistory;
 use crate::error::{Result, TampError};
 use crate::particles::Vec3;
 use crate::peer_deck::{
-    Exported, LAMMPS, frame_every, head, integrate_and_run, neighbor_skin, scene_refusals,
-    timestep_and_gravity,
+    Exported, LAMMPS, box_axes, build_unless_refused, frame_every, head, integrate_and_run,
+    neighbor_skin, scene_refusals, timestep_and_gravity,
 };
+use crate::scene::Scene;
 use crate::scene::walls::{Curvature, MotionSpec, ShapeSpec, WallSpec};
-use crate::scene::{self, Scene};
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -710,13 +710,9 @@ pub fn export(
     out_dir: &Path,
     dump_every: Option<u64>,
 ) -> Result<Exported> {
-    let list = refusals(scene);
-    if !list.is_empty() {
-        return Err(refuse_all(list));
-    }
+    let built = build_unless_refused(scene, refusals(scene), "LAMMPS")?;
     let style = pair_style(scene).map_err(refuse_all)?;
     let model = style.model();
-    let built = scene::build(scene)?;
     let sim = built.sim;
     let p = &sim.state().particles;
     // A particle spanning a box touches both faces of an axis in tamp, only the nearer
@@ -815,16 +811,7 @@ pub fn export(
     let span = (0..3).map(|a| hi[a] - lo[a]).fold(0.0, f64::max);
     let max_r = p.largest_radius();
     let margin = 0.05 * span + 2.0 * max_r;
-    let mut boundary = Vec::new();
-    let mut bounds = [[0.0; 2]; 3];
-    for a in 0..3 {
-        let (l, h, flag) = match periodic[a] {
-            Some([l, h]) => (l, h, "p"),
-            None => (lo[a] - margin, hi[a] + margin, "m"),
-        };
-        boundary.push(flag);
-        bounds[a] = [l, h];
-    }
+    let (boundary, bounds) = box_axes(periodic, (lo, hi), margin);
     let data = crate::output::data_file::particles_data(
         &sim,
         "LAMMPS",
@@ -975,7 +962,7 @@ mod tests {
     use super::*;
 
     fn two_spheres(contact: &str, extra: &str) -> Scene {
-        scene::parse(&format!(
+        crate::scene::parse(&format!(
             r#"{{"name": "t", "materials": [{{"name": "steel", "density": 7800, "youngs_modulus": 2e11, "poisson_ratio": 0.3}}],
               "contact": {contact},
               "particles": [{{"position": [-0.001001, 0, 0], "radius": 0.001, "material": "steel", "velocity": [0.5, 0, 0]}},
@@ -1182,7 +1169,7 @@ mod tests {
 
     #[test]
     fn a_wall_of_another_elastic_material_than_the_particles_is_refused() {
-        let s = scene::parse(
+        let s = crate::scene::parse(
             r#"{"name": "t", "materials": [{"name": "steel", "density": 7800, "youngs_modulus": 2e11, "poisson_ratio": 0.3},
                                           {"name": "glass", "density": 2500, "youngs_modulus": 7e10, "poisson_ratio": 0.2}],
               "contact": {"normal": {"law": "hertz"}},

@@ -38,11 +38,11 @@ use crate::error::{Result, TampError};
 use crate::material::{effective_mass, effective_modulus, effective_radius};
 use crate::particles::Vec3;
 use crate::peer_deck::{
-    Exported, LIGGGHTS, frame_every, head, integrate_and_run, neighbor_skin, scene_refusals,
-    timestep_and_gravity,
+    Exported, LIGGGHTS, box_axes, build_unless_refused, frame_every, head, integrate_and_run,
+    neighbor_skin, scene_refusals, timestep_and_gravity,
 };
+use crate::scene::Scene;
 use crate::scene::walls::{Curvature, MotionSpec, ShapeSpec};
-use crate::scene::{self, Scene};
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -557,11 +557,7 @@ pub fn export(
     out_dir: &Path,
     dump_every: Option<u64>,
 ) -> Result<Exported> {
-    let list = refusals(scene);
-    if !list.is_empty() {
-        return Err(refuse_all(list));
-    }
-    let built = scene::build(scene)?;
+    let built = build_unless_refused(scene, refusals(scene), "LIGGGHTS 3.8")?;
     let sim = built.sim;
     let model = contact_model(scene, &sim)?;
     crate::output::create_dir(out_dir)?;
@@ -574,16 +570,7 @@ pub fn export(
     let max_r = p.largest_radius();
     let margin = (hi - lo).max() * 0.05 + 2.0 * max_r;
     let periodic = scene.periodic.clone().unwrap_or_default().axes();
-    let mut boundary = Vec::new();
-    let mut bounds = [[0.0; 2]; 3];
-    for a in 0..3 {
-        let (l, h, flag) = match periodic[a] {
-            Some([l, h]) => (l, h, "p"),
-            None => (lo[a] - margin, hi[a] + margin, "m"),
-        };
-        boundary.push(flag);
-        bounds[a] = [l, h];
-    }
+    let (boundary, bounds) = box_axes(periodic, (lo.into(), hi.into()), margin);
     let data = particles_data(&sim, sha, &bounds);
     crate::output::write_atomic(&out_dir.join("particles.data"), data.as_bytes())?;
     files.push("particles.data".to_string());
