@@ -23,10 +23,12 @@
 //!    - its unit tests.
 //! 2. Its registry entries in `normal/mod.rs` (the `NormalLaw` variant and the
 //!    `each_normal!` arm, exhaustive matches: the compiler lists what is missing) and
-//!    one line in `registry::normal_examples`. The scene schema, validation, the force
-//!    loop, the stored energy, the critical time step, checkpoints, tests/contact_laws.rs,
-//!    tests/properties.rs, the contact-law bench and `tamp study stable-alpha` take
-//!    the law from there.
+//!    one line in `registry::normal_examples`. A tangential law also joins the family
+//!    of its state type in `tangential/families.rs` (the `family!` list and its
+//!    `each_family!` arm), or a new family if its state is of a new shape. The scene
+//!    schema, validation, the force loop, the stored energy, the critical time step,
+//!    checkpoints, tests/contact_laws.rs, tests/properties.rs, the contact-law bench
+//!    and `tamp study stable-alpha` take the law from there.
 //! 3. A page in docs/models/ and a verification case (`verification/`,
 //!    docs/verification-notes.md) against a closed form or a peer code.
 
