@@ -104,17 +104,24 @@ pub fn box_axes(
     (boundary, bounds)
 }
 
-/// The deck's first lines: which peer and tamp wrote it, from which scene.
-pub fn head(deck: &mut String, peer_version: &str, scene: &Scene, sha: &str) {
+/// The deck's first lines: which peer and tamp wrote it, from which scene (and
+/// `more` after the seed, e.g. the step), and the command that `run`s it.
+pub fn head(
+    deck: &mut String,
+    peer_version: &str,
+    (scene, sha): (&Scene, &str),
+    more: &str,
+    run: &str,
+) {
     let _ = writeln!(
         deck,
         "# {peer_version} deck exported by tamp {} (commit {})",
         crate::VERSION,
         crate::GIT_COMMIT
     );
-    let _ = write!(
+    let _ = writeln!(
         deck,
-        "# scene '{}', sha256 {sha}, seed {}",
+        "# scene '{}', sha256 {sha}, seed {}{more}\n# run: {run}",
         scene.name.replace(['\n', '\r'], " "),
         scene.seed,
     );

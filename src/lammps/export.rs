@@ -826,11 +826,12 @@ pub fn export(
     let every = dump_every.unwrap_or_else(|| frame_every(scene, built.steps));
 
     let mut deck = String::new();
-    head(&mut deck, "LAMMPS (22 Jul 2025)", scene, sha);
-    let _ = writeln!(
-        deck,
-        ", dt {}\n# run: lmp -in in.tamp   (or mpiexec -n N lmp -in in.tamp)",
-        g(sim.dt())
+    head(
+        &mut deck,
+        "LAMMPS (22 Jul 2025)",
+        (scene, sha),
+        &format!(", dt {}", g(sim.dt())),
+        "lmp -in in.tamp   (or mpiexec -n N lmp -in in.tamp)",
     );
     deck.push_str("units        si\natom_style   sphere\natom_modify  map array\n");
     let _ = writeln!(deck, "boundary     {}", boundary.join(" "));

@@ -511,8 +511,13 @@ pub(super) fn deck_head(
         .collect();
     let skin = neighbor_skin(scene, &sim.state().particles.radius);
     let mut deck = String::new();
-    head(&mut deck, "LIGGGHTS-PUBLIC 3.8", scene, sha);
-    deck.push_str("\n# run: liggghts -in in.tamp\n");
+    head(
+        &mut deck,
+        "LIGGGHTS-PUBLIC 3.8",
+        (scene, sha),
+        "",
+        "liggghts -in in.tamp",
+    );
     deck.push_str("atom_style   granular\natom_modify  map array\n");
     let _ = writeln!(deck, "boundary     {}", boundary.join(" "));
     deck.push_str("newton       off\ncommunicate  single vel yes\nunits        si\n");

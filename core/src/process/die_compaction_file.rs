@@ -58,8 +58,8 @@ pub struct DieCompactionFile {
 
 /// The `die_compaction` member, the file's other members passed over.
 #[derive(Deserialize)]
-struct Process<T> {
-    die_compaction: T,
+struct Process {
+    die_compaction: DieCompactionSpec,
 }
 
 /// The text with the `die_compaction` member (key, value and one separating comma)
@@ -155,7 +155,7 @@ impl DieCompactionFile {
         // passes over the other members without following their paths).
         let _: serde_json::Value = crate::scene::parse_json(text)?;
         let scene: Scene = crate::scene::parse_json(&without_process(text)?)?;
-        let process: Process<DieCompactionSpec> = crate::scene::parse_json(text)?;
+        let process: Process = crate::scene::parse_json(text)?;
         let file = DieCompactionFile {
             scene,
             die_compaction: process.die_compaction,

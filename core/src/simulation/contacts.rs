@@ -58,7 +58,7 @@ impl Simulation {
     pub(super) fn touching_walls(&self, beyond: f64) -> Vec<(usize, usize, u32, f64)> {
         let (walls, poses) = (&self.model.walls[..], &self.state.walls[..]);
         let mut out = Vec::new();
-        let all: Result<(), ()> = self.narrow_phase().wall_contacts(
+        let Ok(()): Result<(), std::convert::Infallible> = self.narrow_phase().wall_contacts(
             walls,
             poses,
             beyond,
@@ -68,7 +68,6 @@ impl Simulation {
                 Ok(())
             },
         );
-        all.expect("the walk's visitor never fails");
         out
     }
 

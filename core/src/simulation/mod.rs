@@ -96,13 +96,6 @@ impl Simulation {
         self.state.particles.omega[i] = omega;
     }
 
-    /// Move particle `i` to `position`, m, between steps. The next step's first half
-    /// kick still uses the forces of the old position, and its skin check (every
-    /// particle's move since the neighbour list was built) rebuilds the list if needed.
-    pub fn set_position(&mut self, i: usize, position: Vec3) {
-        self.state.particles.position[i] = position;
-    }
-
     /// A run at t = 0 of `model` with `particles`: builds the neighbour list and the
     /// forces at t = 0 and opens the energy book. The run has no time step until
     /// `set_time_step` gives it one. Fails when a contact at t = 0 is already

@@ -75,7 +75,7 @@ impl Simulation {
         }
         let (walls, poses) = (&self.model.walls[..], &self.state.walls[..]);
         let mut found = Vec::new();
-        let all: Result<(), ()> = narrow.wall_contacts(
+        let Ok(()): Result<(), std::convert::Infallible> = narrow.wall_contacts(
             walls,
             poses,
             law_reach,
@@ -109,7 +109,6 @@ impl Simulation {
                 Ok(())
             },
         );
-        all.expect("the walk's visitor never fails");
         out
     }
 }

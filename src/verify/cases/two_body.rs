@@ -173,12 +173,18 @@ pub struct HertzImpact {
 }
 
 /// `HertzImpact` for each restitution of the case file, the run labelled
-/// `collision_e<e>`.
+/// `collision_e<e>`; the scene must use the Hertz law.
 pub fn each_hertz_impact(
     ctx: &CaseContext,
     base: &Scene,
     unit: fn(Dashpot, f64) -> Option<Unit>,
 ) -> Result<Vec<HertzImpact>> {
+    if !matches!(
+        base.contact.normal,
+        crate::contact::normal::NormalLaw::Hertz(_)
+    ) {
+        return Err(TampError::Other("the scene must use hertz".into()));
+    }
     let mut out = Vec::new();
     for (e, s) in each_restitution(ctx, base)? {
         let pair = Pair::of(&s)?;
