@@ -500,6 +500,12 @@ fn run_document(
                 s.last.density_rve,
                 out.display()
             );
+            if let Some(cycle) = &s.cycle {
+                for (name, value) in cycle.summary.quantities() {
+                    println!("  {name} = {value:e}");
+                }
+                write_cycle_plot(&cycle.records, file.die_compaction.die_diameter, out)?;
+            }
         }
         (Document::Scene(scene), sha) => {
             let s = tamp::run::run_scene(&scene, &sha, scene_path, out, quiet, resume)?;
@@ -513,6 +519,54 @@ fn run_document(
         }
     }
     Ok(0)
+}
+
+/// `cycle.svg` of a press cycle: the upper punch's pressure against the density
+/// through pressing and unloading, and the ejection force against the lower punch's rise.
+fn write_cycle_plot(
+    records: &[tamp::process::press_cycle::CycleRecord],
+    die_diameter: f64,
+    out: &std::path::Path,
+) -> tamp::error::Result<()> {
+    use tamp::plot::{Panel, Series, write_svg};
+    use tamp::process::press_cycle::Stage;
+    let area = std::f64::consts::PI * 0.25 * die_diameter * die_diameter;
+    let stage = |s: Stage, f: &dyn Fn(&tamp::process::press_cycle::CycleRecord) -> (f64, f64)| {
+        records
+            .iter()
+            .filter(|r| r.stage == s)
+            .map(f)
+            .collect::<Vec<_>>()
+    };
+    let pressure =
+        |r: &tamp::process::press_cycle::CycleRecord| (r.density_specimen, r.upper_punch / 1e6);
+    let compaction = [
+        Series::line("pressing", stage(Stage::Press, &pressure)),
+        Series::line("unloading", stage(Stage::Unload, &pressure)),
+    ];
+    let ejection = [Series::line(
+        "lower punch",
+        stage(Stage::Eject, &|r| (r.ejection * 1e6, r.lower_punch * area)),
+    )];
+    let mut panels = vec![Panel {
+        title: "Pressure and density through the cycle",
+        x_label: "specimen density",
+        y_label: "upper punch pressure (MPa)",
+        log_x: false,
+        log_y: false,
+        series: &compaction,
+    }];
+    if !ejection[0].points.is_empty() {
+        panels.push(Panel {
+            title: "Ejection",
+            x_label: "lower punch rise (um)",
+            y_label: "ejection force (N)",
+            log_x: false,
+            log_y: false,
+            series: &ejection,
+        });
+    }
+    write_svg(&out.join("cycle.svg"), &panels)
 }
 
 /// What `export-lammps` and `export-liggghts` print of a deck written to `out`: the

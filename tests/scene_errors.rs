@@ -956,6 +956,44 @@ fn a_bad_die_curvature_is_named() {
     );
 }
 
+/// The press cycle's stages come in order (unload, eject, relax), each naming what it
+/// needs, and every number is checked at its path.
+#[test]
+fn press_cycle_stages_are_checked_at_their_paths() {
+    let base: Value =
+        serde_json::from_str(include_str!("../verification/die_press_cycle.scene.json")).unwrap();
+    let mut die = base.clone();
+    die["die_compaction"]
+        .as_object_mut()
+        .unwrap()
+        .remove("unload");
+    die["die_compaction"]["relax"] = json!({"duration": 1e-6});
+    die["die_compaction"]["die_bands"] = json!(0);
+    expect_input_error(
+        die,
+        &[
+            "die_compaction.eject: needs die_compaction.unload: the upper punch is withdrawn before the compact is pushed out",
+            "die_compaction.die_bands: must be >= 1, got 0",
+            "die_compaction.die_bands: is measured in a press cycle only",
+        ],
+    );
+    let mut die = base.clone();
+    die["die_compaction"]["unload"]["speed"] = json!(-0.05);
+    die["die_compaction"]["eject"]["records"] = json!(0);
+    die["die_compaction"]["eject"]["ramp_time"] = json!(-1.0);
+    expect_input_error(
+        die,
+        &[
+            "die_compaction.unload.speed: must be > 0 and finite, got -5e-2",
+            "die_compaction.eject.records: must be >= 1, got 0",
+            "die_compaction.eject.ramp_time",
+        ],
+    );
+    let mut die = base;
+    die["die_compaction"]["unload"]["rate"] = json!(1.0);
+    expect_input_error(die, &["die_compaction.unload", "unknown field `rate`"]);
+}
+
 #[test]
 fn bad_contact_outputs_are_named() {
     for (field, value, rule) in [

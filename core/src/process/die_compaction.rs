@@ -34,6 +34,7 @@
 
 use super::die_compaction_file::{DieCompactionFile, DieCompactionSpec, FillMethod};
 use super::funnel::Funnel;
+use super::press_cycle::{DieWall, DieWalls};
 use crate::error::{Result, TampError};
 use crate::generate::rsi::{InsertionBox, Placed};
 use crate::measure::{Region, packing::packing_fraction};
@@ -119,6 +120,10 @@ pub struct Pressing {
     /// Particles whose centre left the die (radially, below the floor or above the
     /// punch face) at some step of the pressing.
     pub escaped: Vec<usize>,
+    /// With a press cycle (`die_compaction.unload`): the die wall's radial force at
+    /// each record, in the records' order.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub die_wall: Vec<DieWall>,
 }
 
 /// Where a pressing is, for a restart checkpoint: the records so far and the
@@ -233,7 +238,8 @@ fn carried(sim: &Simulation, material: &str) -> Vec<ParticleSpec> {
             radius: p.radius[i],
             material: material.to_string(),
             velocity: Some(p.velocity[i].into()),
-            omega: Some(p.omega[i].into()),
+            // A scene without rotation carries no spins, which it would refuse.
+            omega: sim.model.rotation.then(|| p.omega[i].into()),
             prescribed_velocity: None,
             prescribed_velocity_changes: Vec::new(),
         })
@@ -588,7 +594,11 @@ pub fn press_scene(file: &DieCompactionFile, specimen: &Specimen) -> Result<Scen
     // scenes that differ only in it (and the press law) share one specimen
     // (verify/cases/die_specimen.rs) and the peer replays, which start from tamp's
     // flattened specimen, compare the pressing alone.
-    let mut die = die_wall(dc, 2.0 * specimen.h0);
+    // A die pressed through a cycle is filled to its brim: its mouth at H₀ is where the
+    // ejected compact leaves it. The pressing alone keeps the die twice as tall, which
+    // no particle below the punch reaches either.
+    let mouth = if dc.unload.is_some() { 1.0 } else { 2.0 };
+    let mut die = die_wall(dc, mouth * specimen.h0);
     if let ShapeSpec::Cylinder { curvature, .. } = &mut die.shape {
         *curvature = dc.die_curvature;
     }
@@ -633,6 +643,21 @@ pub fn press(
     every: u64,
     checkpoint: &mut dyn FnMut(&PressState) -> Result<()>,
 ) -> Result<Pressing> {
+    press_to_peak(file, specimen, quiet, resume, every, checkpoint).map(|(pressing, _)| pressing)
+}
+
+/// `press`, and the run at the peak, where a press cycle goes on
+/// (`press_cycle::run`). With a cycle, every record also measures the die wall's
+/// radial force, and a checkpoint is written at the peak, so that an interrupted
+/// cycle starts again from there.
+pub fn press_to_peak(
+    file: &DieCompactionFile,
+    specimen: &Specimen,
+    quiet: bool,
+    resume: Option<PressState>,
+    every: u64,
+    checkpoint: &mut dyn FnMut(&PressState) -> Result<()>,
+) -> Result<(Pressing, Simulation)> {
     let (scene, dc) = (&file.shared_scene(), &file.die_compaction);
     let stage = press_scene(file, specimen)?;
     let built = scene::build(&stage)?;
@@ -670,6 +695,18 @@ pub fn press(
             dt: sim.state.dt,
             step: sim.state.step,
         });
+        if let Some(bands) = dc.die_bands() {
+            let floor_level = sim.state.walls[floor].displacement.z;
+            let walls = DieWalls { die, floor };
+            out.die_wall.push(DieWall::of(
+                sim,
+                &walls,
+                die_radius,
+                floor_level,
+                height,
+                bands,
+            ));
+        }
         Ok(())
     };
     let mut out = match resume {
@@ -682,6 +719,7 @@ pub fn press(
                 records: Vec::with_capacity(records + 1),
                 steps: 0,
                 escaped: Vec::new(),
+                die_wall: Vec::new(),
             };
             record(&sim, &mut out)?;
             out
@@ -749,5 +787,11 @@ pub fn press(
     }
     progress.finish();
     out.steps = sim.state.step;
-    Ok(out)
+    if every > 0 && dc.unload.is_some() {
+        checkpoint(&PressState {
+            pressing: out.clone(),
+            sim: sim.state.clone(),
+        })?;
+    }
+    Ok((out, sim))
 }

@@ -33,6 +33,7 @@
 //! `process::die_compaction`).
 
 pub use super::funnel::{FillMethod, FunnelSpec};
+pub use super::press_cycle::{EjectSpec, RelaxSpec, UnloadSpec};
 use crate::error::{Errors, Result};
 use crate::scene::contact::{self, LawContext};
 use crate::scene::schema::{ContactSpec, RadiusSpec, Scene};
@@ -285,6 +286,27 @@ pub struct DieCompactionSpec {
     /// serialised form, so the scenes written before it keep their form.
     #[serde(default, skip_serializing_if = "is_flat")]
     pub die_curvature: Curvature,
+    /// The press cycle after the peak (`process::press_cycle`): the upper punch
+    /// withdrawn, the compact ejected, the free compact left to relax.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub unload: Option<UnloadSpec>,
+    /// The lower punch pushing the compact out (needs `unload`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub eject: Option<EjectSpec>,
+    /// The ejected compact left standing (needs `eject`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub relax: Option<RelaxSpec>,
+    /// Height bands of the compact over which a cycle's records give the die wall's
+    /// radial pressure (default 4).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub die_bands: Option<usize>,
+}
+
+impl DieCompactionSpec {
+    /// The bands a press cycle measures the die wall in; none without a cycle.
+    pub fn die_bands(&self) -> Option<usize> {
+        self.unload.as_ref().map(|_| self.die_bands.unwrap_or(4))
+    }
 }
 
 fn is_flat(c: &Curvature) -> bool {
@@ -470,6 +492,7 @@ impl DieCompactionSpec {
                 );
             }
         }
+        super::press_cycle::validate(self, e);
         if !(self.rve_diameter > 0.0 && self.rve_diameter < self.die_diameter) {
             e.push(
                 at("rve_diameter"),

@@ -1,7 +1,9 @@
 //! `tamp run` of a die-compaction scene: the three stages, then the records.
 //!
 //! Writes the layout of every `tamp run` (docs/compare.md), each file atomically:
-//! - `series.csv`: one row per record along the pressure ramp (`PressRecord`);
+//! - `series.csv`: one row per record along the pressure ramp (`PressRecord`), or, with
+//!   a press cycle, one per record of every stage (`press_cycle::series_csv`);
+//! - `cycle.svg`: with a press cycle, its curves (written by `tamp run` itself);
 //! - `quantities.csv`: the summary's numbers as `quantity,value` rows;
 //! - `press.scene.json`: the press stage as an ordinary scene (the flattened
 //!   specimen as explicit particles, the pressure-loaded punch), to rerun the
@@ -17,6 +19,7 @@
 //! flattening are not checkpointed inside: they are the short stages.
 
 use super::die_compaction::{self, PressRecord, PressState, Specimen};
+use super::press_cycle::{self, CycleRecord, CycleSummary};
 use crate::checkpoint::{self, Checkpoint};
 use crate::error::{Result, TampError};
 use crate::output::{self, Provenance};
@@ -47,6 +50,22 @@ pub struct CompactionSummary {
     pub press_steps: u64,
     /// The record at the full pressure.
     pub last: PressRecord,
+    /// The press cycle after the peak, when the file asks for one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cycle: Option<CycleOutcome>,
+}
+
+/// What the press cycle after the peak measured, in summary.json.
+#[derive(Debug, Serialize)]
+pub struct CycleOutcome {
+    /// Steps since the pressing began, at the cycle's last record.
+    pub steps: u64,
+    /// The cycle's measures (`press_cycle::CycleSummary`).
+    #[serde(flatten)]
+    pub summary: CycleSummary,
+    /// The records, which series.csv holds; not in summary.json.
+    #[serde(skip)]
+    pub records: Vec<CycleRecord>,
 }
 
 /// Run the die-compaction file `scene` (read from `scene_path`, whose bytes hash to
@@ -77,6 +96,7 @@ pub fn run_scene(
             "series.csv",
             "quantities.csv",
             "summary.json",
+            "cycle.svg",
         ],
         keep,
     )?;
@@ -114,34 +134,51 @@ pub fn run_scene(
     let mut write = |state: &PressState| {
         checkpoint::write_checkpoint(&checkpoint_path, &Checkpoint::new(sha, state))
     };
-    let pressing = die_compaction::press(file, &specimen, quiet, state, every, &mut write)
-        .map_err(|e| match e {
-            TampError::Interrupted {
-                signal,
-                step,
-                time,
-                next,
-            } if every > 0 => TampError::Interrupted {
-                signal,
-                step,
-                time,
-                next: format!(
-                    "{next}; go on with `tamp run {} --out {} --resume`",
-                    scene_path.display(),
-                    out_dir.display()
-                ),
-            },
-            other => other,
-        })?;
-    let mut csv = csv::Writer::from_writer(Vec::new());
-    for r in &pressing.records {
-        csv.serialize(r)
-            .map_err(|e| TampError::Other(format!("series.csv: {e}")))?;
-    }
-    let bytes = csv
-        .into_inner()
-        .map_err(|e| TampError::Other(format!("series.csv: {e}")))?;
-    output::write_atomic(&out_dir.join("series.csv"), &bytes)?;
+    let (pressing, sim) = die_compaction::press_to_peak(
+        file, &specimen, quiet, state, every, &mut write,
+    )
+    .map_err(|e| match e {
+        TampError::Interrupted {
+            signal,
+            step,
+            time,
+            next,
+        } if every > 0 => TampError::Interrupted {
+            signal,
+            step,
+            time,
+            next: format!(
+                "{next}; go on with `tamp run {} --out {} --resume`",
+                scene_path.display(),
+                out_dir.display()
+            ),
+        },
+        other => other,
+    })?;
+    let cycle = match file.die_compaction.unload {
+        Some(_) => Some(press_cycle::run(
+            file,
+            &specimen,
+            &pressing,
+            sim,
+            press_scene.time_step.fixed,
+            quiet,
+        )?),
+        None => None,
+    };
+    let series = match &cycle {
+        Some(cycle) => press_cycle::series_csv(&cycle.records).into_bytes(),
+        None => {
+            let mut csv = csv::Writer::from_writer(Vec::new());
+            for r in &pressing.records {
+                csv.serialize(r)
+                    .map_err(|e| TampError::Other(format!("series.csv: {e}")))?;
+            }
+            csv.into_inner()
+                .map_err(|e| TampError::Other(format!("series.csv: {e}")))?
+        }
+    };
+    output::write_atomic(&out_dir.join("series.csv"), &series)?;
     let last = pressing
         .records
         .last()
@@ -164,6 +201,11 @@ pub fn run_scene(
         fill_at_rest: specimen.fill_at_rest,
         press_steps: pressing.steps,
         last,
+        cycle: cycle.map(|c| CycleOutcome {
+            steps: c.records.last().map_or(pressing.steps, |r| r.step),
+            summary: c.summary,
+            records: c.records,
+        }),
     };
     let json = crate::output::json_bytes(&summary);
     output::write_atomic(&out_dir.join("summary.json"), &json)?;
@@ -198,6 +240,7 @@ impl CompactionSummary {
         ]
         .into_iter()
         .map(|(name, value)| (name.to_string(), value))
+        .chain(self.cycle.iter().flat_map(|c| c.summary.quantities()))
         .collect()
     }
 }

@@ -7,3 +7,4 @@ pub mod die_compaction_file;
 pub mod die_compaction_run;
 pub mod die_replay;
 pub mod funnel;
+pub mod press_cycle;

@@ -21,6 +21,7 @@
 //! and `pour` (particles growing or entering during a run), `contacts` (queries on the
 //! current contacts).
 
+use crate::boundary::BoundaryMotion;
 use crate::contact::record::ContactRecord;
 use crate::detect::NeighborList;
 use crate::error::{Result, TampError};
@@ -94,6 +95,23 @@ impl Simulation {
     /// Set particle `i`'s spin, rad/s, between steps.
     pub fn set_spin(&mut self, i: usize, omega: Vec3) {
         self.state.particles.omega[i] = omega;
+    }
+
+    /// From the next step on, wall `w` moves by `motion`, starting from where it is: a
+    /// process's next stage (a punch released from its load and withdrawn at a speed).
+    /// A `Velocity` motion goes on from the present displacement; a `Displacement`
+    /// motion's expressions are of the run's time t, so they must meet the present
+    /// displacement at the present time.
+    pub fn set_wall_motion(&mut self, w: usize, motion: BoundaryMotion) {
+        self.model.walls[w].motion = motion;
+    }
+
+    /// Put wall `w`, at rest, at `displacement` from its rest frame between steps: a
+    /// process taking a punch away once nothing touches it. Contacts it had are left
+    /// to the next step, which finds them gone.
+    pub fn place_wall(&mut self, w: usize, displacement: Vec3) {
+        self.state.walls[w].displacement = displacement;
+        self.state.walls[w].velocity = Vec3::zeros();
     }
 
     /// A run at t = 0 of `model` with `particles`: builds the neighbour list and the

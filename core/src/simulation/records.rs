@@ -23,8 +23,10 @@ impl Simulation {
     /// every pair within reach of the law and every wall contact, each evaluated by the
     /// same geometry and law code as in `compute_forces_with`, on a copy of its stored
     /// state, so nothing is advanced. Contacts the force loop will refuse (overlap
-    /// limit, non-finite force) are left out: that loop reports them.
-    pub(super) fn contact_records(&self) -> Vec<ContactRecord> {
+    /// limit, non-finite force) are left out: that loop reports them. Between steps it
+    /// evaluates the contacts at the present positions and velocities, each tangential
+    /// spring one increment on from its stored state.
+    pub fn contact_records(&self) -> Vec<ContactRecord> {
         self.model.law.visit(Records(self))
     }
 

@@ -10,6 +10,7 @@ mod compaction_2d;
 mod cylinder_wall_impact;
 mod density_segregation;
 mod die_compaction_replay;
+mod die_press_cycle;
 mod die_specimen;
 pub(crate) mod energy_conservation_elastic;
 mod hertz_collision_time;
@@ -90,6 +91,7 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("three_sphere_impact_lammps_gran", three_sphere_impact::run),
     ("van_der_waals_force", van_der_waals_force::run),
     ("nial_die_compaction_small", nial_die_compaction_small::run),
+    ("die_press_cycle", die_press_cycle::run),
     ("nial_die_compaction", nial_die_compaction::full),
     ("scott_random_packing_quick", scott_random_packing::run),
     ("scott_random_packing", scott_random_packing::run),

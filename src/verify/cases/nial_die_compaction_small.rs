@@ -119,6 +119,7 @@ fn pressing(
         records,
         steps: rec.frames.last().map_or(0, |f| f.step),
         escaped,
+        die_wall: Vec::new(),
     })
 }
 

@@ -1,4 +1,5 @@
-//! Load, unload and reload one Storåkers contact (Rojek 2016 eqs 16, 19–20): two
+//! Load, unload and reload one Storåkers contact (Rojek 2016 eqs 16, 19–20), and
+//! load and unload one Hertz contact, which keeps no permanent set: two
 //! NiAl spheres driven together to δ_max, pulled back past the point where the force
 //! vanishes, and pushed back through δ_max. The elastic branch of eq 19–20 integrates
 //! to the Hertz curve through the turning point, so the permanent set is
@@ -15,6 +16,7 @@
 //! again, every step where reloading crosses it.
 
 use super::two_body::{Pair, with_steps};
+use crate::contact::normal::{Hertz, NormalLaw};
 use crate::error::{Result, TampError};
 use crate::scene::Scene;
 use crate::scene::schema::VelocityChangeSpec;
@@ -175,5 +177,43 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
             (reload_force - f_max).abs() / f_max,
             0.0,
         ),
+        Measured::new(
+            "hertz_residual_overlap_after_unload",
+            hertz_residual(ctx, &base, &pair, turn)?,
+            0.0,
+        ),
     ])
+}
+
+/// The same pair under Hertz's law, driven to δ_max and pulled apart to −δ_max/10: an
+/// elastic contact keeps no permanent set, so its force vanishes where the overlap
+/// does. The overlap midway between the last step with a repulsive force and the
+/// first without.
+fn hertz_residual(ctx: &CaseContext, base: &Scene, pair: &Pair, turn: u64) -> Result<f64> {
+    let mut scene = base.clone();
+    scene.contact.normal = NormalLaw::Hertz(Hertz {});
+    let [v0, v1] = [0, 1].map(|k| base.particles[k].prescribed_velocity.unwrap_or([0.0; 3]));
+    for (k, v) in [(0, v0), (1, v1)] {
+        scene.particles[k].prescribed_velocity_changes = vec![VelocityChangeSpec {
+            time: turn as f64 * pair.dt,
+            velocity: v.map(|c| -c),
+        }];
+    }
+    let at_max = pair.step_at_overlap(MAX_OVERLAP);
+    let apart = turn + (at_max - pair.step_at_overlap(-0.1 * MAX_OVERLAP)).round() as u64;
+    let from = turn + (at_max - pair.step_at_overlap(0.1 * MAX_OVERLAP)) as u64;
+    let rec = ctx.record(
+        "hertz_unload",
+        &with_steps(&scene, apart),
+        RecordSpec::sparse_then_every_step(sparse_every(turn), from, true),
+    )?;
+    let after_turn: Vec<&Frame> = rec.frames.iter().filter(|f| f.step >= turn).collect();
+    for w in after_turn.windows(2) {
+        if normal_force(w[0])? > 0.0 && normal_force(w[1])? <= 0.0 {
+            return Ok(0.5 * (measure::overlap(w[0], 0, 1) + measure::overlap(w[1], 0, 1)));
+        }
+    }
+    Err(TampError::Other(format!(
+        "storakers_unloading: the Hertz force never vanished on unloading (up to step {apart})"
+    )))
 }

@@ -1,0 +1,133 @@
+//! `die_press_cycle`: the whole press cycle (`process::press_cycle`) of a small NiAl
+//! compact, checked against the force balances that hold whatever the packing:
+//! - **Janssen** at the peak, for the scene's specimen and one of twice as many
+//!   particles in the same die (twice the H/D): the pressure transmission ratio
+//!   p_lower/p_upper against exp(−4 μ_w K H/D), with K = σ_r/σ̄_z measured from the die
+//!   wall's radial force and the two punches;
+//! - **Coulomb at the die wall**: the wall's axial friction never exceeds μ_w times
+//!   its radial force;
+//! - **ejection onset**: the largest push of the lower punch against μ_w times the
+//!   die wall's radial force then, plus the compact's weight (the force balance on
+//!   the compact once every wall contact slides).
+//!
+//! The cycle is a process of stage changes (a punch released from its load, another
+//! set moving) that a resolved scene cannot state, so the case runs on tamp.
+
+use crate::error::{Result, TampError};
+use crate::process::die_compaction::{self, Specimen};
+use crate::process::die_compaction_file::DieCompactionFile;
+use crate::process::press_cycle::{self, Cycle, Stage};
+use crate::verify::{CaseContext, Measured};
+use std::f64::consts::PI;
+
+/// The die wall's friction coefficient μ_w: the scene's pair of the powder and the
+/// die's material.
+fn wall_friction(file: &DieCompactionFile) -> Result<f64> {
+    let dc = &file.die_compaction;
+    let tangential = file.scene.contact.tangential.as_ref().ok_or_else(|| {
+        TampError::Other("die_press_cycle: the scene needs a tangential law".into())
+    })?;
+    let pair = [dc.particles.material.as_str(), dc.wall_material.as_str()];
+    Ok(tangential
+        .friction_pairs
+        .iter()
+        .find(|p| {
+            let m = [p.materials[0].as_str(), p.materials[1].as_str()];
+            m == pair || m == [pair[1], pair[0]]
+        })
+        .map_or(tangential.friction, |p| p.friction))
+}
+
+/// Fill, flatten, press and go through the cycle.
+fn cycle(file: &DieCompactionFile) -> Result<(Specimen, Cycle)> {
+    let specimen = die_compaction::prepare(file, true)?;
+    let fixed = die_compaction::press_scene(file, &specimen)?
+        .time_step
+        .fixed;
+    let (pressing, sim) =
+        die_compaction::press_to_peak(file, &specimen, true, None, 0, &mut |_| Ok(()))?;
+    let cycle = press_cycle::run(file, &specimen, &pressing, sim, fixed, true)?;
+    Ok((specimen, cycle))
+}
+
+/// The cycle's records as CSV, each row labelled with its specimen.
+fn write_series(ctx: &CaseContext, runs: &[(&str, &Cycle)]) -> Result<()> {
+    let mut out = String::new();
+    for (k, (label, c)) in runs.iter().enumerate() {
+        for (j, line) in press_cycle::series_csv(&c.records).lines().enumerate() {
+            match (k, j) {
+                (0, 0) => out.push_str(&format!("specimen,{line}\n")),
+                (_, 0) => {}
+                _ => out.push_str(&format!("{label},{line}\n")),
+            }
+        }
+    }
+    crate::output::write_atomic(
+        &ctx.report_dir.join(format!("{}_series.csv", ctx.spec.name)),
+        out.as_bytes(),
+    )
+}
+
+pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
+    let file = ctx.die_compaction()?;
+    if file.die_compaction.eject.is_none() {
+        return Err(TampError::Other(
+            "die_press_cycle: the scene must eject the compact".into(),
+        ));
+    }
+    let mut tall = file.clone();
+    tall.die_compaction.particles.count *= 2;
+    let runs = ctx.map(&[&file, &tall], |f| cycle(f));
+    let mut done = Vec::new();
+    for r in runs {
+        done.push(r?);
+    }
+    let (short, tall_run) = (&done[0], &done[1]);
+    write_series(ctx, &[("short", &short.1), ("tall", &tall_run.1)])?;
+
+    let dc = &file.die_compaction;
+    let mu_w = wall_friction(&file)?;
+    let area = PI * (0.5 * dc.die_diameter).powi(2);
+    let mut out = Vec::new();
+    for (label, (_, c)) in [("short", short), ("tall", tall_run)] {
+        let s = &c.summary;
+        let h_over_d = s.peak_height / dc.die_diameter;
+        out.push(Measured::new(
+            &format!("janssen_transmission_ratio_{label}"),
+            s.transmission_ratio,
+            (-4.0 * mu_w * s.radial_to_axial_ratio * h_over_d).exp(),
+        ));
+        let peak = c
+            .records
+            .iter()
+            .rfind(|r| r.stage == Stage::Press)
+            .ok_or_else(|| TampError::Other("die_press_cycle: no pressing records".into()))?;
+        out.push(Measured::new(
+            &format!("wall_friction_over_coulomb_{label}"),
+            peak.die_friction * area / (mu_w * peak.die_radial_force),
+            1.0,
+        ));
+    }
+    let s = &short.1.summary;
+    let missing = || TampError::Other("die_press_cycle: the cycle did not eject".into());
+    let weight = {
+        let p = &short.0.particles;
+        let g = file.scene.gravity.map_or(0.0, |g| g[2].abs());
+        let density = file
+            .scene
+            .materials
+            .iter()
+            .find(|m| m.name == dc.particles.material)
+            .and_then(|m| m.density)
+            .unwrap_or(0.0);
+        p.iter()
+            .map(|x| density * 4.0 / 3.0 * PI * x.radius.powi(3) * g)
+            .sum::<f64>()
+    };
+    out.push(Measured::new(
+        "ejection_onset_force",
+        s.peak_ejection_force.ok_or_else(missing)?,
+        mu_w * s.radial_force_at_peak_ejection.ok_or_else(missing)? + weight,
+    ));
+    Ok(out)
+}
