@@ -14,9 +14,11 @@
 //!    `ramp_time`, until its face reaches the die's mouth, so the compact's bottom
 //!    clears it. The die is filled to its brim: its
 //!    mouth is the flattened specimen's top H₀. The ejection force is the particles'
-//!    push on the lower punch; its work is ∫ F du over the punch's rise u, summed step
-//!    by step. At the first slip the compact's force balance is F = μ_w F_r + m g,
-//!    with μ_w the die wall's friction and F_r the radial force on it.
+//!    push on the lower punch, averaged over blocks of 100 steps (a single step's push
+//!    carries single collisions); its work is ∫ F du over the punch's rise u, summed
+//!    step by step. Once the compact slides, its force balance is F = μ_w F_r + M g +
+//!    M a, with μ_w the die wall's friction, F_r the radial force on it and a the
+//!    punch's acceleration on its speed ramp.
 //! 3. **Relax** (`relax`): the free compact stands on the lower punch for `duration`.
 //!
 //! The radial springback is √(⟨ρ²⟩/⟨ρ²⟩_p) − 1, with ⟨ρ²⟩ the mean squared distance
@@ -74,7 +76,7 @@ pub struct EjectSpec {
 
 impl EjectSpec {
     /// The speed ramp for a stroke of `stroke` m, s.
-    fn ramp(&self, stroke: f64) -> f64 {
+    pub fn ramp(&self, stroke: f64) -> f64 {
         self.ramp_time.unwrap_or(0.1 * stroke / self.speed)
     }
 
@@ -326,12 +328,12 @@ pub struct CycleSummary {
     pub residual_radial_force: Option<f64>,
     /// That force over the wall the compact touches, π D H_r, Pa.
     pub residual_radial_pressure: Option<f64>,
-    /// Largest push of the particles on the lower punch while it ejects, N.
+    /// Largest push of the particles on the lower punch while it ejects, each push
+    /// averaged over a block of 100 steps, N.
     pub peak_ejection_force: Option<f64>,
-    /// The lower punch's rise when the push was largest, m.
+    /// The lower punch's rise at the end of that block, m.
     pub peak_ejection_at: Option<f64>,
-    /// The die wall's radial force at (about) the largest push, N: measured when the
-    /// push last grew by a thousandth.
+    /// The die wall's radial force at the end of that block, N.
     pub radial_force_at_peak_ejection: Option<f64>,
     /// Work the lower punch did on the compact over the ejection, J.
     pub ejection_work: Option<f64>,
@@ -627,6 +629,9 @@ fn unload_stage(
     Ok(())
 }
 
+/// Steps over which the lower punch's push is averaged into the ejection force.
+const EJECTION_BLOCK: u64 = 100;
+
 /// Take the upper punch away and push the compact out with the lower punch.
 fn eject_stage(
     die: &Die,
@@ -642,7 +647,8 @@ fn eject_stage(
     sim.set_wall_motion(PUNCH, BoundaryMotion::Fixed);
     records.push(die.record(sim, Stage::Eject)?);
     let (start, ramp) = (sim.state().time, eject.ramp(die.mouth));
-    let (mut peak, mut peak_at, mut radial_at_peak, mut measured_at) = (0.0f64, 0.0, 0.0, 0.0);
+    let (mut peak, mut peak_at, mut radial_at_peak) = (0.0f64, 0.0, 0.0);
+    let (mut block_sum, mut block_steps) = (0.0, 0u64);
     let mut work = 0.0;
     let mut progress = Progress::new("eject", eject.records as u64, quiet);
     for k in 1..=eject.records {
@@ -665,14 +671,19 @@ fn eject_stage(
             let push = -sim.state().wall_force[FLOOR].z;
             let rise = Die::floor_level(sim) - before;
             work += 0.5 * (push_before + push) * rise;
-            if push > peak {
-                peak = push;
-                peak_at = Die::floor_level(sim);
-                // The radial force is a pass over the contacts: measured again only
-                // when the push has grown by a thousandth since the last time.
-                if push > 1.001 * measured_at {
-                    measured_at = push;
+            // The push of one step carries the single collisions of the particles on
+            // the punch (a few per cent of it); the ejection force is its mean over
+            // blocks of EJECTION_BLOCK steps, and the radial force is measured at the
+            // end of the block with the largest mean.
+            block_sum += push;
+            block_steps += 1;
+            if block_steps == EJECTION_BLOCK {
+                let mean = block_sum / block_steps as f64;
+                (block_sum, block_steps) = (0.0, 0);
+                if mean > peak {
+                    peak = mean;
                     let floor = Die::floor_level(sim);
+                    peak_at = floor;
                     let height = Die::top_of_compact(sim) - floor;
                     let walls = DieWalls {
                         die: DIE,

@@ -6,9 +6,11 @@
 //!   wall's radial force and the two punches;
 //! - **Coulomb at the die wall**: the wall's axial friction never exceeds μ_w times
 //!   its radial force;
-//! - **ejection onset**: the largest push of the lower punch against μ_w times the
-//!   die wall's radial force then, plus the compact's weight (the force balance on
-//!   the compact once every wall contact slides).
+//! - **ejection onset**: the largest push of the lower punch (averaged over 100 steps),
+//!   the breakaway, against μ_w times the die wall's residual radial force once the
+//!   upper punch is released, plus the compact's weight and its mass times the punch's
+//!   acceleration on its speed ramp (the force balance on the compact when every wall
+//!   contact slides).
 //!
 //! The cycle is a process of stage changes (a punch released from its load, another
 //! set moving) that a resolved scene cannot state, so the case runs on tamp.
@@ -110,9 +112,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     }
     let s = &short.1.summary;
     let missing = || TampError::Other("die_press_cycle: the cycle did not eject".into());
-    let weight = {
-        let p = &short.0.particles;
-        let g = file.scene.gravity.map_or(0.0, |g| g[2].abs());
+    let mass = {
         let density = file
             .scene
             .materials
@@ -120,14 +120,25 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
             .find(|m| m.name == dc.particles.material)
             .and_then(|m| m.density)
             .unwrap_or(0.0);
+        let p = &short.0.particles;
         p.iter()
-            .map(|x| density * 4.0 / 3.0 * PI * x.radius.powi(3) * g)
+            .map(|x| density * 4.0 / 3.0 * PI * x.radius.powi(3))
             .sum::<f64>()
+    };
+    let g = file.scene.gravity.map_or(0.0, |g| g[2].abs());
+    // The punch's acceleration where the push was largest: speed/ramp while its speed
+    // rises, which the sliding compact follows.
+    let eject = dc.eject.as_ref().ok_or_else(missing)?;
+    let ramp = eject.ramp(short.0.h0);
+    let peak_at = s.peak_ejection_at.ok_or_else(missing)?;
+    let acceleration = match ramp > 0.0 && peak_at < 0.5 * eject.speed * ramp {
+        true => eject.speed / ramp,
+        false => 0.0,
     };
     out.push(Measured::new(
         "ejection_onset_force",
         s.peak_ejection_force.ok_or_else(missing)?,
-        mu_w * s.radial_force_at_peak_ejection.ok_or_else(missing)? + weight,
+        mu_w * s.residual_radial_force.ok_or_else(missing)? + mass * (g + acceleration),
     ));
     Ok(out)
 }
