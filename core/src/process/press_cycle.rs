@@ -324,6 +324,14 @@ pub struct CycleSummary {
     pub released_height: Option<f64>,
     /// (H_r − H_p)/H_p.
     pub axial_springback: Option<f64>,
+    /// Work the particles did on the withdrawing upper punch until released, J.
+    pub unloading_work: Option<f64>,
+    /// Energy stored in the contacts at the peak and at release, J.
+    pub stored_energy: Option<[f64; 2]>,
+    /// Kinetic energy of the particles at the peak and at release, J.
+    pub kinetic_energy: Option<[f64; 2]>,
+    /// What the energy book counts as dissipated during the unloading, J.
+    pub unloading_dissipation: Option<f64>,
     /// The die wall's radial force once the upper punch is released, N.
     pub residual_radial_force: Option<f64>,
     /// That force over the wall the compact touches, π D H_r, Pa.
@@ -353,6 +361,12 @@ impl CycleSummary {
             ("radial_to_axial_ratio", Some(self.radial_to_axial_ratio)),
             ("released_height", self.released_height),
             ("axial_springback", self.axial_springback),
+            ("unloading_work", self.unloading_work),
+            ("stored_energy_at_peak", self.stored_energy.map(|e| e[0])),
+            ("stored_energy_released", self.stored_energy.map(|e| e[1])),
+            ("kinetic_energy_at_peak", self.kinetic_energy.map(|e| e[0])),
+            ("kinetic_energy_released", self.kinetic_energy.map(|e| e[1])),
+            ("unloading_dissipation", self.unloading_dissipation),
             ("residual_radial_force", self.residual_radial_force),
             ("residual_radial_pressure", self.residual_radial_pressure),
             ("peak_ejection_force", self.peak_ejection_force),
@@ -590,12 +604,24 @@ fn unload_stage(
     sim.set_wall_motion(PUNCH, BoundaryMotion::Velocity(Vec3::z() * unload.speed));
     let interval = unload.record_interval / unload.speed;
     let start = sim.state().time;
+    let (stored, kinetic, dissipated) = (
+        sim.stored_energy(),
+        sim.kinetic_energy(),
+        sim.dissipated_energy(),
+    );
+    let mut work = 0.0;
     let mut k = 1u64;
     loop {
         let due = start + interval * k as f64;
+        let (face, push) = (die.punch_face(sim), sim.state().wall_force[PUNCH].z);
         die.step(sim, due)?;
+        work += 0.5 * (push + sim.state().wall_force[PUNCH].z) * (die.punch_face(sim) - face);
         let released = sim.state().wall_force[PUNCH].z <= 0.0;
         if released {
+            summary.unloading_work = Some(work);
+            summary.stored_energy = Some([stored, sim.stored_energy()]);
+            summary.kinetic_energy = Some([kinetic, sim.kinetic_energy()]);
+            summary.unloading_dissipation = Some(sim.dissipated_energy() - dissipated);
             let r = die.record(sim, Stage::Unload)?;
             summary.released_height = Some(r.height);
             summary.axial_springback = Some((r.height - summary.peak_height) / summary.peak_height);

@@ -12,13 +12,21 @@
 //!   acceleration on its speed ramp (the force balance on the compact when every wall
 //!   contact slides).
 //!
+//! - **unloading returns what was stored**: the same specimen pressed as a frictionless,
+//!   damped Hertz compact and released; the work the particles do on the withdrawing
+//!   punch against the energy its contacts stored at the peak, less what they still
+//!   store and what the dashpots took (the energy book), with the change of the
+//!   particles' kinetic energy.
+//!
 //! The cycle is a process of stage changes (a punch released from its load, another
 //! set moving) that a resolved scene cannot state, so the case runs on tamp.
 
+use crate::contact::normal::{Hertz, NormalLaw};
 use crate::error::{Result, TampError};
 use crate::process::die_compaction::{self, Specimen};
 use crate::process::die_compaction_file::DieCompactionFile;
 use crate::process::press_cycle::{self, Cycle, Stage};
+use crate::scene::schema::ContactSpec;
 use crate::verify::{CaseContext, Measured};
 use std::f64::consts::PI;
 
@@ -77,15 +85,36 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
             "die_press_cycle: the scene must eject the compact".into(),
         ));
     }
+    // Twice the particles in the same die, pressed and released: its ejection, the
+    // longest stage, measures nothing the case checks.
     let mut tall = file.clone();
     tall.die_compaction.particles.count *= 2;
-    let runs = ctx.map(&[&file, &tall], |f| cycle(f));
+    tall.die_compaction.eject = None;
+    tall.die_compaction.relax = None;
+    // The same specimen pressed and released as a frictionless, damped Hertz compact.
+    let mut elastic = file.clone();
+    elastic.scene.contact = ContactSpec {
+        normal: NormalLaw::Hertz(Hertz {}),
+        tangential: None,
+        ..file.scene.contact.clone()
+    };
+    elastic.die_compaction.eject = None;
+    elastic.die_compaction.relax = None;
+    elastic.validate()?;
+    let runs = ctx.map(&[&file, &tall, &elastic], |f| cycle(f));
     let mut done = Vec::new();
     for r in runs {
         done.push(r?);
     }
-    let (short, tall_run) = (&done[0], &done[1]);
-    write_series(ctx, &[("short", &short.1), ("tall", &tall_run.1)])?;
+    let (short, tall_run, hertz) = (&done[0], &done[1], &done[2]);
+    write_series(
+        ctx,
+        &[
+            ("short", &short.1),
+            ("tall", &tall_run.1),
+            ("frictionless_hertz", &hertz.1),
+        ],
+    )?;
 
     let dc = &file.die_compaction;
     let mu_w = wall_friction(&file)?;
@@ -139,6 +168,20 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         "ejection_onset_force",
         s.peak_ejection_force.ok_or_else(missing)?,
         mu_w * s.residual_radial_force.ok_or_else(missing)? + mass * (g + acceleration),
+    ));
+    // What the frictionless Hertz compact gives back to the withdrawing punch: what its
+    // contacts stored at the peak, less what they still store and what the dashpots
+    // took (the energy book), with the change of the particles' kinetic energy.
+    let h = &hertz.1.summary;
+    let missing = || TampError::Other("die_press_cycle: the Hertz compact was not released".into());
+    let stored = h.stored_energy.ok_or_else(missing)?;
+    let kinetic = h.kinetic_energy.ok_or_else(missing)?;
+    out.push(Measured::new(
+        "unloading_work_frictionless_hertz",
+        h.unloading_work.ok_or_else(missing)?,
+        stored[0] - stored[1] + kinetic[0]
+            - kinetic[1]
+            - h.unloading_dissipation.ok_or_else(missing)?,
     ));
     Ok(out)
 }
