@@ -20,15 +20,59 @@ fn fresh(dir: &Path) {
     let _ = std::fs::remove_dir_all(dir);
 }
 
+/// The tiny die through the press cycle: unloaded, ejected and relaxed.
+fn cycle_scene() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/tiny_die_cycle.scene.json")
+}
+
 #[test]
 fn killed_compaction_resumes_to_identical_outputs() {
-    let base = std::env::temp_dir().join(format!("tamp_die_resume_{}", std::process::id()));
+    resumes_to_identical_outputs(&scene(), "plain");
+}
+
+/// A cycle killed during its pressing and resumed writes the same files as the
+/// uninterrupted run, cycle.svg among them; its records come stage by stage, in order,
+/// and every number in them is finite.
+#[test]
+fn killed_cycle_resumes_to_identical_outputs() {
+    let a = resumes_to_identical_outputs(&cycle_scene(), "cycle");
+    let series = std::fs::read_to_string(a.join("series.csv")).unwrap();
+    let mut stages: Vec<&str> = series
+        .lines()
+        .skip(1)
+        .map(|l| &l[..l.find(',').unwrap()])
+        .collect();
+    stages.dedup();
+    assert_eq!(stages, ["press", "unload", "eject", "relax"], "{series}");
+    for line in series.lines().skip(1) {
+        for value in line.split(',').skip(1) {
+            let v: f64 = value.parse().unwrap();
+            assert!(v.is_finite(), "{line}");
+        }
+    }
+    let quantities = std::fs::read_to_string(a.join("quantities.csv")).unwrap();
+    for q in [
+        "axial_springback,",
+        "residual_radial_pressure,",
+        "peak_ejection_force,",
+        "ejection_work,",
+        "radial_springback,",
+    ] {
+        assert!(quantities.contains(q), "{quantities}");
+    }
+    fresh(a.parent().unwrap());
+}
+
+/// Run `scene` once whole (into `<base>/a`, returned) and once killed at its first
+/// pressing checkpoint and resumed (`<base>/b`): the same files, byte for byte.
+fn resumes_to_identical_outputs(scene: &Path, label: &str) -> PathBuf {
+    let base = std::env::temp_dir().join(format!("tamp_die_resume_{label}_{}", std::process::id()));
     let (a, b) = (base.join("a"), base.join("b"));
     fresh(&base);
     let status = tamp()
         .args(["run", "--quiet", "--out"])
         .arg(&a)
-        .arg(scene())
+        .arg(scene)
         .status()
         .unwrap();
     assert!(status.success());
@@ -37,7 +81,7 @@ fn killed_compaction_resumes_to_identical_outputs() {
     let mut child = tamp()
         .args(["run", "--quiet", "--out"])
         .arg(&b)
-        .arg(scene())
+        .arg(scene)
         .stdout(Stdio::null())
         .spawn()
         .unwrap();
@@ -59,7 +103,7 @@ fn killed_compaction_resumes_to_identical_outputs() {
     let out = tamp()
         .args(["run", "--quiet", "--resume", "--out"])
         .arg(&b)
-        .arg(scene())
+        .arg(scene)
         .output()
         .unwrap();
     assert!(
@@ -78,7 +122,10 @@ fn killed_compaction_resumes_to_identical_outputs() {
         "summary.json",
         "specimen.json",
         "press.scene.json",
-    ] {
+    ]
+    .into_iter()
+    .chain((label == "cycle").then_some("cycle.svg"))
+    {
         let (x, y) = (
             std::fs::read(a.join(file)).unwrap(),
             std::fs::read(b.join(file)).unwrap(),
@@ -99,7 +146,10 @@ fn killed_compaction_resumes_to_identical_outputs() {
         "{}",
         String::from_utf8_lossy(&compared.stdout)
     );
-    fresh(&base);
+    if label == "plain" {
+        fresh(&base);
+    }
+    a
 }
 
 /// The funnel pour (Rojek Fig 13a) loses no particle and leaves every one whole inside

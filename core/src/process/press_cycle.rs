@@ -405,6 +405,8 @@ struct Die<'a> {
     bands: usize,
     /// The pressing's fixed step, or none where it is re-estimated.
     fixed: Option<f64>,
+    /// The step at the peak, the largest a re-estimated step may take in the cycle.
+    peak_step: f64,
     alpha: f64,
 }
 
@@ -488,10 +490,13 @@ impl Die<'_> {
             Some(dt) => dt,
             None => {
                 let every = self.file.die_compaction.press.dt_every;
+                // Never above the step at the peak, the stiffest the compact gets: once
+                // released, its contacts soften and part, and a step grown on the few
+                // left would meet the next collision too coarse.
                 if sim.state().step.is_multiple_of(every)
                     && let Some(dt_cr) = sim.critical_time_step(None)
                 {
-                    sim.set_time_step(self.alpha * dt_cr)?;
+                    sim.set_time_step((self.alpha * dt_cr).min(self.peak_step))?;
                 }
                 sim.dt()
             }
@@ -528,6 +533,7 @@ pub fn run(
         mouth: specimen.h0,
         bands: dc.die_bands().unwrap_or(1),
         fixed: fixed_step,
+        peak_step: sim.dt(),
         alpha: file.scene.time_step.alpha(),
     };
     let mut records: Vec<CycleRecord> = pressing
@@ -554,6 +560,12 @@ pub fn run(
         .last()
         .cloned()
         .ok_or_else(|| TampError::Other("the pressing made no records".into()))?;
+    if !(peak.upper_punch > 0.0 && peak.lower_punch + peak.upper_punch > 0.0) {
+        return Err(TampError::Other(format!(
+            "the upper punch carries no load at the peak (step {}, {:e} Pa): the cycle's ratios would be undefined",
+            peak.step, peak.upper_punch
+        )));
+    }
     let peak_spread = Die::mean_square_radius(&sim);
     let mean_axial = 0.5 * (peak.upper_punch + peak.lower_punch);
     let mut summary = CycleSummary {
