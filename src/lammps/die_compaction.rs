@@ -100,6 +100,7 @@ pub fn die_refusals(file: &DieCompactionFile) -> Vec<(String, String)> {
             "LAMMPS's zcylinder wall gives the die contact the effective radius R r_w/(R + r_w) with r_w = -2 R_c (fix_wall_gran.cpp); tamp's default \"flat\" die takes R, a different Hertz stiffness; set \"die_curvature\": \"mean\" for LAMMPS's contact".into(),
         ));
     }
+    out.extend(die_replay::cycle_refusals(file));
     out
 }
 
@@ -339,6 +340,14 @@ mod tests {
         flat.die_compaction.die_curvature = Curvature::Flat;
         let paths: Vec<String> = die_refusals(&flat).into_iter().map(|(p, _)| p).collect();
         assert_eq!(paths, ["die_compaction.die_curvature"]);
+        // The replay stops at the peak: a press cycle is refused, not dropped.
+        let mut cycle = scene("lammps_die_compaction_small");
+        cycle.die_compaction.unload = Some(crate::process::press_cycle::UnloadSpec {
+            speed: 0.05,
+            record_interval: 1e-7,
+        });
+        let paths: Vec<String> = die_refusals(&cycle).into_iter().map(|(p, _)| p).collect();
+        assert_eq!(paths, ["die_compaction.unload"]);
     }
 
     /// The replay's die is the pressing's: a cylinder of the die's radius with the

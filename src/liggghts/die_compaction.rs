@@ -83,6 +83,7 @@ pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> R
     let solid = die_replay::solid_sphere_scene(file);
     let mut list = refusals(&solid.shared_scene());
     list.extend(die_refusals(file));
+    list.extend(die_replay::cycle_refusals(file));
     if !list.is_empty() {
         return Err(refuse_all(list));
     }

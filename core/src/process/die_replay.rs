@@ -87,6 +87,18 @@ impl Stroke {
     }
 }
 
+/// What a peer's replay of the pressing cannot carry: the press cycle after the peak,
+/// which it would leave out without a word.
+pub fn cycle_refusals(file: &DieCompactionFile) -> Vec<(String, String)> {
+    match file.die_compaction.unload {
+        Some(_) => vec![(
+            "die_compaction.unload".into(),
+            "the replay deck presses along tamp's stroke up to the peak; the press cycle after it (unload, eject, relax) is not exported: leave die_compaction.unload, eject and relax out to export the pressing".into(),
+        )],
+        None => Vec::new(),
+    }
+}
+
 /// A die-compaction scene pressed in tamp, ready to be replayed by a peer code: the
 /// flattened specimen, the stroke tamp pressed, and the press stage replaying it
 /// under `solid`'s law (what the peer can express).
