@@ -61,7 +61,7 @@ pub fn run(scene_path: &Path, out: &Path) -> Result<u8> {
         s.scene.time_step.alpha = Some(alpha);
         s.die_compaction.press.ramp_time = ramp;
         let started = Instant::now();
-        let pressing = die_compaction::press(&s, &specimen, false, None, 0, &mut |_| Ok(()))?;
+        let pressing = die_compaction::press(&s, &specimen, false, None, 0, &mut |_| Ok(()))?.0;
         let wall_s = started.elapsed().as_secs_f64();
         eprintln!("ramp {ramp:e} s, alpha {alpha}: {wall_s:.1} s");
         runs.push((ramp, alpha, axis, wall_s, pressing));

@@ -34,7 +34,7 @@
 
 use super::die_compaction_file::{DieCompactionFile, DieCompactionSpec, FillMethod};
 use super::funnel::Funnel;
-use super::press_cycle::{DieWall, DieWalls};
+use super::press_cycle::DieWall;
 use crate::error::{Result, TampError};
 use crate::generate::rsi::{InsertionBox, Placed};
 use crate::measure::{Region, packing::packing_fraction};
@@ -246,7 +246,8 @@ fn carried(sim: &Simulation, material: &str) -> Vec<ParticleSpec> {
         .collect()
 }
 
-fn top_of_bed(sim: &Simulation) -> f64 {
+/// The top of the highest particle, m.
+pub(super) fn top_of_bed(sim: &Simulation) -> f64 {
     let p = &sim.state.particles;
     (0..p.len())
         .map(|i| p.position[i].z + p.radius[i])
@@ -632,25 +633,13 @@ fn stop_if_signalled(sim: &Simulation, stage: &str) -> Result<()> {
     }
 }
 
-/// Press a specimen under the scene's contact law and record the ramp. `resume`
-/// continues a pressing from its checkpoint; `checkpoint` is called with the state
-/// every `every` steps (0: never).
+/// Press a specimen under the scene's contact law and record the ramp; the run at the
+/// peak is returned too, for a press cycle to go on from (`press_cycle::run`).
+/// `resume` continues a pressing from its checkpoint; `checkpoint` is called with the
+/// state every `every` steps (0: never). With a cycle, every record also measures the
+/// die wall's radial force, and a checkpoint is written at the peak, so that an
+/// interrupted cycle starts again from there.
 pub fn press(
-    file: &DieCompactionFile,
-    specimen: &Specimen,
-    quiet: bool,
-    resume: Option<PressState>,
-    every: u64,
-    checkpoint: &mut dyn FnMut(&PressState) -> Result<()>,
-) -> Result<Pressing> {
-    press_to_peak(file, specimen, quiet, resume, every, checkpoint).map(|(pressing, _)| pressing)
-}
-
-/// `press`, and the run at the peak, where a press cycle goes on
-/// (`press_cycle::run`). With a cycle, every record also measures the die wall's
-/// radial force, and a checkpoint is written at the peak, so that an interrupted
-/// cycle starts again from there.
-pub fn press_to_peak(
     file: &DieCompactionFile,
     specimen: &Specimen,
     quiet: bool,
@@ -697,10 +686,9 @@ pub fn press_to_peak(
         });
         if let Some(bands) = dc.die_bands() {
             let floor_level = sim.state.walls[floor].displacement.z;
-            let walls = DieWalls { die, floor };
             out.die_wall.push(DieWall::of(
                 sim,
-                &walls,
+                die,
                 die_radius,
                 floor_level,
                 height,

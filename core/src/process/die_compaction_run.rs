@@ -134,10 +134,8 @@ pub fn run_scene(
     let mut write = |state: &PressState| {
         checkpoint::write_checkpoint(&checkpoint_path, &Checkpoint::new(sha, state))
     };
-    let (pressing, sim) = die_compaction::press_to_peak(
-        file, &specimen, quiet, state, every, &mut write,
-    )
-    .map_err(|e| match e {
+    let (pressing, sim) = die_compaction::press(file, &specimen, quiet, state, every, &mut write)
+        .map_err(|e| match e {
         TampError::Interrupted {
             signal,
             step,

@@ -115,7 +115,7 @@ pub struct Pressed {
 /// replay of the recorded stroke under `solid`.
 pub fn press_for_replay(file: &DieCompactionFile, solid: &DieCompactionFile) -> Result<Pressed> {
     let specimen = die_compaction::prepare(file, false)?;
-    let pressing = die_compaction::press(file, &specimen, false, None, 0, &mut |_| Ok(()))?;
+    let pressing = die_compaction::press(file, &specimen, false, None, 0, &mut |_| Ok(()))?.0;
     let stroke = Stroke::of(&pressing, specimen.h0)?;
     let replay = replay_scene(solid, &specimen, &stroke)?;
     Ok(Pressed {

@@ -36,7 +36,7 @@
 //! the die wall's axial friction and radial force, the radial force per height band
 //! of the compact, the compact's height and density and the lower punch's rise.
 
-use super::die_compaction::{Pressing, Specimen, densities_in};
+use super::die_compaction::{Pressing, Specimen, densities_in, top_of_bed};
 use super::die_compaction_file::DieCompactionFile;
 use crate::boundary::BoundaryMotion;
 use crate::contact::record::Partner;
@@ -162,14 +162,6 @@ pub(super) const DIE: usize = 0;
 pub(super) const FLOOR: usize = 1;
 pub(super) const PUNCH: usize = 2;
 
-/// The die and its floor, by their indices among the run's walls.
-pub struct DieWalls {
-    /// The die's cylinder.
-    pub die: usize,
-    /// The die's floor, the lower punch.
-    pub floor: usize,
-}
-
 /// The die wall's radial push at one record.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct DieWall {
@@ -181,11 +173,11 @@ pub struct DieWall {
 }
 
 impl DieWall {
-    /// The die wall's contacts at the present state, the compact of `height` standing
-    /// on the floor at `floor_level`.
+    /// The contacts of wall `die` (the die's cylinder) at the present state, the
+    /// compact of `height` standing on the floor at `floor_level`.
     pub fn of(
         sim: &Simulation,
-        walls: &DieWalls,
+        die: usize,
         die_radius: f64,
         floor_level: f64,
         height: f64,
@@ -194,7 +186,7 @@ impl DieWall {
         let mut band_force = vec![0.0; bands];
         let mut radial_force = 0.0;
         for c in sim.contact_records() {
-            if c.partner != Partner::Wall(walls.die) {
+            if c.partner != Partner::Wall(die) {
                 continue;
             }
             let rho = c.point.x.hypot(c.point.y);
@@ -420,13 +412,6 @@ impl Die<'_> {
         self.mouth + sim.state().walls[PUNCH].displacement.z
     }
 
-    fn top_of_compact(sim: &Simulation) -> f64 {
-        let p = &sim.state().particles;
-        (0..p.len())
-            .map(|i| p.position[i].z + p.radius[i])
-            .fold(f64::NEG_INFINITY, f64::max)
-    }
-
     /// The mean of the particles' squared distances from the axis, ⟨ρ²⟩, m².
     fn mean_square_radius(sim: &Simulation) -> f64 {
         let p = &sim.state().particles;
@@ -438,19 +423,9 @@ impl Die<'_> {
         let floor = Self::floor_level(sim);
         let height = match stage {
             Stage::Press | Stage::Unload => self.punch_face(sim),
-            Stage::Eject | Stage::Relax => Self::top_of_compact(sim),
+            Stage::Eject | Stage::Relax => top_of_bed(sim),
         } - floor;
-        let wall = DieWall::of(
-            sim,
-            &DieWalls {
-                die: DIE,
-                floor: FLOOR,
-            },
-            self.radius,
-            floor,
-            height,
-            self.bands,
-        );
+        let wall = DieWall::of(sim, DIE, self.radius, floor, height, self.bands);
         let p = &sim.state().particles;
         let above_floor: Vec<Vec3> = p.position.iter().map(|x| x - Vec3::z() * floor).collect();
         let (density, _) = densities_in(
@@ -516,7 +491,7 @@ impl Die<'_> {
     }
 }
 
-/// Go on from the peak (`die_compaction::press_to_peak`) through the file's stages.
+/// Go on from the peak (`die_compaction::press`) through the file's stages.
 pub fn run(
     file: &DieCompactionFile,
     specimen: &Specimen,
@@ -722,13 +697,9 @@ fn eject_stage(
                     peak = mean;
                     let floor = Die::floor_level(sim);
                     peak_at = floor;
-                    let height = Die::top_of_compact(sim) - floor;
-                    let walls = DieWalls {
-                        die: DIE,
-                        floor: FLOOR,
-                    };
+                    let height = top_of_bed(sim) - floor;
                     radial_at_peak =
-                        DieWall::of(sim, &walls, die.radius, floor, height, 1).radial_force;
+                        DieWall::of(sim, DIE, die.radius, floor, height, 1).radial_force;
                 }
             }
         }

@@ -54,8 +54,7 @@ fn cycle(file: &DieCompactionFile) -> Result<(Specimen, Cycle)> {
     let fixed = die_compaction::press_scene(file, &specimen)?
         .time_step
         .fixed;
-    let (pressing, sim) =
-        die_compaction::press_to_peak(file, &specimen, true, None, 0, &mut |_| Ok(()))?;
+    let (pressing, sim) = die_compaction::press(file, &specimen, true, None, 0, &mut |_| Ok(()))?;
     let cycle = press_cycle::run(file, &specimen, &pressing, sim, fixed, true)?;
     Ok((specimen, cycle))
 }

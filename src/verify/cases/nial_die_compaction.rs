@@ -175,7 +175,7 @@ fn press_all(
             store.save(&checkpoint_file, &key, &(state, wall))
         };
         let pressing =
-            die_compaction::press(&s, specimen, false, resume, CHECKPOINT_EVERY, &mut save)?;
+            die_compaction::press(&s, specimen, false, resume, CHECKPOINT_EVERY, &mut save)?.0;
         let done = Done {
             pressing,
             wall_s: earlier_wall + started.elapsed().as_secs_f64(),
