@@ -484,7 +484,7 @@ impl Die<'_> {
                 signal,
                 step: sim.state().step,
                 time: sim.state().time,
-                next: "the cycle after the peak is not checkpointed; a resumed run starts it again from the peak".into(),
+                next: "the cycle after the peak is not checkpointed: a run resumed from the pressing's checkpoint (output.checkpoint_every) starts it again at the peak".into(),
             });
         }
         Ok(())
