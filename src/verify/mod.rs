@@ -96,11 +96,6 @@ pub struct CaseSpec {
     /// stated relative tolerance, beside meeting the references.
     #[serde(default)]
     pub agreement: Vec<Agreement>,
-    /// About how long the case runs on tamp, s: the runner starts the longest cases
-    /// first, so that on a few cores the short ones fill in beside them. A hint for
-    /// the order alone; no value or verdict depends on it.
-    #[serde(default)]
-    pub wall_time_hint_s: f64,
     pub quantities: Vec<QuantitySpec>,
 }
 
@@ -975,16 +970,8 @@ pub fn run_cases(
         .iter()
         .flat_map(|e| selected.iter().map(move |s| (*s, e)))
         .collect();
-    // Started longest first (a stable sort: the rest keep the files' order), which
-    // keeps the cores busy to the end; the report keeps the files' order.
-    let mut order: Vec<usize> = (0..runs.len()).collect();
-    order.sort_by(|&a, &b| {
-        let hint = |k: usize| runs[k].0.wall_time_hint_s;
-        hint(b).total_cmp(&hint(a))
-    });
     let several = engines.len() > 1;
-    let finished = parallel::map(&order, jobs, |&k| {
-        let (spec, engine) = runs[k];
+    let results = parallel::map(&runs, jobs, |(spec, engine)| {
         let r = run_case(
             spec,
             &dir,
@@ -1010,9 +997,6 @@ pub fn run_cases(
         );
         r
     });
-    let mut results: Vec<_> = order.iter().copied().zip(finished).collect();
-    results.sort_by_key(|(k, _)| *k);
-    let results: Vec<_> = results.into_iter().map(|(_, r)| r).collect();
     crate::progress::set_lines_only(false);
     let report = VerificationReport {
         tamp_version: crate::VERSION.to_string(),
