@@ -12,8 +12,8 @@
 //! 2. **Eject** (`eject`): the upper punch is taken away; the lower punch (the die's
 //!    floor) rises through the fixed die, its speed ramped linearly up to `speed` over
 //!    `ramp_time`, until its face reaches the die's mouth, so the compact's bottom
-//!    clears it. The die is filled to its brim: its
-//!    mouth is the flattened specimen's top H₀. The ejection force is the particles'
+//!    clears it. The die is filled to its brim: its mouth is the flattened specimen's
+//!    top H₀. The ejection force is the particles'
 //!    push on the lower punch, averaged over blocks of 100 steps (a single step's push
 //!    carries single collisions); its work is ∫ F du over the punch's rise u, summed
 //!    step by step. Once the compact slides, its force balance is F = μ_w F_r + M g +
@@ -27,10 +27,10 @@
 //! a cohesionless compact move little, where its envelope would follow them. While the
 //! compact is pressed, the die wall's radial force gives Janssen's ratio of radial to
 //! axial stress, K = σ_r/σ̄_z with σ_r = F_r/(π D H) and σ̄_z = (p_upper + p_lower)/2;
-//! with the wall's friction fully mobilised, the axial stress decays down the compact
-//! as exp(−4 μ_w K z/D), so the pressure transmission ratio is
-//! p_lower/p_upper = exp(−4 μ_w K H/D) (Janssen 1895; for die compaction e.g.
-//! German, Powder Metallurgy Science, 1994, §8).
+//! with the wall's friction fully mobilised, a slice dz of the compact loses
+//! μ_w K σ_z π D dz of its axial force to the wall, so the axial stress decays down the
+//! compact as exp(−4 μ_w K z/D) and the pressure transmission ratio is
+//! p_lower/p_upper = exp(−4 μ_w K H/D) (Janssen's silo balance, 1895).
 //!
 //! Every record of the cycle (the pressing's included) gives both punches' pushes,
 //! the die wall's axial friction and radial force, the radial force per height band
