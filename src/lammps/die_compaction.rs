@@ -34,26 +34,11 @@ use crate::peer_deck::{DUMP_COLUMNS, Exported, dump_format, neighbor_skin};
 use crate::process::die_compaction_file::DieCompactionFile;
 use crate::process::die_replay;
 use crate::scene;
-use crate::scene::schema::ContactSpec;
 use crate::scene::walls::Curvature;
 use std::fmt::Write as _;
 use std::path::Path;
 
 use crate::decimal::g;
-
-/// μ between materials `a` and `b` under a contact block's tangential law (0 without
-/// one).
-fn friction(contact: &ContactSpec, a: &str, b: &str) -> f64 {
-    contact.tangential.as_ref().map_or(0.0, |t| {
-        t.friction_pairs
-            .iter()
-            .find(|p| {
-                (p.materials[0] == a && p.materials[1] == b)
-                    || (p.materials[0] == b && p.materials[1] == a)
-            })
-            .map_or(t.friction, |p| p.friction)
-    })
-}
 
 /// Every field of the die-compaction `scene` its LAMMPS replay cannot express.
 /// The walls are written here (die, floor, punch), so the general export's wall
@@ -203,10 +188,16 @@ pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> R
             .replace("{nu}", &g(m.poisson_ratio.unwrap_or(0.0)))
             .replace("{mu}", &g(mu))
     };
-    let pair = line(particle, friction(&scene.scene.contact, particle, particle));
+    let pair = line(
+        particle,
+        scene.scene.contact.friction_between(particle, particle),
+    );
     let wall = line(
         &dc.wall_material,
-        friction(&scene.scene.contact, particle, &dc.wall_material),
+        scene
+            .scene
+            .contact
+            .friction_between(particle, &dc.wall_material),
     );
     let n = stroke.steps_per_record;
     let steps = n * stroke.heights.len() as u64;
@@ -475,8 +466,8 @@ mod tests {
     #[test]
     fn walls_take_the_particle_wall_friction_and_particles_their_own() {
         let s = scene("lammps_die_compaction_small");
-        assert_eq!(friction(&s.scene.contact, "NiAl", "NiAl"), 0.0);
-        assert_eq!(friction(&s.scene.contact, "NiAl", "die"), 0.02);
-        assert_eq!(friction(&s.scene.contact, "die", "NiAl"), 0.02);
+        assert_eq!(s.scene.contact.friction_between("NiAl", "NiAl"), 0.0);
+        assert_eq!(s.scene.contact.friction_between("NiAl", "die"), 0.02);
+        assert_eq!(s.scene.contact.friction_between("die", "NiAl"), 0.02);
     }
 }

@@ -46,6 +46,20 @@ pub struct ContactSpec {
 }
 
 impl ContactSpec {
+    /// μ between the materials named `a` and `b`: their `friction_pairs` entry where
+    /// listed, else the tangential block's μ (0 without one), as the pair table has it.
+    pub fn friction_between(&self, a: &str, b: &str) -> f64 {
+        self.tangential.as_ref().map_or(0.0, |t| {
+            t.friction_pairs
+                .iter()
+                .find(|p| {
+                    (p.materials[0] == a && p.materials[1] == b)
+                        || (p.materials[0] == b && p.materials[1] == a)
+                })
+                .map_or(t.friction, |p| p.friction)
+        })
+    }
+
     /// The law the force loop runs (friction coefficients go to the pair table).
     pub fn law(&self) -> ContactLaw {
         ContactLaw {

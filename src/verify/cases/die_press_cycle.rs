@@ -30,24 +30,6 @@ use crate::scene::schema::ContactSpec;
 use crate::verify::{CaseContext, Measured};
 use std::f64::consts::PI;
 
-/// The die wall's friction coefficient μ_w: the scene's pair of the powder and the
-/// die's material.
-fn wall_friction(file: &DieCompactionFile) -> Result<f64> {
-    let dc = &file.die_compaction;
-    let tangential = file.scene.contact.tangential.as_ref().ok_or_else(|| {
-        TampError::Other("die_press_cycle: the scene needs a tangential law".into())
-    })?;
-    let pair = [dc.particles.material.as_str(), dc.wall_material.as_str()];
-    Ok(tangential
-        .friction_pairs
-        .iter()
-        .find(|p| {
-            let m = [p.materials[0].as_str(), p.materials[1].as_str()];
-            m == pair || m == [pair[1], pair[0]]
-        })
-        .map_or(tangential.friction, |p| p.friction))
-}
-
 /// Fill, flatten, press and go through the cycle.
 fn cycle(file: &DieCompactionFile) -> Result<(Specimen, Cycle)> {
     let specimen = die_compaction::prepare(file, true)?;
@@ -116,7 +98,10 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     )?;
 
     let dc = &file.die_compaction;
-    let mu_w = wall_friction(&file)?;
+    let mu_w = file
+        .scene
+        .contact
+        .friction_between(&dc.particles.material, &dc.wall_material);
     let area = PI * (0.5 * dc.die_diameter).powi(2);
     let mut out = Vec::new();
     for (label, (_, c)) in [("short", short), ("tall", tall_run)] {
