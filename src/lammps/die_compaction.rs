@@ -32,8 +32,7 @@ use crate::error::Result;
 use crate::liggghts::die_compaction::DieStroke;
 use crate::peer_deck::{DUMP_COLUMNS, Exported, dump_format, neighbor_skin};
 use crate::process::die_compaction_file::DieCompactionFile;
-use crate::process::die_replay;
-use crate::scene;
+use crate::process::{cycle_replay, die_replay};
 use crate::scene::walls::Curvature;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -85,7 +84,18 @@ pub fn die_refusals(file: &DieCompactionFile) -> Vec<(String, String)> {
             "LAMMPS's zcylinder wall gives the die contact the effective radius R r_w/(R + r_w) with r_w = -2 R_c (fix_wall_gran.cpp); tamp's default \"flat\" die takes R, a different Hertz stiffness; set \"die_curvature\": \"mean\" for LAMMPS's contact".into(),
         ));
     }
-    out.extend(die_replay::cycle_refusals(file));
+    if dc.unload.is_some() && dc.eject.is_none() {
+        out.push((
+            "die_compaction.unload".into(),
+            "the cycle's deck replays tamp's cycle through the ejection: give die_compaction.eject too, or leave unload out to export the pressing".into(),
+        ));
+    }
+    if dc.relax.is_some() {
+        out.push((
+            "die_compaction.relax".into(),
+            "the cycle's deck ends when the compact has left the die; leave relax out".into(),
+        ));
+    }
     out
 }
 
@@ -130,52 +140,67 @@ fn displacement_table(stroke: &die_replay::Stroke) -> (Vec<f64>, Vec<f64>) {
     (d, c)
 }
 
-/// Fill, flatten and press `file` in tamp, then write the LAMMPS replay deck into
-/// `out_dir`.
+/// Fill, flatten and press `file` in tamp (and take it through its press cycle, when
+/// the file has one), then write the LAMMPS replay deck into `out_dir`.
 pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> Result<Exported> {
     let list = die_refusals(file);
     if !list.is_empty() {
         return Err(crate::error::cannot_export("LAMMPS", list));
     }
-    let (scene, dc) = (file, &file.die_compaction);
     let solid = die_replay::solid_sphere_scene(file);
-    let die_replay::Pressed {
-        specimen,
-        stroke,
-        replay,
-    } = die_replay::press_for_replay(file, &solid)?;
-    let mut probe = replay.clone();
+    let (specimen, replay) = match file.die_compaction.unload {
+        None => {
+            let die_replay::Pressed {
+                specimen,
+                stroke,
+                replay,
+            } = die_replay::press_for_replay(file, &solid)?;
+            (specimen, Replay::Pressing(stroke, replay))
+        }
+        Some(_) => {
+            let (specimen, cycle) = cycle_replay::cycle_for_replay(file)?;
+            let scene = die_replay::replay_scene(&solid, &specimen, &cycle.press)?;
+            (specimen, Replay::Cycle(cycle, scene))
+        }
+    };
+    let (stroke, scene) = match &replay {
+        Replay::Pressing(stroke, scene) => (stroke, scene),
+        Replay::Cycle(cycle, scene) => (&cycle.press, scene),
+    };
+    let mut probe = scene.clone();
     if let Some(t) = probe.contact.tangential.as_mut() {
         t.friction_pairs.clear();
     }
     let model = pair_model(&probe).map_err(|l| crate::error::cannot_export("LAMMPS", l))?;
-    let sim = scene::build(&replay)?.sim;
+    let sim = crate::scene::build(scene)?.sim;
     crate::output::create_dir(out_dir)?;
 
+    let dc = &file.die_compaction;
     let radius = 0.5 * dc.die_diameter;
     let max_r = sim.state().particles.largest_radius();
     let side = radius + 2.0 * max_r;
-    let bounds = [
-        [-side, side],
-        [-side, side],
-        [-2.0 * max_r, specimen.h0 + 2.0 * max_r],
-    ];
+    // The cycle's lower punch lifts the compact out of the die, and its upper punch
+    // goes above it.
+    let top = match &replay {
+        Replay::Pressing(..) => specimen.h0 + 2.0 * max_r,
+        Replay::Cycle(cycle, _) => specimen.h0 + cycle.punch_away() + 2.0 * max_r,
+    };
+    let bounds = [[-side, side], [-side, side], [-2.0 * max_r, top]];
     let p = &sim.state().particles;
     let data = crate::output::data_file::particles_data(
         &sim,
         "LAMMPS",
         sha,
-        &format!(": the flattened specimen of seed {}", scene.scene.seed),
+        &format!(": the flattened specimen of seed {}", file.scene.seed),
         &bounds,
         "Atoms # sphere",
     );
     crate::output::write_atomic(&out_dir.join("particles.data"), data.as_bytes())?;
-    DieStroke::write(out_dir, &stroke, dc)?;
+    DieStroke::write(out_dir, stroke, dc)?;
 
     let particle = &dc.particles.material;
     let material = |name: &str| {
-        scene
-            .scene
+        file.scene
             .materials
             .iter()
             .find(|m| m.name == name)
@@ -188,32 +213,40 @@ pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> R
             .replace("{nu}", &g(m.poisson_ratio.unwrap_or(0.0)))
             .replace("{mu}", &g(mu))
     };
-    let pair = line(
-        particle,
-        scene.scene.contact.friction_between(particle, particle),
-    );
+    let contact = &file.scene.contact;
+    let pair = line(particle, contact.friction_between(particle, particle));
     let wall = line(
         &dc.wall_material,
-        scene
-            .scene
-            .contact
-            .friction_between(particle, &dc.wall_material),
+        contact.friction_between(particle, &dc.wall_material),
     );
     let n = stroke.steps_per_record;
-    let steps = n * stroke.heights.len() as u64;
-    let mut deck = String::new();
-    let notes = vec![
-        format!(
-            "the punch replays the stroke tamp pressed under the pressure ramp (h0 = {} m, {} records of {} steps of {} s)",
-            g(specimen.h0),
-            stroke.heights.len(),
-            n,
-            g(stroke.dt)
-        ),
-        "the die is LAMMPS's infinite zcylinder wall, its contacts with the wall radius -2 R_c (tamp's die_curvature mean); the floor a zplane; the punch a moving region plane".into(),
-    ];
-    let mut notes = notes;
-    if let Some(r) = scene
+    let mut notes = vec![format!(
+        "the punch replays the stroke tamp pressed under the pressure ramp (h0 = {} m, {} records of {} steps of {} s)",
+        g(specimen.h0),
+        stroke.heights.len(),
+        n,
+        g(stroke.dt)
+    )];
+    let (walls, steps, files) = match &replay {
+        Replay::Pressing(..) => {
+            notes.push("the die is LAMMPS's infinite zcylinder wall, its contacts with the wall radius -2 R_c (tamp's die_curvature mean); the floor a zplane; the punch a moving region plane".into());
+            (
+                pressing_walls(&wall, radius, specimen.h0, stroke),
+                n * stroke.heights.len() as u64,
+                vec!["in.tamp", "particles.data", "stroke.json"],
+            )
+        }
+        Replay::Cycle(cycle, _) => {
+            notes.extend(cycle_notes(cycle));
+            write_cycle(out_dir, cycle, dc.die_diameter)?;
+            (
+                cycle_walls(&wall, radius, cycle),
+                cycle.steps(),
+                vec!["in.tamp", "particles.data", "stroke.json", "cycle.json"],
+            )
+        }
+    };
+    if let Some(r) = file
         .scene
         .rotation
         .as_ref()
@@ -224,6 +257,7 @@ pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> R
             r.inertia_scale
         ));
     }
+    let mut deck = String::new();
     for note in &notes {
         let _ = writeln!(deck, "# note: {note}");
     }
@@ -232,8 +266,8 @@ pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> R
         "# LAMMPS (22 Jul 2025) deck exported by tamp {} (commit {})\n# scene '{}', sha256 {sha}, seed {}\n# run: lmp -in in.tamp",
         crate::VERSION,
         crate::GIT_COMMIT,
-        scene.scene.name.replace(['\n', '\r'], " "),
-        scene.scene.seed
+        file.scene.name.replace(['\n', '\r'], " "),
+        file.scene.seed
     );
     deck.push_str(
         "units        si\natom_style   sphere\natom_modify  map array\nboundary     f f f\n\
@@ -244,7 +278,7 @@ pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> R
         "neighbor     {} bin\nneigh_modify delay 0\n\
          # limit_damping is off (not written), as tamp's damping.\npair_style   granular\n\
          pair_coeff   * * {pair}\ntimestep     {}",
-        g(neighbor_skin(&replay, &p.radius)),
+        g(neighbor_skin(scene, &p.radius)),
         g(stroke.dt)
     );
     if let Some(gv) = sim.model().gravity.filter(|gv| gv.norm() > 0.0) {
@@ -258,8 +292,33 @@ pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> R
             g(d.z)
         );
     }
-    let _ = writeln!(
-        deck,
+    deck.push_str(&walls);
+    // One run for the whole replay: LAMMPS's setup before a further `run` would
+    // give the moving regions the velocity 0 (Region::set_velocity at a repeated
+    // step) and kick the particles with the forces of that state.
+    let _ = writeln!(deck, "run          {steps}");
+    crate::output::write_atomic(&out_dir.join("in.tamp"), deck.as_bytes())?;
+    Ok(Exported {
+        particles: p.len(),
+        steps,
+        dt: stroke.dt,
+        files: files.into_iter().map(String::from).collect(),
+        notes,
+    })
+}
+
+/// What the deck replays: the pressing alone, or the whole cycle; each with the
+/// press stage tamp replays it in.
+enum Replay {
+    Pressing(die_replay::Stroke, crate::scene::Scene),
+    Cycle(cycle_replay::CycleStroke, crate::scene::Scene),
+}
+
+/// The pressing's walls: the die an infinite zcylinder and the floor a zplane, both
+/// fixed, the punch a region plane moved by the stroke; thermo and a dump per record.
+fn pressing_walls(wall: &str, radius: f64, h0: f64, stroke: &die_replay::Stroke) -> String {
+    let n = stroke.steps_per_record;
+    format!(
         "fix          die all wall/gran granular {wall} zcylinder {} contacts\n\
          fix          floor all wall/gran granular {wall} zplane 0e0 NULL contacts\n\
          {}\
@@ -275,28 +334,117 @@ pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> R
          dump_modify  dmp format line \"{}\" sort id\n\
          thermo_style custom step time v_punch_fz v_floor_fz v_dz\n\
          thermo_modify norm no lost ignore format float %.17g\n\
-         thermo       {n}",
+         thermo       {n}\n",
         g(radius),
-        punch_displacement(&stroke),
-        g(specimen.h0),
+        punch_displacement(stroke),
+        g(h0),
         dump_format()
-    );
-    // One run for the whole stroke: LAMMPS's setup before a further `run` would
-    // give the moving region the velocity 0 (Region::set_velocity at a repeated
-    // step) and kick the particles with the forces of that state.
-    let _ = writeln!(deck, "run          {steps}");
-    crate::output::write_atomic(&out_dir.join("in.tamp"), deck.as_bytes())?;
-    Ok(Exported {
-        particles: p.len(),
-        steps,
-        dt: stroke.dt,
-        files: vec![
-            "in.tamp".into(),
-            "particles.data".into(),
-            "stroke.json".into(),
-        ],
-        notes,
-    })
+    )
+}
+
+/// The notes a cycle deck carries: its stages and where LAMMPS's die differs from
+/// tamp's.
+fn cycle_notes(cycle: &cycle_replay::CycleStroke) -> Vec<String> {
+    vec![
+        format!(
+            "then the punch rises {} m per step for {} steps (tamp's unloading to release), jumps {} m up, and the floor rises at up to {} m/s (ramp {} s) to the die's mouth in {} steps",
+            g(cycle.unload_rise_per_step),
+            cycle.unload_steps,
+            g(cycle.punch_away()),
+            g(cycle.eject_speed),
+            g(cycle.eject_ramp),
+            cycle.eject_steps
+        ),
+        "the die is a region cylinder from the floor's rest level to the mouth H0, its ends open: its contacts take the wall radius -2 R_c (tamp's die_curvature mean); a particle whose centre is above the mouth has none, where tamp's die has a rim".into(),
+    ]
+}
+
+/// `cycle.json`: the cycle a deck replays, which the verification case replays in
+/// tamp and checks the recorded deck against.
+fn write_cycle(out_dir: &Path, cycle: &cycle_replay::CycleStroke, die_diameter: f64) -> Result<()> {
+    let json = serde_json::to_vec_pretty(&serde_json::json!({
+        "cycle": cycle,
+        "die_diameter": die_diameter,
+    }))
+    .expect("the cycle serialises");
+    crate::output::write_atomic(&out_dir.join("cycle.json"), &json)
+}
+
+/// The cycle's walls, all regions moved by step-indexed variables
+/// (`cycle_replay`): the die a cylinder from 0 to H₀ with open ends, the floor a
+/// plane rising by `fz`, the punch a plane following `dz`. Thermo every K steps
+/// gives what `cycle_replay::CycleReplayRecord` holds; no dump.
+fn cycle_walls(wall: &str, radius: f64, cycle: &cycle_replay::CycleStroke) -> String {
+    let stroke = &cycle.press;
+    let (np, nu, ne) = (cycle.press_steps(), cycle.unload_steps, cycle.unload_end());
+    let n = stroke.steps_per_record;
+    let k = cycle.record_steps;
+    let dt = stroke.dt;
+    let h0 = g(stroke.h0);
+    let (d, c) = displacement_table(stroke);
+    let list = |v: &[f64]| v.iter().map(|&x| g(x)).collect::<Vec<_>>().join(",");
+    // LAMMPS's min() and max() are reductions of vectors, not of two numbers: the
+    // clamps are written with ternary().
+    let (tr, v) = (cycle.eject_ramp, cycle.eject_speed);
+    let rise = match tr > 0.0 {
+        true => format!(
+            "ternary(v_te<{},{}*v_te^2,{}*(v_te-{}))",
+            g(tr),
+            g(0.5 * v / tr),
+            g(v),
+            g(0.5 * tr)
+        ),
+        false => format!("{}*v_te", g(v)),
+    };
+    format!(
+        "# the punch face's displacement (m): the stroke (a lookup, as the pressing's deck),\n\
+         # the unloading's rise per step, and the jump away after step {ne}\n\
+         variable     dzd vector [{}]\n\
+         variable     dzc vector [{}]\n\
+         variable     sp equal ternary(step<{np},step,{np})\n\
+         variable     seg equal 1+floor(v_sp/{n})\n\
+         variable     su equal ternary(step<{ne},step-v_sp,{nu})\n\
+         variable     dz equal v_dzd[v_seg]+v_dzc[v_seg]*(v_sp-{n}*(v_seg-1))+{}*v_su+{}*(step>{ne})\n\
+         # the floor's rise (m): the ejection's speed ramped over {} s, up to the mouth\n\
+         variable     te equal ternary(step>{ne},(step-{ne})*{},0)\n\
+         variable     rise equal {rise}\n\
+         variable     fz equal ternary(v_rise<{h0},v_rise,{h0})\n\
+         region       die cylinder z 0 0 {} 0 {} side in open 1 open 2 units box\n\
+         region       floor plane 0 0 0 0 0 1 side in move NULL NULL v_fz units box\n\
+         region       punch plane 0 0 {} 0 0 -1 side in move NULL NULL v_dz units box\n\
+         fix          die all wall/gran/region granular {wall} region die contacts\n\
+         fix          floor all wall/gran/region granular {wall} region floor contacts\n\
+         fix          punch all wall/gran/region granular {wall} region punch contacts\n\
+         fix          integr all nve/sphere\n\
+         # the particles' forces on the walls (N): minus the walls' on them\n\
+         compute      fpunch all reduce sum f_punch[4]\n\
+         compute      ffloor all reduce sum f_floor[4]\n\
+         compute      fdie all reduce sum f_die[4]\n\
+         variable     punch_fz equal -c_fpunch\n\
+         variable     floor_push equal c_ffloor\n\
+         variable     die_fz equal -c_fdie\n\
+         # the die's outward radial load, the compact's spread <rho^2> and its top\n\
+         variable     radial atom -(f_die[2]*x+f_die[3]*y)/sqrt(x*x+y*y)\n\
+         variable     rho2 atom x*x+y*y\n\
+         variable     top atom z+radius\n\
+         compute      fradial all reduce sum v_radial\n\
+         compute      spread all reduce ave v_rho2\n\
+         compute      ctop all reduce max v_top\n\
+         # the floor's push averaged over the {k} steps up to each record\n\
+         fix          pushmean all ave/time 1 {k} {k} v_floor_push\n\
+         thermo_style custom step v_dz v_fz v_punch_fz v_floor_push f_pushmean v_die_fz c_fradial c_spread c_ctop\n\
+         thermo_modify norm no lost ignore format float %.17g\n\
+         thermo       {k}\n",
+        list(&d),
+        list(&c),
+        g(cycle.unload_rise_per_step),
+        g(cycle.punch_away()),
+        g(cycle.eject_ramp),
+        g(dt),
+        g(radius),
+        g(stroke.h0),
+        g(stroke.h0),
+    )
 }
 
 #[cfg(test)]

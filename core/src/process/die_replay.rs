@@ -27,7 +27,7 @@ use serde::{Deserialize, Serialize};
 const PUNCH: usize = 2;
 
 /// A recorded punch stroke: the heights at equal record intervals.
-#[derive(Clone, Debug, Serialize, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Stroke {
     /// Height of the punch face before the stroke (the specimen's H₀), m.
     pub h0: f64,
@@ -169,6 +169,7 @@ pub fn replay_scene(
     };
     s.time_step.fixed = Some(stroke.dt);
     s.run.duration = Some(stroke.interval * stroke.heights.len() as f64);
+    s.run.steps = None;
     crate::scene::validate::validate(&s)?;
     Ok(s)
 }

@@ -2,6 +2,7 @@
 //! particles' state (a LIGGGHTS input script with several `run` commands, as one
 //! scene block).
 
+pub mod cycle_replay;
 pub mod die_compaction;
 pub mod die_compaction_file;
 pub mod die_compaction_run;

@@ -81,7 +81,7 @@ impl EjectSpec {
     }
 
     /// The time after the start at which the lower punch has risen by `u`, s.
-    fn time_to_rise(&self, u: f64, ramp: f64) -> f64 {
+    pub fn time_to_rise(&self, u: f64, ramp: f64) -> f64 {
         let over_ramp = 0.5 * self.speed * ramp;
         if u <= over_ramp {
             (2.0 * u * ramp / self.speed).sqrt()

@@ -20,6 +20,7 @@ mod hertz_rigid_wall_impact;
 mod hertz_yield_onset;
 mod hollomon_constants;
 mod kuwabara_kono_restitution;
+mod lammps_die_press_cycle;
 mod linear_damped_collision;
 mod linear_restitution;
 mod mdr_curve;
@@ -117,6 +118,7 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ),
     ("liggghts_die_compaction", die_compaction_replay::liggghts),
     ("lammps_die_compaction_small", die_compaction_replay::lammps),
+    ("lammps_die_press_cycle", lammps_die_press_cycle::run),
     ("lammps_settled_packing", settled_packing::lammps),
 ];
 

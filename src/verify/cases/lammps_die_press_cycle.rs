@@ -1,0 +1,243 @@
+//! `lammps_die_press_cycle`: the whole press cycle of a small compact in tamp and in
+//! LAMMPS 22 Jul 2025, along the same prescribed wall motion (`process::cycle_replay`).
+//!
+//! tamp fills, flattens, presses and unloads the specimen of the case's scene under
+//! its own load control, and `tamp export-lammps` writes what it did as a deck:
+//! the recorded stroke to the peak, the punch rising at the unloading speed for as
+//! many steps as tamp took to release the compact, then the punch taken away and the
+//! lower punch pushing the compact out of the die. LAMMPS ran that deck
+//! (`reference_data/lammps/lammps_die_press_cycle/`); tamp replays the same motion
+//! from the same specimen here. Both are measured from their records by one function
+//! (`cycle_replay::quantities`): the pressure transmission ratio and Janssen's K at
+//! the peak, the work returned to the withdrawing punch, the die's residual radial
+//! force at release, the peak ejection force and the work of ejection, and the
+//! ejected compact's height and radial springback.
+//!
+//! The case also checks that the recorded deck is the one tamp would export now:
+//! the scene's sha256 in its header, the specimen's H₀ and the cycle in `cycle.json`
+//! (which tamp replays). The report gets both codes' records and a plot of the
+//! cycle with LAMMPS's `mdr` cycle of the same specimen beside them
+//! (`mdr/results.csv` in the recorded directory).
+
+use crate::error::{Result, TampError};
+use crate::plot::{Panel, Series, write_svg};
+use crate::process::cycle_replay::{self, CycleReplayRecord, CycleStroke};
+use crate::verify::store::key_of;
+use crate::verify::{CaseContext, Measured};
+use serde::Deserialize;
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// One record of LAMMPS's run (`rows.py` from the deck's thermo output).
+#[derive(Debug, Deserialize)]
+struct Row {
+    seed: u64,
+    step: u64,
+    punch_face: f64,
+    floor_rise: f64,
+    punch_force: f64,
+    floor_force: f64,
+    floor_force_mean: f64,
+    die_axial_force: f64,
+    die_radial_force: f64,
+    mean_square_radius: f64,
+    top: f64,
+}
+
+impl Row {
+    fn record(&self) -> CycleReplayRecord {
+        CycleReplayRecord {
+            step: self.step,
+            punch_face: self.punch_face,
+            floor_rise: self.floor_rise,
+            punch_force: self.punch_force,
+            floor_force: self.floor_force,
+            floor_force_mean: self.floor_force_mean,
+            die_axial_force: self.die_axial_force,
+            die_radial_force: self.die_radial_force,
+            mean_square_radius: self.mean_square_radius,
+            top: self.top,
+        }
+    }
+}
+
+/// One record of LAMMPS's `mdr` cycle of the same specimen (`mdr/results.csv`).
+#[derive(Debug, Deserialize)]
+struct MdrRow {
+    punch_face: f64,
+    floor_rise: f64,
+    punch_force: f64,
+    floor_force_mean: f64,
+}
+
+/// `cycle.json` of a recorded deck.
+#[derive(Debug, Deserialize)]
+struct Recorded {
+    cycle: CycleStroke,
+}
+
+pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
+    let rows: Vec<Row> = ctx.peer_results("lammps")?;
+    let file = ctx.die_compaction()?;
+    let seed = rows
+        .first()
+        .map(|r| r.seed)
+        .ok_or_else(|| TampError::Other("results.csv has no rows".into()))?;
+    if rows.iter().any(|r| r.seed != seed) || file.scene.seed != seed {
+        return Err(TampError::Other(format!(
+            "results.csv: one seed, the scene's ({}), is recorded",
+            file.scene.seed
+        )));
+    }
+    let theirs: Vec<CycleReplayRecord> = rows.iter().map(Row::record).collect();
+    let recorded = ctx.reference_data_dir().join("lammps").join(&ctx.spec.name);
+    let scene_path = ctx.dir.join(ctx.spec.scene.as_deref().unwrap_or_default());
+    let sha = crate::scene::read_input(&scene_path)?.sha256;
+    let cycle = recorded_cycle(&recorded.join(format!("seed{seed}")), &sha)?;
+    let store = ctx.store()?;
+    let mine: Vec<CycleReplayRecord> = store.cached(
+        &format!("seed{seed}.cycle_replay.json"),
+        &key_of(&(&file, &cycle)),
+        || {
+            let specimen = super::die_specimen::prepare(&file)?;
+            if specimen.h0 != cycle.press.h0 {
+                return Err(TampError::Other(format!(
+                    "the recorded deck was exported for a specimen of H0 = {:e} m; tamp now fills one of {:e} m: re-record (regenerate.sh)",
+                    cycle.press.h0, specimen.h0
+                )));
+            }
+            cycle_replay::replay(&file, &specimen, &cycle)
+        },
+    )?;
+    let radius = 0.5 * file.die_compaction.die_diameter;
+    let ours = cycle_replay::quantities(&mine, &cycle, radius)?;
+    let peer = cycle_replay::quantities(&theirs, &cycle, radius)?;
+    let mdr = read_mdr(&recorded.join("mdr").join("results.csv"))?;
+    write_report(ctx, &cycle, &[("tamp", &mine), ("LAMMPS", &theirs)], &mdr)?;
+    Ok(ours
+        .into_iter()
+        .zip(peer)
+        .map(|((name, a), (_, b))| Measured::new(&name, a, b))
+        .collect())
+}
+
+/// The cycle a recorded deck replays, when the deck is the one tamp would export
+/// from this scene (its sha256 in the deck's header).
+fn recorded_cycle(dir: &Path, sha: &str) -> Result<CycleStroke> {
+    let read = |name: &str| {
+        let path = dir.join(name);
+        std::fs::read_to_string(&path)
+            .map_err(|e| TampError::io(format!("reading {}", path.display()), e))
+    };
+    let deck = read("in.tamp")?;
+    let recorded_sha = deck.split("sha256 ").nth(1).map(|rest| {
+        rest.split(|c: char| !c.is_ascii_hexdigit())
+            .next()
+            .unwrap_or_default()
+    });
+    if recorded_sha != Some(sha) {
+        return Err(TampError::Other(format!(
+            "{}: in.tamp was exported from another version of the scene (now sha256 {sha}): the recorded deck is stale, re-record (regenerate.sh)",
+            dir.display()
+        )));
+    }
+    let recorded: Recorded = serde_json::from_str(&read("cycle.json")?)
+        .map_err(|e| TampError::Other(format!("{}/cycle.json: {e}", dir.display())))?;
+    Ok(recorded.cycle)
+}
+
+fn read_mdr(path: &Path) -> Result<Vec<MdrRow>> {
+    csv::Reader::from_path(path)
+        .and_then(|mut r| r.deserialize().collect::<std::result::Result<Vec<_>, _>>())
+        .map_err(|e| TampError::Other(format!("{}: {e}", path.display())))
+}
+
+/// `<case>_records.csv` (both codes' records) and `<case>_cycle.svg`: the upper
+/// punch's push against its face through pressing and unloading, and the lower
+/// punch's mean push against its rise through the ejection, with the mdr cycle.
+fn write_report(
+    ctx: &CaseContext,
+    cycle: &CycleStroke,
+    codes: &[(&str, &Vec<CycleReplayRecord>)],
+    mdr: &[MdrRow],
+) -> Result<()> {
+    let mut csv = String::from(
+        "code,step,punch_face,floor_rise,punch_force,floor_force,floor_force_mean,die_axial_force,die_radial_force,mean_square_radius,top\n",
+    );
+    for (code, records) in codes {
+        for r in records.iter() {
+            let _ = writeln!(
+                csv,
+                "{code},{},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e}",
+                r.step,
+                r.punch_face,
+                r.floor_rise,
+                r.punch_force,
+                r.floor_force,
+                r.floor_force_mean,
+                r.die_axial_force,
+                r.die_radial_force,
+                r.mean_square_radius,
+                r.top
+            );
+        }
+    }
+    crate::output::create_dir(&ctx.report_dir)?;
+    crate::output::write_atomic(
+        &ctx.report_dir
+            .join(format!("{}_records.csv", ctx.spec.name)),
+        csv.as_bytes(),
+    )?;
+    let um = 1e6;
+    let mut press = Vec::new();
+    let mut eject = Vec::new();
+    for (code, records) in codes {
+        let to_release = records.iter().filter(|r| r.step <= cycle.unload_end());
+        press.push(Series::line(
+            &format!("{code}, Hertz"),
+            to_release.map(|r| (r.punch_face * um, r.punch_force)).collect(),
+        ));
+        let ejecting = records.iter().filter(|r| r.step > cycle.unload_end());
+        eject.push(Series::line(
+            &format!("{code}, Hertz"),
+            ejecting
+                .map(|r| (r.floor_rise * um, r.floor_force_mean))
+                .collect(),
+        ));
+    }
+    press.push(Series::line(
+        "LAMMPS, mdr",
+        mdr.iter()
+            .filter(|r| r.floor_rise == 0.0 && r.punch_force > 0.0)
+            .map(|r| (r.punch_face * um, r.punch_force))
+            .collect(),
+    ));
+    eject.push(Series::line(
+        "LAMMPS, mdr",
+        mdr.iter()
+            .filter(|r| r.floor_rise > 0.0)
+            .map(|r| (r.floor_rise * um, r.floor_force_mean))
+            .collect(),
+    ));
+    write_svg(
+        &ctx.report_dir.join(format!("{}_cycle.svg", ctx.spec.name)),
+        &[
+            Panel {
+                title: "pressing and unloading",
+                x_label: "upper punch face (um)",
+                y_label: "push on the upper punch (N)",
+                log_x: false,
+                log_y: false,
+                series: &press,
+            },
+            Panel {
+                title: "ejection",
+                x_label: "lower punch rise (um)",
+                y_label: "push on the lower punch, mean over a record (N)",
+                log_x: false,
+                log_y: false,
+                series: &eject,
+            },
+        ],
+    )
+}
