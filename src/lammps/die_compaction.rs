@@ -269,8 +269,15 @@ pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> R
         file.scene.name.replace(['\n', '\r'], " "),
         file.scene.seed
     );
-    deck.push_str(
-        "units        si\natom_style   sphere\natom_modify  map array\nboundary     f f f\n\
+    // The ejected compact is free to spread beyond the die, so the cycle's box is
+    // shrink-wrapped (m): with fixed bounds, LAMMPS would drop a particle that left.
+    let boundary = match &replay {
+        Replay::Pressing(..) => "f f f",
+        Replay::Cycle(..) => "m m m",
+    };
+    let _ = write!(
+        deck,
+        "units        si\natom_style   sphere\natom_modify  map array\nboundary     {boundary}\n\
          newton       off\ncomm_modify  vel yes\nread_data    particles.data\n",
     );
     let _ = writeln!(
@@ -433,7 +440,7 @@ fn cycle_walls(wall: &str, radius: f64, cycle: &cycle_replay::CycleStroke) -> St
          # the floor's push averaged over the {k} steps up to each record\n\
          fix          pushmean all ave/time 1 {k} {k} v_floor_push\n\
          thermo_style custom step v_dz v_fz v_punch_fz v_floor_push f_pushmean v_die_fz c_fradial c_spread c_ctop\n\
-         thermo_modify norm no lost ignore format float %.17g\n\
+         thermo_modify norm no lost error format float %.17g\n\
          thermo       {k}\n",
         list(&d),
         list(&c),

@@ -13,7 +13,8 @@ as tamp's own cycle is, in three runs:
   eject:  it is taken away and the floor rises as in the Hertz deck (the same ramp
           and speed) to the die's mouth.
 A new run starts a moving region at rest for one step (Region::set_velocity):
-negligible beside the stage's own change of speed.
+negligible beside the stage's own change of speed. The box is shrink-wrapped
+(boundary m): the ejected mdr compact sheds particles past the Hertz deck's fixed box.
 usage: write_deck.py CYCLE_JSON OUT_DECK"""
 import json, math, sys
 
@@ -33,7 +34,7 @@ deck = f"""# The mdr press cycle of lammps_die_press_cycle's specimen (write_dec
 units        si
 atom_style   sphere 1
 atom_modify  map array
-boundary     f f f
+boundary     m m m
 newton       off
 comm_modify  vel yes
 read_data    particles.data
@@ -62,14 +63,14 @@ thermo_style custom step v_dz v_fz v_punch_fz v_floor_push f_pushmean
 thermo_modify norm no lost ignore format float %.17g
 thermo       {k}
 # press to 50 MPa
-fix          stop all halt {k} v_punch_fz > {50e6 * area!r} error continue
+fix          stop all halt 1 v_punch_fz > {50e6 * area!r} error continue
 run          {int(round(0.3 * h0 / v_press / dt))}
 unfix        stop
 # unload until released
 variable     z0 equal $(v_dz:%.17g)
 variable     s0 equal $(step)
 variable     dz equal v_z0+{v_unload * dt!r}*(step-v_s0)
-fix          stop all halt {k} v_punch_fz <= 0 error continue
+fix          stop all halt 1 v_punch_fz <= 0 error continue
 run          {int(round(0.3 * h0 / v_unload / dt))}
 unfix        stop
 # eject: the punch away, the floor up to the mouth
