@@ -133,7 +133,9 @@ impl CycleStroke {
     }
 
     /// The punch face's displacement from H₀ as an expression of t: the stroke, the
-    /// unloading's constant rise, and the jump away over the ejection's first step.
+    /// unloading's constant rise, and the jump away over the ejection's first step
+    /// (0 until N_e and 1 from N_e + 1 with half a step to spare either side, since
+    /// t is the running sum of the steps and may stray from k Δt by a few ulps).
     pub fn punch_expression(&self) -> String {
         let dt = self.press.dt;
         let (tp, tu) = (
@@ -141,7 +143,7 @@ impl CycleStroke {
             self.unload_steps as f64 * dt,
         );
         format!(
-            "{} + {:e} * min(max(t - {tp:e}, 0.0), {tu:e}) + {:e} * min(max((t - {:e}) / {dt:e}, 0.0), 1.0)",
+            "{} + {:e} * min(max(t - {tp:e}, 0.0), {tu:e}) + {:e} * min(max(2.0 * (t - {:e}) / {dt:e} - 0.5, 0.0), 1.0)",
             self.press.displacement(),
             self.unload_rise_per_step / dt,
             self.punch_away(),

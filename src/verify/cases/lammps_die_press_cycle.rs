@@ -70,6 +70,33 @@ struct MdrRow {
     floor_force_mean: f64,
 }
 
+/// `<case>_round_off.csv`: each quantity in tamp, LAMMPS and tamp from every initial
+/// x moved by one ulp, with the two differences from tamp's value.
+fn write_chaos(
+    ctx: &CaseContext,
+    ours: &[(String, f64)],
+    peer: &[(String, f64)],
+    nudged: &[(String, f64)],
+) -> Result<()> {
+    let mut csv = String::from(
+        "quantity,tamp,lammps,tamp_one_ulp,relative_difference_lammps,relative_difference_one_ulp\n",
+    );
+    for (((name, a), (_, b)), (_, c)) in ours.iter().zip(peer).zip(nudged) {
+        let _ = writeln!(
+            csv,
+            "{name},{a:e},{b:e},{c:e},{:e},{:e}",
+            (b - a) / a.abs(),
+            (c - a) / a.abs()
+        );
+    }
+    crate::output::create_dir(&ctx.report_dir)?;
+    crate::output::write_atomic(
+        &ctx.report_dir
+            .join(format!("{}_round_off.csv", ctx.spec.name)),
+        csv.as_bytes(),
+    )
+}
+
 /// `cycle.json` of a recorded deck.
 #[derive(Debug, Deserialize)]
 struct Recorded {
@@ -95,30 +122,74 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let sha = crate::scene::read_input(&scene_path)?.sha256;
     let cycle = recorded_cycle(&recorded.join(format!("seed{seed}")), &sha)?;
     let store = ctx.store()?;
-    let mine: Vec<CycleReplayRecord> = store.cached(
-        &format!("seed{seed}.cycle_replay.json"),
-        &key_of(&(&file, &cycle)),
-        || {
-            let specimen = super::die_specimen::prepare(&file)?;
+    // The replay, and the same from every initial x moved by one ulp: what tamp gives
+    // against itself is the size round-off grows to in this scene, the floor under any
+    // agreement of two codes that round differently.
+    let runs = ctx.map(&[false, true], |&nudged| {
+        let name = match nudged {
+            false => format!("seed{seed}.cycle_replay.json"),
+            true => format!("seed{seed}.cycle_replay_ulp.json"),
+        };
+        store.cached(&name, &key_of(&(&file, &cycle, nudged)), || {
+            let mut specimen = super::die_specimen::prepare(&file)?;
             if specimen.h0 != cycle.press.h0 {
                 return Err(TampError::Other(format!(
                     "the recorded deck was exported for a specimen of H0 = {:e} m; tamp now fills one of {:e} m: re-record (regenerate.sh)",
                     cycle.press.h0, specimen.h0
                 )));
             }
+            if nudged {
+                for p in &mut specimen.particles {
+                    p.position[0] = p.position[0].next_up();
+                }
+            }
             cycle_replay::replay(&file, &specimen, &cycle)
-        },
-    )?;
+        })
+    });
+    let mut runs = runs.into_iter();
+    let (mine, nudged) = match (runs.next(), runs.next()) {
+        (Some(a), Some(b)) => (a?, b?),
+        _ => unreachable!("two replays"),
+    };
     let radius = 0.5 * file.die_compaction.die_diameter;
     let ours = cycle_replay::quantities(&mine, &cycle, radius)?;
     let peer = cycle_replay::quantities(&theirs, &cycle, radius)?;
+    let floor = cycle_replay::quantities(&nudged, &cycle, radius)?;
+    write_chaos(ctx, &ours, &peer, &floor)?;
     let mdr = read_mdr(&recorded.join("mdr").join("results.csv"))?;
     write_report(ctx, &cycle, &[("tamp", &mine), ("LAMMPS", &theirs)], &mdr)?;
-    Ok(ours
+    let mut out: Vec<Measured> = ours
         .into_iter()
         .zip(peer)
         .map(|((name, a), (_, b))| Measured::new(&name, a, b))
-        .collect())
+        .collect();
+    out.push(Measured::new(
+        "wall_motion_difference",
+        motion_difference(&mine, &theirs)?,
+        0.0,
+    ));
+    Ok(out)
+}
+
+/// The largest difference between the two codes' punch faces and lower punch rises
+/// over their records (m): that the deck's step-indexed variables move LAMMPS's
+/// regions where tamp's displacement expressions move its walls, record by record.
+fn motion_difference(a: &[CycleReplayRecord], b: &[CycleReplayRecord]) -> Result<f64> {
+    if a.len() != b.len() || a.iter().zip(b).any(|(x, y)| x.step != y.step) {
+        return Err(TampError::Other(format!(
+            "the codes recorded different steps ({} and {} records)",
+            a.len(),
+            b.len()
+        )));
+    }
+    Ok(a.iter()
+        .zip(b)
+        .map(|(x, y)| {
+            (x.punch_face - y.punch_face)
+                .abs()
+                .max((x.floor_rise - y.floor_rise).abs())
+        })
+        .fold(0.0, f64::max))
 }
 
 /// The cycle a recorded deck replays, when the deck is the one tamp would export
