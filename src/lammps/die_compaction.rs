@@ -486,7 +486,7 @@ mod tests {
         flat.die_compaction.die_curvature = Curvature::Flat;
         let paths: Vec<String> = die_refusals(&flat).into_iter().map(|(p, _)| p).collect();
         assert_eq!(paths, ["die_compaction.die_curvature"]);
-        // The replay stops at the peak: a press cycle is refused, not dropped.
+        // A cycle without its ejection is refused, not cut short.
         let mut cycle = scene("lammps_die_compaction_small");
         cycle.die_compaction.unload = Some(crate::process::press_cycle::UnloadSpec {
             speed: 0.05,
@@ -494,6 +494,15 @@ mod tests {
         });
         let paths: Vec<String> = die_refusals(&cycle).into_iter().map(|(p, _)| p).collect();
         assert_eq!(paths, ["die_compaction.unload"]);
+        // The cycle's deck goes through the ejection and ends there.
+        let mut cycle = scene("lammps_die_press_cycle");
+        assert!(die_refusals(&cycle).is_empty());
+        cycle.die_compaction.relax = Some(crate::process::press_cycle::RelaxSpec {
+            duration: 1e-6,
+            records: 1,
+        });
+        let paths: Vec<String> = die_refusals(&cycle).into_iter().map(|(p, _)| p).collect();
+        assert_eq!(paths, ["die_compaction.relax"]);
     }
 
     /// The replay's die is the pressing's: a cylinder of the die's radius with the

@@ -312,3 +312,29 @@ fn write_report(
         ],
     )
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Cheap staleness check of the recorded deck (no fill, no replay): the scene's
+    /// hash in its header, and its cycle the one results.csv was run along (the last
+    /// record at the cycle's last step, the first at the specimen's H₀).
+    #[test]
+    fn the_recorded_deck_is_the_scenes_and_its_records_the_cycles() {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+        let recorded = root.join("reference_data/lammps/lammps_die_press_cycle");
+        let scene = root.join("verification/lammps_die_press_cycle.scene.json");
+        let sha = crate::scene::read_input(&scene).unwrap().sha256;
+        let cycle = recorded_cycle(&recorded.join("seed1"), &sha).unwrap();
+        assert!(recorded_cycle(&recorded.join("seed1"), &sha[..8]).is_err());
+        let rows: Vec<Row> = csv::Reader::from_path(recorded.join("results.csv"))
+            .unwrap()
+            .deserialize()
+            .collect::<std::result::Result<_, _>>()
+            .unwrap();
+        assert_eq!(rows[0].punch_face, cycle.press.h0);
+        assert_eq!(rows.last().unwrap().step, cycle.steps());
+        assert_eq!(rows.len() as u64, cycle.steps() / cycle.record_steps + 1);
+    }
+}
