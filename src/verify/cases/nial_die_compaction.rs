@@ -27,6 +27,7 @@ use crate::error::{Result, TampError};
 use crate::plot::{Panel, Series, write_svg};
 use crate::process::die_compaction::{self, PressRecord, PressState, Pressing, Specimen};
 use crate::process::die_compaction_file::DieCompactionFile;
+use crate::process::press_cycle::{self, Cycle, EjectSpec, UnloadSpec};
 use crate::scene::schema::HollomonSpec;
 use crate::verify::store::{Store, key_of};
 use crate::verify::{CaseContext, Measured};
@@ -48,12 +49,30 @@ struct Model {
     storakers: Option<(f64, f64)>,
     /// Friction between particles (the die wall keeps the scene's 0.02).
     friction: f64,
+    /// Whether the pressing goes on through the press cycle (`CYCLE_UNLOAD`,
+    /// `CYCLE_EJECT`).
+    cycle: bool,
 }
 
 const HERTZ: Model = Model {
     label: "hertz",
     storakers: None,
     friction: 0.0,
+    cycle: true,
+};
+
+/// The frictionless pressings go on through the press cycle: the upper punch
+/// withdrawn at 0.05 m/s (the unloading of `die_press_cycle`, a twentieth of the
+/// pressing's mean punch speed at 50 MPa under Storåkers) and the compact pushed out
+/// at up to 1 m/s, as `nial_die_compaction_small_cycle` does.
+const CYCLE_UNLOAD: UnloadSpec = UnloadSpec {
+    speed: 0.05,
+    record_interval: 2e-7,
+};
+const CYCLE_EJECT: EjectSpec = EjectSpec {
+    speed: 1.0,
+    records: 40,
+    ramp_time: None,
 };
 
 /// Rojek §5: the three Hollomon pairs (m, σ₀).
@@ -78,11 +97,13 @@ fn full_models() -> Vec<Model> {
         label,
         storakers: Some((STORAKERS[k].0, STORAKERS[k].1)),
         friction,
+        cycle: friction == 0.0,
     };
     let hertz = |friction: f64, label: &'static str| Model {
         label,
         storakers: None,
         friction,
+        cycle: false,
     };
     let (mu, h, s) = (
         FRICTIONS.map(|f| f.0),
@@ -125,6 +146,10 @@ fn with_model(scene: &DieCompactionFile, model: &Model) -> Result<DieCompactionF
             });
         }
     }
+    if model.cycle {
+        s.die_compaction.unload = Some(CYCLE_UNLOAD);
+        s.die_compaction.eject = Some(CYCLE_EJECT);
+    }
     s.validate()?;
     Ok(s)
 }
@@ -133,10 +158,13 @@ fn with_model(scene: &DieCompactionFile, model: &Model) -> Result<DieCompactionF
 /// 2–5 million steps; a checkpoint is a few MB of JSON).
 const CHECKPOINT_EVERY: u64 = 200_000;
 
-/// A finished pressing and the wall time it took (over all sessions it ran in).
+/// A finished pressing, with its press cycle when it has one, and the wall time it
+/// took (over all sessions it ran in).
 #[derive(Serialize, Deserialize)]
 struct Done {
     pressing: Pressing,
+    #[serde(default)]
+    cycle: Option<Cycle>,
     wall_s: f64,
 }
 
@@ -174,10 +202,19 @@ fn press_all(
             let wall = earlier_wall + started.elapsed().as_secs_f64();
             store.save(&checkpoint_file, &key, &(state, wall))
         };
-        let pressing =
-            die_compaction::press(&s, specimen, false, resume, CHECKPOINT_EVERY, &mut save)?.0;
+        let (pressing, sim) =
+            die_compaction::press(&s, specimen, false, resume, CHECKPOINT_EVERY, &mut save)?;
+        // An interrupted cycle starts again from the checkpoint at the peak.
+        let cycle = match s.die_compaction.unload {
+            Some(_) => {
+                let fixed = die_compaction::press_scene(&s, specimen)?.time_step.fixed;
+                Some(press_cycle::run(&s, specimen, &pressing, sim, fixed, false)?)
+            }
+            None => None,
+        };
         let done = Done {
             pressing,
+            cycle,
             wall_s: earlier_wall + started.elapsed().as_secs_f64(),
         };
         store.save(&done_file, &key, &done)?;
@@ -282,11 +319,15 @@ pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {
         specimen.h0, specimen.density_specimen, specimen.density_rve
     );
     let models = full_models();
+    let done = press_all(ctx, &scene, &specimen, &models, &store)?;
+    let cycles: Vec<(&str, &Cycle)> = models
+        .iter()
+        .zip(&done)
+        .filter_map(|(m, d)| d.cycle.as_ref().map(|c| (m.label, c)))
+        .collect();
+    write_cycles(ctx, &cycles)?;
     let (pressings, walls): (Vec<Pressing>, Vec<f64>) =
-        press_all(ctx, &scene, &specimen, &models, &store)?
-            .into_iter()
-            .map(|d| (d.pressing, d.wall_s))
-            .unzip();
+        done.iter().map(|d| (d.pressing.clone(), d.wall_s)).unzip();
     let mut timing = String::from("model,steps,wall_s\n");
     for ((m, p), w) in models.iter().zip(&pressings).zip(&walls) {
         timing.push_str(&format!("{},{},{w:.1}\n", m.label, p.steps));
@@ -392,7 +433,18 @@ pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let rve0 = specimen.density_rve;
     let first = hertz.records.first().expect("records");
     let ten = 10e6;
-    Ok(vec![
+    let mut out = Vec::new();
+    for (label, c) in &cycles {
+        out.push(Measured::new(
+            &format!("unloading_work_{label}"),
+            c.summary
+                .unloading_work
+                .ok_or_else(|| TampError::Other(format!("the {label} cycle did not unload")))?,
+            unloading_book(c)?,
+        ));
+    }
+    Ok([
+        vec![
         Measured::new("initial_density_specimen", specimen.density_specimen, 0.62),
         Measured::new("initial_density_rve", rve0, 0.66),
         Measured::new(
@@ -426,5 +478,98 @@ pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {
             at(find("hertz_mu0.05"), ten, |r| r.density_rve)? - at(hertz, ten, |r| r.density_rve)?,
             0.0,
         ),
-    ])
+        ],
+        out,
+    ]
+    .concat())
+}
+
+/// What the compact gives back to the withdrawing punch by the energy book: the
+/// energy its contacts stored at the peak less what they still store, with the change
+/// of the particles' kinetic energy, less what the dashpots, the die wall's friction
+/// and (Storåkers) the plastic flow of the unloading took.
+fn unloading_book(c: &Cycle) -> Result<f64> {
+    let s = &c.summary;
+    let missing = || TampError::Other("the cycle did not unload".into());
+    let stored = s.stored_energy.ok_or_else(missing)?;
+    let kinetic = s.kinetic_energy.ok_or_else(missing)?;
+    Ok(stored[0] - stored[1] + kinetic[0] - kinetic[1]
+        - s.unloading_dissipation.ok_or_else(missing)?)
+}
+
+/// `<case>_cycle.csv` (each cycle's quantities, one row per law),
+/// `<case>_cycle_series.csv` (their records) and `<case>_cycle.svg`: the upper
+/// punch's pressure against the specimen's density through pressing and unloading,
+/// and the lower punch's push against its rise through the ejection.
+fn write_cycles(ctx: &CaseContext, cycles: &[(&str, &Cycle)]) -> Result<()> {
+    let name = &ctx.spec.name;
+    let mut table = String::new();
+    let mut series = String::new();
+    for (k, (label, c)) in cycles.iter().enumerate() {
+        let q = c.summary.quantities();
+        if k == 0 {
+            let names: Vec<&str> = q.iter().map(|(n, _)| n.as_str()).collect();
+            table.push_str(&format!("model,{}\n", names.join(",")));
+        }
+        let values: Vec<String> = q.iter().map(|(_, v)| format!("{v:e}")).collect();
+        table.push_str(&format!("{label},{}\n", values.join(",")));
+        for (j, line) in press_cycle::series_csv(&c.records).lines().enumerate() {
+            match (k, j) {
+                (0, 0) => series.push_str(&format!("model,{line}\n")),
+                (_, 0) => {}
+                _ => series.push_str(&format!("{label},{line}\n")),
+            }
+        }
+    }
+    crate::output::write_atomic(
+        &ctx.report_dir.join(format!("{name}_cycle.csv")),
+        table.as_bytes(),
+    )?;
+    crate::output::write_atomic(
+        &ctx.report_dir.join(format!("{name}_cycle_series.csv")),
+        series.as_bytes(),
+    )?;
+    let loading: Vec<Series> = cycles
+        .iter()
+        .map(|(label, c)| {
+            let points = c
+                .records
+                .iter()
+                .filter(|r| matches!(r.stage, press_cycle::Stage::Press | press_cycle::Stage::Unload))
+                .map(|r| (r.density_specimen, r.upper_punch / 1e6));
+            Series::line(label, points.collect())
+        })
+        .collect();
+    let ejection: Vec<Series> = cycles
+        .iter()
+        .map(|(label, c)| {
+            let points = c
+                .records
+                .iter()
+                .filter(|r| r.stage == press_cycle::Stage::Eject)
+                .map(|r| (r.ejection * 1e6, r.lower_punch / 1e6));
+            Series::line(label, points.collect())
+        })
+        .collect();
+    write_svg(
+        &ctx.report_dir.join(format!("{name}_cycle.svg")),
+        &[
+            Panel {
+                title: "NiAl press cycle: pressing and unloading, μ = 0",
+                x_label: "relative density (specimen)",
+                y_label: "upper punch pressure (MPa)",
+                log_x: false,
+                log_y: false,
+                series: &loading,
+            },
+            Panel {
+                title: "NiAl press cycle: ejection",
+                x_label: "lower punch rise (µm)",
+                y_label: "lower punch pressure (MPa)",
+                log_x: false,
+                log_y: false,
+                series: &ejection,
+            },
+        ],
+    )
 }
