@@ -10,9 +10,9 @@
 //! - unload, steps N_p … N_e = N_p + N_u: the punch rises at the unloading speed v_u
 //!   for the N_u steps tamp took to release the compact (rounded up to a record);
 //! - eject, steps after N_e: the punch is taken far above the die in one step, and the
-//!   lower punch (the floor) rises by
-//!     u(t') = v (min(t', T_r)² / (2 T_r) + max(t' − T_r, 0)),  t' = t − N_e Δt,
-//!   capped at the die's mouth H₀: the linear speed ramp of `press_cycle`'s ejection.
+//!   lower punch (the floor) rises by u(t') = v (min(t', T_r)² / (2 T_r) +
+//!   max(t' − T_r, 0)) with t' = t − N_e Δt, capped at the die's mouth H₀: the linear
+//!   speed ramp of `press_cycle`'s ejection.
 //!
 //! Every position is a function of the step alone, so the same motion is written once
 //! for tamp (`displacement` motions, whose chord over a step is the wall's velocity,
@@ -160,7 +160,10 @@ impl CycleStroke {
             true => format!("min(max(t - {te:e}, 0.0), {tr:e})^2 / {:e}", 2.0 * tr),
             false => "0.0".into(),
         };
-        format!("min({v:e} * ({ramped} + max(t - {:e}, 0.0)), {h0:e})", te + tr)
+        format!(
+            "min({v:e} * ({ramped} + max(t - {:e}, 0.0)), {h0:e})",
+            te + tr
+        )
     }
 }
 
@@ -229,7 +232,11 @@ pub fn replay(
     let record = |sim: &crate::simulation::Simulation, mean: f64| {
         let s = sim.state();
         let p = &s.particles;
-        let spread = p.position.iter().map(|x| x.x * x.x + x.y * x.y).sum::<f64>();
+        let spread = p
+            .position
+            .iter()
+            .map(|x| x.x * x.x + x.y * x.y)
+            .sum::<f64>();
         CycleReplayRecord {
             step: s.step,
             punch_face: h0 + s.walls[PUNCH].displacement.z,
@@ -278,9 +285,10 @@ pub fn quantities(
     die_radius: f64,
 ) -> Result<Vec<(String, f64)>> {
     let at = |step: u64| {
-        records.iter().find(|r| r.step == step).ok_or_else(|| {
-            TampError::Other(format!("the replay has no record at step {step}"))
-        })
+        records
+            .iter()
+            .find(|r| r.step == step)
+            .ok_or_else(|| TampError::Other(format!("the replay has no record at step {step}")))
     };
     let (peak, released) = (at(cycle.press_steps())?, at(cycle.unload_end())?);
     let last = at(cycle.steps())?;

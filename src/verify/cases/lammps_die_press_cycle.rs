@@ -266,7 +266,9 @@ fn write_report(
         let to_release = records.iter().filter(|r| r.step <= cycle.unload_end());
         press.push(Series::line(
             &format!("{code}, Hertz"),
-            to_release.map(|r| (r.punch_face * um, r.punch_force)).collect(),
+            to_release
+                .map(|r| (r.punch_face * um, r.punch_force))
+                .collect(),
         ));
         let ejecting = records.iter().filter(|r| r.step > cycle.unload_end());
         eject.push(Series::line(

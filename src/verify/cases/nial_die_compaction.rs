@@ -208,7 +208,9 @@ fn press_all(
         let cycle = match s.die_compaction.unload {
             Some(_) => {
                 let fixed = die_compaction::press_scene(&s, specimen)?.time_step.fixed;
-                Some(press_cycle::run(&s, specimen, &pressing, sim, fixed, false)?)
+                Some(press_cycle::run(
+                    &s, specimen, &pressing, sim, fixed, false,
+                )?)
             }
             None => None,
         };
@@ -445,39 +447,40 @@ pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {
     }
     Ok([
         vec![
-        Measured::new("initial_density_specimen", specimen.density_specimen, 0.62),
-        Measured::new("initial_density_rve", rve0, 0.66),
-        Measured::new(
-            "density_specimen_at_50MPa_hertz",
-            at(hertz, p_max, |r| r.density_specimen)?,
-            (solid - last.wall_lens_volume) / (die_area * last.height),
-        ),
-        Measured::new(
-            "height_reduction_at_50MPa_hertz",
-            last.height_reduction,
-            1.0 - first.density_specimen * (solid - last.wall_lens_volume)
-                / (last.density_specimen * (solid - first.wall_lens_volume)),
-        ),
-        // The core cannot end looser than it began, nor densify more than the
-        // specimen as a whole: it starts densest (near random close packing), so the
-        // loose wall and top layers take more of the strain (measured: the core
-        // takes 43 % of the uniform share under Hertz).
-        Measured::between(
-            "density_rve_at_50MPa_hertz",
-            at(hertz, p_max, |r| r.density_rve)?,
-            rve0,
-            rve0 * specimen.h0 / last.height,
-        ),
-        Measured::new(
-            "density_rve_at_50MPa_storakers_m0.2",
-            at(find("storakers_m0.2"), p_max, |r| r.density_rve)?,
-            at(hertz, p_max, |r| r.density_rve)?,
-        ),
-        Measured::new(
-            "density_rve_at_10MPa_mu0.05_minus_mu0",
-            at(find("hertz_mu0.05"), ten, |r| r.density_rve)? - at(hertz, ten, |r| r.density_rve)?,
-            0.0,
-        ),
+            Measured::new("initial_density_specimen", specimen.density_specimen, 0.62),
+            Measured::new("initial_density_rve", rve0, 0.66),
+            Measured::new(
+                "density_specimen_at_50MPa_hertz",
+                at(hertz, p_max, |r| r.density_specimen)?,
+                (solid - last.wall_lens_volume) / (die_area * last.height),
+            ),
+            Measured::new(
+                "height_reduction_at_50MPa_hertz",
+                last.height_reduction,
+                1.0 - first.density_specimen * (solid - last.wall_lens_volume)
+                    / (last.density_specimen * (solid - first.wall_lens_volume)),
+            ),
+            // The core cannot end looser than it began, nor densify more than the
+            // specimen as a whole: it starts densest (near random close packing), so the
+            // loose wall and top layers take more of the strain (measured: the core
+            // takes 43 % of the uniform share under Hertz).
+            Measured::between(
+                "density_rve_at_50MPa_hertz",
+                at(hertz, p_max, |r| r.density_rve)?,
+                rve0,
+                rve0 * specimen.h0 / last.height,
+            ),
+            Measured::new(
+                "density_rve_at_50MPa_storakers_m0.2",
+                at(find("storakers_m0.2"), p_max, |r| r.density_rve)?,
+                at(hertz, p_max, |r| r.density_rve)?,
+            ),
+            Measured::new(
+                "density_rve_at_10MPa_mu0.05_minus_mu0",
+                at(find("hertz_mu0.05"), ten, |r| r.density_rve)?
+                    - at(hertz, ten, |r| r.density_rve)?,
+                0.0,
+            ),
         ],
         out,
     ]
@@ -493,7 +496,8 @@ fn unloading_book(c: &Cycle) -> Result<f64> {
     let missing = || TampError::Other("the cycle did not unload".into());
     let stored = s.stored_energy.ok_or_else(missing)?;
     let kinetic = s.kinetic_energy.ok_or_else(missing)?;
-    Ok(stored[0] - stored[1] + kinetic[0] - kinetic[1]
+    Ok(stored[0] - stored[1] + kinetic[0]
+        - kinetic[1]
         - s.unloading_dissipation.ok_or_else(missing)?)
 }
 
@@ -535,7 +539,12 @@ fn write_cycles(ctx: &CaseContext, cycles: &[(&str, &Cycle)]) -> Result<()> {
             let points = c
                 .records
                 .iter()
-                .filter(|r| matches!(r.stage, press_cycle::Stage::Press | press_cycle::Stage::Unload))
+                .filter(|r| {
+                    matches!(
+                        r.stage,
+                        press_cycle::Stage::Press | press_cycle::Stage::Unload
+                    )
+                })
                 .map(|r| (r.density_specimen, r.upper_punch / 1e6));
             Series::line(label, points.collect())
         })
