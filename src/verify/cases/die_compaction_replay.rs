@@ -447,14 +447,8 @@ fn recorded_deck_is_current(dir: &Path, sha: &str, stroke: &Stroke) -> Result<()
             dir.display()
         ))
     };
-    // The header names the scene's whole hash: compare it as a token, not a prefix.
     let deck = read("in.tamp")?;
-    let recorded_sha = deck.split("sha256 ").nth(1).map(|rest| {
-        rest.split(|c: char| !c.is_ascii_hexdigit())
-            .next()
-            .unwrap_or_default()
-    });
-    if recorded_sha != Some(sha) {
+    if deck_scene_sha(&deck) != Some(sha) {
         return Err(stale(format!(
             "in.tamp was exported from another version of the scene (now sha256 {sha})"
         )));
@@ -475,6 +469,16 @@ fn recorded_deck_is_current(dir: &Path, sha: &str, stroke: &Stroke) -> Result<()
         ));
     }
     Ok(())
+}
+
+/// The scene's sha256 that an exported deck's header names. The header names the
+/// whole hash: it is read as a token, so that a prefix of the right hash does not match.
+pub(super) fn deck_scene_sha(deck: &str) -> Option<&str> {
+    deck.split("sha256 ").nth(1).map(|rest| {
+        rest.split(|c: char| !c.is_ascii_hexdigit())
+            .next()
+            .unwrap_or_default()
+    })
 }
 
 #[cfg(test)]

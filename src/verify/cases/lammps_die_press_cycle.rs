@@ -201,12 +201,7 @@ fn recorded_cycle(dir: &Path, sha: &str) -> Result<CycleStroke> {
             .map_err(|e| TampError::io(format!("reading {}", path.display()), e))
     };
     let deck = read("in.tamp")?;
-    let recorded_sha = deck.split("sha256 ").nth(1).map(|rest| {
-        rest.split(|c: char| !c.is_ascii_hexdigit())
-            .next()
-            .unwrap_or_default()
-    });
-    if recorded_sha != Some(sha) {
+    if super::die_compaction_replay::deck_scene_sha(&deck) != Some(sha) {
         return Err(TampError::Other(format!(
             "{}: in.tamp was exported from another version of the scene (now sha256 {sha}): the recorded deck is stale, re-record (regenerate.sh)",
             dir.display()
