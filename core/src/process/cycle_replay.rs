@@ -30,7 +30,7 @@
 use super::die_compaction::{Pressing, Specimen, top_of_bed};
 use super::die_compaction_file::DieCompactionFile;
 use super::die_replay::{self, Stroke};
-use super::press_cycle::{Cycle, DieWall, Stage};
+use super::press_cycle::{Cycle, DieWall, Stage, mean_square_radius};
 use crate::error::{Result, TampError};
 use crate::scene::walls::MotionSpec;
 use serde::{Deserialize, Serialize};
@@ -231,12 +231,6 @@ pub fn replay(
     let k = cycle.record_steps;
     let record = |sim: &crate::simulation::Simulation, mean: f64| {
         let s = sim.state();
-        let p = &s.particles;
-        let spread = p
-            .position
-            .iter()
-            .map(|x| x.x * x.x + x.y * x.y)
-            .sum::<f64>();
         CycleReplayRecord {
             step: s.step,
             punch_face: h0 + s.walls[PUNCH].displacement.z,
@@ -246,7 +240,7 @@ pub fn replay(
             floor_force_mean: mean,
             die_axial_force: s.wall_force[DIE].z,
             die_radial_force: DieWall::of(sim, DIE, radius, 0.0, h0, 1).radial_force,
-            mean_square_radius: spread / p.len().max(1) as f64,
+            mean_square_radius: mean_square_radius(sim),
             top: top_of_bed(sim),
         }
     };

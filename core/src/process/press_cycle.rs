@@ -303,6 +303,22 @@ pub fn series_csv(records: &[CycleRecord]) -> String {
     s
 }
 
+/// The records of several cycles in one table, each row led by its run's `label` in
+/// a first column named `column` (the runs share their die's height bands).
+pub fn labelled_series_csv(column: &str, runs: &[(&str, &Cycle)]) -> String {
+    let mut out = String::new();
+    for (k, (label, c)) in runs.iter().enumerate() {
+        for (j, line) in series_csv(&c.records).lines().enumerate() {
+            match (k, j) {
+                (0, 0) => out.push_str(&format!("{column},{line}\n")),
+                (_, 0) => {}
+                _ => out.push_str(&format!("{label},{line}\n")),
+            }
+        }
+    }
+    out
+}
+
 /// What the cycle measures, each stage's when it ran.
 #[derive(Clone, Debug, Default, Serialize, Deserialize)]
 pub struct CycleSummary {
@@ -344,6 +360,16 @@ pub struct CycleSummary {
 }
 
 impl CycleSummary {
+    /// What the compact gives back to the withdrawing punch by the energy book: the
+    /// energy its contacts stored at the peak less what they still store at release,
+    /// with the change of the particles' kinetic energy, less what the book counts as
+    /// dissipated while unloading (dashpots, friction, plastic flow). None without an
+    /// unloading.
+    pub fn returned_by_book(&self) -> Option<f64> {
+        let (stored, kinetic) = (self.stored_energy?, self.kinetic_energy?);
+        Some(stored[0] - stored[1] + kinetic[0] - kinetic[1] - self.unloading_dissipation?)
+    }
+
     /// The summary by name, as `quantities.csv` lists it; stages that did not run are
     /// left out.
     pub fn quantities(&self) -> Vec<(String, f64)> {
@@ -402,6 +428,14 @@ struct Die<'a> {
     alpha: f64,
 }
 
+/// The mean of the particles' squared distances from the die's axis, ⟨ρ²⟩, m²: the
+/// compact's spread, whose growth after the peak is its radial springback.
+pub(super) fn mean_square_radius(sim: &Simulation) -> f64 {
+    let p = &sim.state().particles;
+    let sum: f64 = p.position.iter().map(|x| x.x * x.x + x.y * x.y).sum();
+    sum / p.len().max(1) as f64
+}
+
 impl Die<'_> {
     fn floor_level(sim: &Simulation) -> f64 {
         sim.state().walls[FLOOR].displacement.z
@@ -410,13 +444,6 @@ impl Die<'_> {
     /// The upper punch's face, m.
     fn punch_face(&self, sim: &Simulation) -> f64 {
         self.mouth + sim.state().walls[PUNCH].displacement.z
-    }
-
-    /// The mean of the particles' squared distances from the axis, ⟨ρ²⟩, m².
-    fn mean_square_radius(sim: &Simulation) -> f64 {
-        let p = &sim.state().particles;
-        let sum: f64 = p.position.iter().map(|x| x.x * x.x + x.y * x.y).sum();
-        sum / p.len().max(1) as f64
     }
 
     fn record(&self, sim: &Simulation, stage: Stage) -> Result<CycleRecord> {
@@ -541,7 +568,7 @@ pub fn run(
             peak.step, peak.upper_punch
         )));
     }
-    let peak_spread = Die::mean_square_radius(&sim);
+    let peak_spread = mean_square_radius(&sim);
     let mean_axial = 0.5 * (peak.upper_punch + peak.lower_punch);
     let mut summary = CycleSummary {
         peak_height: peak.height,
@@ -572,8 +599,7 @@ pub fn run(
     if dc.eject.is_some() {
         let last = records.last().expect("the ejection recorded");
         summary.ejected_height = Some(last.height);
-        summary.radial_springback =
-            Some((Die::mean_square_radius(&sim) / peak_spread).sqrt() - 1.0);
+        summary.radial_springback = Some((mean_square_radius(&sim) / peak_spread).sqrt() - 1.0);
     }
     sim.check_energy_at_end()?;
     Ok(Cycle { records, summary })

@@ -43,19 +43,9 @@ fn cycle(file: &DieCompactionFile) -> Result<(Specimen, Cycle)> {
 
 /// The cycle's records as CSV, each row labelled with its specimen.
 fn write_series(ctx: &CaseContext, runs: &[(&str, &Cycle)]) -> Result<()> {
-    let mut out = String::new();
-    for (k, (label, c)) in runs.iter().enumerate() {
-        for (j, line) in press_cycle::series_csv(&c.records).lines().enumerate() {
-            match (k, j) {
-                (0, 0) => out.push_str(&format!("specimen,{line}\n")),
-                (_, 0) => {}
-                _ => out.push_str(&format!("{label},{line}\n")),
-            }
-        }
-    }
     crate::output::write_atomic(
         &ctx.report_dir.join(format!("{}_series.csv", ctx.spec.name)),
-        out.as_bytes(),
+        press_cycle::labelled_series_csv("specimen", runs).as_bytes(),
     )
 }
 
@@ -158,14 +148,10 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     // took (the energy book), with the change of the particles' kinetic energy.
     let h = &hertz.1.summary;
     let missing = || TampError::Other("die_press_cycle: the Hertz compact was not released".into());
-    let stored = h.stored_energy.ok_or_else(missing)?;
-    let kinetic = h.kinetic_energy.ok_or_else(missing)?;
     out.push(Measured::new(
         "unloading_work_frictionless_hertz",
         h.unloading_work.ok_or_else(missing)?,
-        stored[0] - stored[1] + kinetic[0]
-            - kinetic[1]
-            - h.unloading_dissipation.ok_or_else(missing)?,
+        h.returned_by_book().ok_or_else(missing)?,
     ));
     Ok(out)
 }

@@ -146,11 +146,9 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
             cycle_replay::replay(&file, &specimen, &cycle)
         })
     });
-    let mut runs = runs.into_iter();
-    let (mine, nudged) = match (runs.next(), runs.next()) {
-        (Some(a), Some(b)) => (a?, b?),
-        _ => unreachable!("two replays"),
-    };
+    let [mine, nudged]: [Result<Vec<CycleReplayRecord>>; 2] =
+        runs.try_into().expect("one run per entry");
+    let (mine, nudged) = (mine?, nudged?);
     let radius = 0.5 * file.die_compaction.die_diameter;
     let ours = cycle_replay::quantities(&mine, &cycle, radius)?;
     let peer = cycle_replay::quantities(&theirs, &cycle, radius)?;

@@ -49,22 +49,26 @@ struct Model {
     storakers: Option<(f64, f64)>,
     /// Friction between particles (the die wall keeps the scene's 0.02).
     friction: f64,
+}
+
+impl Model {
     /// Whether the pressing goes on through the press cycle (`CYCLE_UNLOAD`,
-    /// `CYCLE_EJECT`).
-    cycle: bool,
+    /// `CYCLE_EJECT`): the frictionless ones do.
+    fn cycle(&self) -> bool {
+        self.friction == 0.0
+    }
 }
 
 const HERTZ: Model = Model {
     label: "hertz",
     storakers: None,
     friction: 0.0,
-    cycle: true,
 };
 
-/// The frictionless pressings go on through the press cycle: the upper punch
-/// withdrawn at 0.05 m/s (the unloading of `die_press_cycle`, a twentieth of the
-/// pressing's mean punch speed at 50 MPa under Storåkers) and the compact pushed out
-/// at up to 1 m/s, as `nial_die_compaction_small_cycle` does.
+/// The frictionless pressings go on through the press cycle as
+/// `nial_die_compaction_small_cycle` does: the upper punch withdrawn at 0.05 m/s (the
+/// unloading of `die_press_cycle`, below the pressing's own mean punch speed) and the
+/// compact pushed out at up to 1 m/s.
 const CYCLE_UNLOAD: UnloadSpec = UnloadSpec {
     speed: 0.05,
     record_interval: 2e-7,
@@ -97,13 +101,11 @@ fn full_models() -> Vec<Model> {
         label,
         storakers: Some((STORAKERS[k].0, STORAKERS[k].1)),
         friction,
-        cycle: friction == 0.0,
     };
     let hertz = |friction: f64, label: &'static str| Model {
         label,
         storakers: None,
         friction,
-        cycle: false,
     };
     let (mu, h, s) = (
         FRICTIONS.map(|f| f.0),
@@ -146,7 +148,7 @@ fn with_model(scene: &DieCompactionFile, model: &Model) -> Result<DieCompactionF
             });
         }
     }
-    if model.cycle {
+    if model.cycle() {
         s.die_compaction.unload = Some(CYCLE_UNLOAD);
         s.die_compaction.eject = Some(CYCLE_EJECT);
     }
@@ -321,15 +323,18 @@ pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {
         specimen.h0, specimen.density_specimen, specimen.density_rve
     );
     let models = full_models();
-    let done = press_all(ctx, &scene, &specimen, &models, &store)?;
+    let (mut pressings, mut walls, mut cycled) = (Vec::new(), Vec::new(), Vec::new());
+    for d in press_all(ctx, &scene, &specimen, &models, &store)? {
+        pressings.push(d.pressing);
+        walls.push(d.wall_s);
+        cycled.push(d.cycle);
+    }
     let cycles: Vec<(&str, &Cycle)> = models
         .iter()
-        .zip(&done)
-        .filter_map(|(m, d)| d.cycle.as_ref().map(|c| (m.label, c)))
+        .zip(&cycled)
+        .filter_map(|(m, c)| c.as_ref().map(|c| (m.label, c)))
         .collect();
     write_cycles(ctx, &cycles)?;
-    let (pressings, walls): (Vec<Pressing>, Vec<f64>) =
-        done.iter().map(|d| (d.pressing.clone(), d.wall_s)).unzip();
     let mut timing = String::from("model,steps,wall_s\n");
     for ((m, p), w) in models.iter().zip(&pressings).zip(&walls) {
         timing.push_str(&format!("{},{},{w:.1}\n", m.label, p.steps));
@@ -435,70 +440,50 @@ pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let rve0 = specimen.density_rve;
     let first = hertz.records.first().expect("records");
     let ten = 10e6;
-    let mut out = Vec::new();
+    let mut measured = vec![
+        Measured::new("initial_density_specimen", specimen.density_specimen, 0.62),
+        Measured::new("initial_density_rve", rve0, 0.66),
+        Measured::new(
+            "density_specimen_at_50MPa_hertz",
+            at(hertz, p_max, |r| r.density_specimen)?,
+            (solid - last.wall_lens_volume) / (die_area * last.height),
+        ),
+        Measured::new(
+            "height_reduction_at_50MPa_hertz",
+            last.height_reduction,
+            1.0 - first.density_specimen * (solid - last.wall_lens_volume)
+                / (last.density_specimen * (solid - first.wall_lens_volume)),
+        ),
+        // The core cannot end looser than it began, nor densify more than the
+        // specimen as a whole: it starts densest (near random close packing), so the
+        // loose wall and top layers take more of the strain (measured: the core
+        // takes 43 % of the uniform share under Hertz).
+        Measured::between(
+            "density_rve_at_50MPa_hertz",
+            at(hertz, p_max, |r| r.density_rve)?,
+            rve0,
+            rve0 * specimen.h0 / last.height,
+        ),
+        Measured::new(
+            "density_rve_at_50MPa_storakers_m0.2",
+            at(find("storakers_m0.2"), p_max, |r| r.density_rve)?,
+            at(hertz, p_max, |r| r.density_rve)?,
+        ),
+        Measured::new(
+            "density_rve_at_10MPa_mu0.05_minus_mu0",
+            at(find("hertz_mu0.05"), ten, |r| r.density_rve)? - at(hertz, ten, |r| r.density_rve)?,
+            0.0,
+        ),
+    ];
     for (label, c) in &cycles {
-        out.push(Measured::new(
+        let missing = || TampError::Other(format!("the {label} cycle did not unload"));
+        measured.push(Measured::new(
             &format!("unloading_work_{label}"),
-            c.summary
-                .unloading_work
-                .ok_or_else(|| TampError::Other(format!("the {label} cycle did not unload")))?,
-            unloading_book(c)?,
+            c.summary.unloading_work.ok_or_else(missing)?,
+            c.summary.returned_by_book().ok_or_else(missing)?,
         ));
     }
-    Ok([
-        vec![
-            Measured::new("initial_density_specimen", specimen.density_specimen, 0.62),
-            Measured::new("initial_density_rve", rve0, 0.66),
-            Measured::new(
-                "density_specimen_at_50MPa_hertz",
-                at(hertz, p_max, |r| r.density_specimen)?,
-                (solid - last.wall_lens_volume) / (die_area * last.height),
-            ),
-            Measured::new(
-                "height_reduction_at_50MPa_hertz",
-                last.height_reduction,
-                1.0 - first.density_specimen * (solid - last.wall_lens_volume)
-                    / (last.density_specimen * (solid - first.wall_lens_volume)),
-            ),
-            // The core cannot end looser than it began, nor densify more than the
-            // specimen as a whole: it starts densest (near random close packing), so the
-            // loose wall and top layers take more of the strain (measured: the core
-            // takes 43 % of the uniform share under Hertz).
-            Measured::between(
-                "density_rve_at_50MPa_hertz",
-                at(hertz, p_max, |r| r.density_rve)?,
-                rve0,
-                rve0 * specimen.h0 / last.height,
-            ),
-            Measured::new(
-                "density_rve_at_50MPa_storakers_m0.2",
-                at(find("storakers_m0.2"), p_max, |r| r.density_rve)?,
-                at(hertz, p_max, |r| r.density_rve)?,
-            ),
-            Measured::new(
-                "density_rve_at_10MPa_mu0.05_minus_mu0",
-                at(find("hertz_mu0.05"), ten, |r| r.density_rve)?
-                    - at(hertz, ten, |r| r.density_rve)?,
-                0.0,
-            ),
-        ],
-        out,
-    ]
-    .concat())
-}
-
-/// What the compact gives back to the withdrawing punch by the energy book: the
-/// energy its contacts stored at the peak less what they still store, with the change
-/// of the particles' kinetic energy, less what the dashpots, the die wall's friction
-/// and (Storåkers) the plastic flow of the unloading took.
-fn unloading_book(c: &Cycle) -> Result<f64> {
-    let s = &c.summary;
-    let missing = || TampError::Other("the cycle did not unload".into());
-    let stored = s.stored_energy.ok_or_else(missing)?;
-    let kinetic = s.kinetic_energy.ok_or_else(missing)?;
-    Ok(stored[0] - stored[1] + kinetic[0]
-        - kinetic[1]
-        - s.unloading_dissipation.ok_or_else(missing)?)
+    Ok(measured)
 }
 
 /// `<case>_cycle.csv` (each cycle's quantities, one row per law),
@@ -508,7 +493,6 @@ fn unloading_book(c: &Cycle) -> Result<f64> {
 fn write_cycles(ctx: &CaseContext, cycles: &[(&str, &Cycle)]) -> Result<()> {
     let name = &ctx.spec.name;
     let mut table = String::new();
-    let mut series = String::new();
     for (k, (label, c)) in cycles.iter().enumerate() {
         let q = c.summary.quantities();
         if k == 0 {
@@ -517,13 +501,6 @@ fn write_cycles(ctx: &CaseContext, cycles: &[(&str, &Cycle)]) -> Result<()> {
         }
         let values: Vec<String> = q.iter().map(|(_, v)| format!("{v:e}")).collect();
         table.push_str(&format!("{label},{}\n", values.join(",")));
-        for (j, line) in press_cycle::series_csv(&c.records).lines().enumerate() {
-            match (k, j) {
-                (0, 0) => series.push_str(&format!("model,{line}\n")),
-                (_, 0) => {}
-                _ => series.push_str(&format!("{label},{line}\n")),
-            }
-        }
     }
     crate::output::write_atomic(
         &ctx.report_dir.join(format!("{name}_cycle.csv")),
@@ -531,7 +508,7 @@ fn write_cycles(ctx: &CaseContext, cycles: &[(&str, &Cycle)]) -> Result<()> {
     )?;
     crate::output::write_atomic(
         &ctx.report_dir.join(format!("{name}_cycle_series.csv")),
-        series.as_bytes(),
+        press_cycle::labelled_series_csv("model", cycles).as_bytes(),
     )?;
     let loading: Vec<Series> = cycles
         .iter()
