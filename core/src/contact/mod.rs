@@ -35,6 +35,7 @@
 pub mod damping;
 pub mod lammps;
 pub mod lever_arm;
+pub mod mdr;
 pub mod model;
 pub mod normal;
 pub mod record;
