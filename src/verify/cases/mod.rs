@@ -21,7 +21,7 @@ mod hertz_yield_onset;
 mod hollomon_constants;
 mod kuwabara_kono_restitution;
 mod lammps_die_press_cycle;
-mod lammps_mdr_two_sphere;
+mod lammps_mdr_contacts;
 mod linear_damped_collision;
 mod linear_restitution;
 mod mdr_curve;
@@ -120,7 +120,7 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("liggghts_die_compaction", die_compaction_replay::liggghts),
     ("lammps_die_compaction_small", die_compaction_replay::lammps),
     ("lammps_die_press_cycle", lammps_die_press_cycle::run),
-    ("lammps_mdr_two_sphere", lammps_mdr_two_sphere::run),
+    ("lammps_mdr_contacts", lammps_mdr_contacts::run),
     ("lammps_settled_packing", settled_packing::lammps),
 ];
 

@@ -1,4 +1,5 @@
-"""results.csv rows from a LAMMPS log of in.two: one row per thermo line.
+"""results.csv rows from a LAMMPS log of in.pair, in.wall or in.triplet: one row per
+thermo line, labelled by the run.
 
 usage: rows.py LOG LABEL   (appends to standard output, without a header)
 """
