@@ -2,7 +2,7 @@
 # Record (or re-run) the LAMMPS side of lammps_mdr_contacts: five runs of MDR contacts
 # under prescribed motion (common.in), each in its own directory:
 #   equal:    in.pair, two 2 um spheres, no adhesion, damping mdr 1 (eta 1.8);
-#   adhesive: in.pair, 2 um and 3 um, surface energy 20 J/m^2, damping mdr 2
+#   adhesive: in.pair, 2 um and 3 um, surface energy 100 J/m^2, damping mdr 2
 #             (eta 1e-4 N s/m);
 #   bulk:     in.pair, two 2 um spheres with the bulk trigger at 0.99, so that the
 #             bulk response acts once 1 % of a sphere's surface is in contact;
@@ -27,7 +27,7 @@ run() {
 }
 stiff="-var gamma 0 -var eta 1.8 -var dtype 1"
 run equal in.pair -var r1 2e-6 -var r2 2e-6 -var psib 0.5 $stiff
-run adhesive in.pair -var r1 2e-6 -var r2 3e-6 -var psib 0.5 -var gamma 20 -var eta 1e-4 -var dtype 2
+run adhesive in.pair -var r1 2e-6 -var r2 3e-6 -var psib 0.5 -var gamma 100 -var eta 1e-4 -var dtype 2
 run bulk in.pair -var r1 2e-6 -var r2 2e-6 -var psib 0.99 $stiff
 run wall in.wall -var psib 0.5 $stiff
 run triplet in.triplet -var psib 0.5 $stiff
