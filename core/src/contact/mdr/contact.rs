@@ -60,7 +60,8 @@ pub struct MdrForce {
     pub force: f64,
     /// The dashpot's coefficient η_eff, N·s/m; the dashpot force is η_eff dδ/dt.
     pub damping: f64,
-    /// Mean contact area of the sides, weighed by the contact's weight, m².
+    /// LAMMPS's contact area output (`svector`, `pair/local p13`): half the sum of the
+    /// sides' weighed areas, the mean for a pair and half the area for a wall, m².
     pub area: f64,
 }
 

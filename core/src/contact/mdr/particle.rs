@@ -62,29 +62,37 @@ pub struct MdrParticles {
 impl MdrParticles {
     /// The state of particles of radii `radii` with no contact yet: R₀ = R, ψ = 1.
     pub fn new(radii: &[f64]) -> Self {
-        let n = radii.len();
-        let mut p = MdrParticles {
-            radius: radii.to_vec(),
-            initial_radius: radii.to_vec(),
-            geometric_volume: vec![0.0; n],
-            elastic_volume: vec![0.0; n],
-            cap_volume: vec![0.0; n],
-            mean_strain: vec![0.0; n],
-            radius_numerator: vec![0.0; n],
-            radius_denominator: vec![0.0; n],
-            contact_area: vec![0.0; n],
-            contact_area_next: vec![0.0; n],
-            total_area: vec![0.0; n],
-            area_change_sum: vec![0.0; n],
-            mean_displacement_increment: vec![0.0; n],
-            free_surface: vec![0.0; n],
-            stress: vec![Vec3::zeros(); n],
-            radius_increment: vec![0.0; n],
-        };
-        for i in 0..n {
-            p.update(i, f64::INFINITY);
+        let mut p = MdrParticles::default();
+        for &r in radii {
+            p.push(r);
         }
         p
+    }
+
+    /// Add a particle of radius `radius` with no contact yet (LAMMPS's set-up of a new
+    /// atom: its sums zero, then its volumes, area and ψ = 1 from them).
+    pub fn push(&mut self, radius: f64) {
+        self.radius.push(radius);
+        self.initial_radius.push(radius);
+        self.stress.push(Vec3::zeros());
+        for array in [
+            &mut self.geometric_volume,
+            &mut self.elastic_volume,
+            &mut self.cap_volume,
+            &mut self.mean_strain,
+            &mut self.radius_numerator,
+            &mut self.radius_denominator,
+            &mut self.contact_area,
+            &mut self.contact_area_next,
+            &mut self.total_area,
+            &mut self.area_change_sum,
+            &mut self.mean_displacement_increment,
+            &mut self.free_surface,
+            &mut self.radius_increment,
+        ] {
+            array.push(0.0);
+        }
+        self.update(self.len() - 1, f64::INFINITY);
     }
 
     /// Number of particles.

@@ -42,15 +42,6 @@ pub struct SideHistory {
     pub plastic_overlap: f64,
 }
 
-/// What the particle of this side holds for the step (`MdrParticles` at index i).
-#[derive(Clone, Copy, Debug)]
-pub struct SideParticle {
-    /// Apparent radius R, m.
-    pub radius: f64,
-    /// Initial radius R₀, m.
-    pub initial_radius: f64,
-}
-
 /// The outcome of one side: its force and what the pair's damping needs.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct SideForce {
