@@ -5,7 +5,8 @@
 //! - `bed_2000`: 2000 spheres (R = 0.5 mm) deposited ballistically on a 15 mm × 15 mm
 //!   laterally periodic floor and settled under gravity for 1000 steps in the setup
 //!   (Hertz with damping); variants add friction (Mindlin–Deresiewicz, or the
-//!   Cundall–Strack spring), rotation, both, or cohesion.
+//!   Cundall–Strack spring), rotation, both, or cohesion, or replace the normal law by
+//!   MDR, which keeps a state per particle.
 //! - `gas_2000`: the same spheres inserted at random in a 15 mm × 15 mm × 150 mm
 //!   periodic column, flying at 0.1 m/s with hardly any contacts; variants add
 //!   gravity or a floor (a wall every sphere is tested against each step).
@@ -64,6 +65,13 @@ fn bed(variant: &str) -> Value {
             v["contact"]["cohesion"] = json!({"law": "van_der_waals", "hamaker": 6.5e-20,
                 "min_separation": 4e-10, "cutoff": 1e-7})
         }
+        // Not an effect added but the normal law replaced: MDR (its own dashpot in place
+        // of the damping role), with its pass before the forces and two sides a contact.
+        "mdr" => {
+            v["contact"] = json!({"normal": {"law": "mdr", "youngs_modulus": 1e8,
+                "poisson_ratio": 0.25, "yield_stress": 1e6, "surface_energy": 0.0,
+                "bulk_trigger": 0.5, "damping": {"coefficient": 0.5, "form": "stiffness"}}})
+        }
         other => panic!("unknown bed variant {other}"),
     }
     v
@@ -114,6 +122,7 @@ fn effects(c: &mut Criterion) {
         "+friction+rotation",
         "+no_pull",
         "+cohesion",
+        "mdr",
     ] {
         let sim = simulation(&bed(name), 1000);
         group.bench_function(name, |b| one_step(b, &sim));

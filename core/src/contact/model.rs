@@ -18,6 +18,8 @@
 use crate::contact::damping::liggghts::LiggghtsModel;
 use crate::contact::damping::{Damping, Dashpot};
 use crate::contact::lammps::{LammpsNormal, NoLammpsModel};
+use crate::contact::mdr::contact::MdrForce;
+use crate::contact::mdr::{Mdr, MdrContact};
 use crate::contact::normal::NormalLaw;
 use crate::contact::registry::{NormalExample, TangentialExample};
 use crate::contact::states::ContactStates;
@@ -310,6 +312,18 @@ pub trait NormalModel: Copy + Debug + PartialEq {
     fn error_model(&self, _damping: Option<&Damping>) -> Option<&'static str> {
         None
     }
+
+    /// The MDR law, whose contacts need their particles' state (the force loop's
+    /// per-particle pass, simulation/mdr_pass.rs); `None` for every pairwise law, for
+    /// which that pass compiles to nothing.
+    fn mdr(&self) -> Option<&Mdr> {
+        None
+    }
+
+    /// MDR's contact history within a state of this law; `None` for the pairwise laws.
+    fn mdr_contact(_state: &mut Self::State) -> Option<&mut MdrContact> {
+        None
+    }
 }
 
 /// A viscous normal dashpot c_n · dδ/dt.
@@ -519,30 +533,58 @@ impl<N: NormalModel, T: TangentialModel> Composed<N, T> {
         state: &mut StateOf<N, T>,
         dt: f64,
     ) -> ContactForce {
+        self.evaluate_given(g, pair, state, dt, None)
+    }
+
+    /// `evaluate` with the normal force `given` by the caller: MDR's, which the force
+    /// loop computes with the contact's particles (its force without the dashpot, and
+    /// the dashpot's coefficient). The dashpot, friction and cohesion follow as in
+    /// `evaluate`.
+    #[inline(always)]
+    pub fn evaluate_given(
+        &self,
+        g: &ContactGeometry,
+        pair: &PairProperties,
+        state: &mut StateOf<N, T>,
+        dt: f64,
+        given: Option<MdrForce>,
+    ) -> ContactForce {
         let mut force = ContactForce::default();
         if g.overlap > 0.0 {
             let rate = g.overlap_rate();
-            let elastic =
-                self.normal
-                    .response(g.overlap, rate, g.effective_radius, pair, &mut state.normal);
-            force.normal = elastic.force;
-            let damping = if let Some(dashpot) = &self.damping {
-                let c = dashpot.coefficient(g.effective_mass, elastic.stiffness, || {
-                    (g.overlap * g.effective_radius).sqrt()
-                });
-                force.normal += c * rate;
-                // LAMMPS's `limit_damping`, LIGGGHTS's `limitForce on`: the clamp comes
-                // before the friction law reads the normal force, as in both.
-                if self.no_pull && force.normal < 0.0 {
-                    force.normal = 0.0;
-                }
-                c
+            let (stiffness, damping) = if let Some(m) = given {
+                force.normal = m.force + m.damping * rate;
+                let k = self
+                    .normal
+                    .stiffness(g.overlap, g.effective_radius, pair, &state.normal);
+                (k, m.damping)
             } else {
-                0.0
+                let elastic = self.normal.response(
+                    g.overlap,
+                    rate,
+                    g.effective_radius,
+                    pair,
+                    &mut state.normal,
+                );
+                force.normal = elastic.force;
+                let damping = if let Some(dashpot) = &self.damping {
+                    let c = dashpot.coefficient(g.effective_mass, elastic.stiffness, || {
+                        (g.overlap * g.effective_radius).sqrt()
+                    });
+                    force.normal += c * rate;
+                    // LAMMPS's `limit_damping`, LIGGGHTS's `limitForce on`: the clamp
+                    // comes before the friction law reads the normal force, as in both.
+                    if self.no_pull && force.normal < 0.0 {
+                        force.normal = 0.0;
+                    }
+                    c
+                } else {
+                    0.0
+                };
+                (elastic.stiffness, damping)
             };
             if T::ACTIVE {
-                let input =
-                    Self::tangential_input(g, pair, force.normal, elastic.stiffness, damping, dt);
+                let input = Self::tangential_input(g, pair, force.normal, stiffness, damping, dt);
                 force.tangential = self.tangential.force(&input, &mut state.tangential);
             }
         } else if Self::HAS_STATE {

@@ -171,6 +171,7 @@ pub fn normal_examples() -> Vec<NormalExample> {
         Hysteretic::examples(),
         Storakers::examples(),
         Thornton::examples(),
+        crate::contact::mdr::Mdr::examples(),
     ]
     .concat()
 }

@@ -242,6 +242,9 @@ impl DieCompactionFile {
             let ctx = LawContext {
                 particle_materials: [dc.particles.material.as_str()].into(),
                 rotation: scene.rotation.is_some(),
+                growth: false,
+                // The pressing draws its force chains from the contact records.
+                contact_records: Some("die_compaction"),
                 materials: &scene.materials,
                 names: &names,
             };

@@ -134,6 +134,11 @@ pub struct LawContext<'a> {
     pub particle_materials: HashSet<&'a str>,
     /// Whether the scene turns its particles.
     pub rotation: bool,
+    /// Whether the scene grows its particles (a growth stage).
+    pub growth: bool,
+    /// What makes the run write its contacts, if anything: the field that asks
+    /// (`output.contacts_every`, or a die compaction, which draws its force chains).
+    pub contact_records: Option<&'static str>,
 }
 
 impl<'a> LawContext<'a> {
@@ -151,6 +156,8 @@ impl<'a> LawContext<'a> {
                 .chain(scene.deposit.iter().map(|d| d.material.as_str()))
                 .collect(),
             rotation: scene.rotation.is_some(),
+            growth: scene.growth.is_some(),
+            contact_records: (scene.output.contacts_every > 0).then_some("output.contacts_every"),
         }
     }
 }
@@ -217,6 +224,34 @@ pub fn validate(contact: &ContactSpec, at: &str, ctx: &LawContext, e: &mut Error
     }
     if let Some(cohesion) = &contact.cohesion {
         cohesion.check(&format!("{at}.cohesion"), e);
+    }
+    if normal.mdr().is_some() {
+        mdr_rules(contact, at, ctx, e);
+    }
+}
+
+/// What MDR cannot be combined with: its per-particle state has no place for a
+/// growing radius or an attraction across a gap, and the contact records evaluate the
+/// laws without the particles' state.
+fn mdr_rules(contact: &ContactSpec, at: &str, ctx: &LawContext, e: &mut Errors) {
+    let why = |what: &str| format!("cannot be combined with {at}.normal.law 'mdr': {what}");
+    if contact.cohesion.is_some() {
+        e.push(
+            format!("{at}.cohesion"),
+            why("mdr has its own adhesion (surface_energy)"),
+        );
+    }
+    if ctx.growth {
+        e.push(
+            "growth",
+            why("mdr grows the apparent radius itself from the plastically displaced volume"),
+        );
+    }
+    if let Some(field) = ctx.contact_records {
+        e.push(
+            field,
+            why("the contact records (output.contacts_every, a pressing's force chains) do not yet carry the particles' mdr state, so they would report other forces than the run's"),
+        );
     }
 }
 

@@ -7,6 +7,8 @@ use super::contact_pass::{ContactPass, Spins};
 use super::narrow_phase::NarrowPhase;
 use crate::boundary::{Boundary, WallPose, shape::ShapeContact};
 use crate::contact::lever_arm::Arms;
+use crate::contact::mdr::contact::MdrForce;
+use crate::contact::mdr::{PairSides, WallSide};
 use crate::contact::model::{Composed, NormalModel, StateOf, TangentialModel};
 use crate::contact::states::ContactStates;
 use crate::contact::{ContactForce, ContactGeometry};
@@ -51,9 +53,11 @@ pub(super) fn add_weights(p: &mut Particles, g: Vec3) {
 }
 
 /// What pair and wall contacts share once their geometry is known: the overlap
-/// limit, the scene's laws, and a finite force. Returns the force on particle i
-/// and its parts; the error says what went wrong, for the caller to place.
+/// limit, the scene's laws (with MDR's normal force `given`, which needs the
+/// contact's particles), and a finite force. Returns the force on particle i and its
+/// parts; the error says what went wrong, for the caller to place.
 #[inline(always)]
+#[allow(clippy::too_many_arguments)]
 pub(super) fn resolve<N, T>(
     law: &Composed<N, T>,
     g: &ContactGeometry,
@@ -62,6 +66,7 @@ pub(super) fn resolve<N, T>(
     pair: &PairProperties,
     state: &mut StateOf<N, T>,
     dt: f64,
+    given: Option<MdrForce>,
 ) -> std::result::Result<(Vec3, ContactForce), String>
 where
     N: NormalModel,
@@ -73,7 +78,7 @@ where
             "overlap {overlap:.4e} m is {ratio:.3e} of the smaller radius (limit {max_fraction})"
         ));
     }
-    let f = law.evaluate(g, pair, state, dt);
+    let f = law.evaluate_given(g, pair, state, dt, given);
     let total = g.normal * f.normal + f.tangential;
     if !total.iter().all(|c| c.is_finite()) {
         return Err(format!(
@@ -222,6 +227,12 @@ impl Simulation {
         N: NormalModel,
         T: TangentialModel,
     {
+        let mdr = law.normal.mdr();
+        if let Some(m) = mdr {
+            self.mdr_begin_step::<N, T>(m);
+        }
+        let moduli = mdr.map(|m| m.moduli());
+        let update = self.work.stepping;
         let kept = ContactStates::<StateOf<N, T>>::KEPT;
         let gravity = self.active_gravity();
         let p = &mut self.state.particles;
@@ -239,6 +250,7 @@ impl Simulation {
         let mut worst = self.state.max_overlap_ratio;
         let torques = spins.on && T::ACTIVE;
         let law_reach = law.reach();
+        let mut mdr_particles = self.state.mdr.as_mut();
         let states = self
             .state
             .contacts
@@ -320,7 +332,24 @@ impl Simulation {
             } else {
                 &mut fresh
             };
-            let (total, f) = resolve(law, &g, ratio, max_fraction, pair, state, dt)
+            let given = match (mdr, &moduli, mdr_particles.as_deref_mut()) {
+                (Some(m), Some(moduli), Some(particles)) => N::mdr_contact(&mut state.normal)
+                    .map(|c| {
+                        let sides = PairSides::of(i, j, id[i], id[j]);
+                        c.pair(
+                            m,
+                            moduli,
+                            overlap,
+                            sides,
+                            particles,
+                            g.normal,
+                            g.effective_mass,
+                            update,
+                        )
+                    }),
+                _ => None,
+            };
+            let (total, f) = resolve(law, &g, ratio, max_fraction, pair, state, dt, given)
                 .map_err(|what| format!("{}: {what}", name()))?;
             force[i] += total;
             force[j] -= total;
@@ -360,13 +389,32 @@ impl Simulation {
                         } else {
                             &mut fresh
                         };
-                        let (total, f) = resolve(law, &g, ratio, max_fraction, pair, state, dt)
-                            .map_err(|what| {
-                                format!(
-                                    "contact {}-wall '{}' (facet {facet}): {what}",
-                                    id[i], wall.name
-                                )
-                            })?;
+                        let given = match (mdr, &moduli, mdr_particles.as_deref_mut()) {
+                            (Some(m), Some(moduli), Some(particles)) => {
+                                N::mdr_contact(&mut state.normal).map(|c| {
+                                    c.wall(
+                                        m,
+                                        moduli,
+                                        contact.overlap,
+                                        WallSide(i),
+                                        particles,
+                                        normal,
+                                        g.effective_mass,
+                                        update,
+                                    )
+                                })
+                            }
+                            _ => None,
+                        };
+                        let (total, f) =
+                            resolve(law, &g, ratio, max_fraction, pair, state, dt, given).map_err(
+                                |what| {
+                                    format!(
+                                        "contact {}-wall '{}' (facet {facet}): {what}",
+                                        id[i], wall.name
+                                    )
+                                },
+                            )?;
                         force[i] += total;
                         wall_force[w] -= total;
                         if torques {

@@ -22,6 +22,7 @@
 //! current contacts).
 
 use crate::boundary::BoundaryMotion;
+use crate::contact::mdr::MdrParticles;
 use crate::contact::record::ContactRecord;
 use crate::detect::NeighborList;
 use crate::error::{Result, TampError};
@@ -46,6 +47,7 @@ mod energy;
 mod force_loop;
 mod growth_stage;
 mod limits;
+mod mdr_pass;
 mod model;
 mod narrow_phase;
 mod pour;
@@ -141,6 +143,11 @@ impl Simulation {
             max_overlap_ratio: 0.0,
             target_radius: Vec::new(),
             sources: model.sources.iter().map(|s| s.initial_state()).collect(),
+            mdr: model
+                .law
+                .normal
+                .mdr()
+                .map(|_| MdrParticles::new(&particles.radius)),
             particles,
         };
         let mut sim = Simulation {

@@ -59,6 +59,9 @@ impl Simulation {
                 );
                 let i = p.len() - 1;
                 state.contacts.store_mut().add_particle();
+                if let Some(mdr) = &mut state.mdr {
+                    mdr.push(r);
+                }
                 let brought = 0.5 * p.mass[i] * velocity.norm_squared()
                     + 0.5 * p.inertia[i] * omega.norm_squared();
                 state.energy.external_work += brought;

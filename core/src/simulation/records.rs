@@ -61,7 +61,7 @@ impl Simulation {
             } else {
                 Default::default()
             };
-            if let Ok((_, f)) = resolve(law, &g, ratio, max_fraction, pair, &mut state, dt) {
+            if let Ok((_, f)) = resolve(law, &g, ratio, max_fraction, pair, &mut state, dt, None) {
                 out.push(ContactRecord {
                     i,
                     partner: Partner::Particle(j),
@@ -92,7 +92,8 @@ impl Simulation {
                     } else {
                         Default::default()
                     };
-                    if let Ok((_, f)) = resolve(law, &g, ratio, max_fraction, pair, &mut state, dt)
+                    if let Ok((_, f)) =
+                        resolve(law, &g, ratio, max_fraction, pair, &mut state, dt, None)
                     {
                         let point = p.position[i] - g.normal * arm.torque;
                         out.push(ContactRecord {

@@ -55,6 +55,31 @@ impl Simulation {
     fn check_fits(&self, state: &State) -> Result<()> {
         let refuse =
             |field: &str, rule: String| Err(TampError::input(format!("checkpoint.{field}"), rule));
+        match (&state.mdr, self.model.law.normal.mdr()) {
+            (Some(m), Some(_)) if m.len() != state.particles.len() => {
+                return refuse(
+                    "mdr",
+                    format!(
+                        "holds the mdr state of {} particles, the checkpoint {}",
+                        m.len(),
+                        state.particles.len()
+                    ),
+                );
+            }
+            (None, Some(_)) => {
+                return refuse(
+                    "mdr",
+                    "is missing; the scene's normal law 'mdr' keeps a state per particle".into(),
+                );
+            }
+            (Some(_), None) => {
+                return refuse(
+                    "mdr",
+                    "holds an mdr state, but the scene's normal law is not 'mdr'".into(),
+                );
+            }
+            _ => {}
+        }
         let walls = self.model.walls.len();
         if state.walls.len() != walls || state.wall_force.len() != walls {
             return refuse(

@@ -24,6 +24,7 @@
 
 use super::energy::EnergyBook;
 use crate::boundary::WallPose;
+use crate::contact::mdr::MdrParticles;
 use crate::contact::states::StateStore;
 use crate::detect::NeighborList;
 use crate::generate::pour::SourceState;
@@ -58,6 +59,10 @@ pub struct State {
     pub target_radius: Vec<f64>,
     /// How far each pouring source has got, in the model's source order.
     pub sources: Vec<SourceState>,
+    /// What the MDR law keeps per particle (apparent radius, free surface, volumes);
+    /// `None` for every other law.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub mdr: Option<MdrParticles>,
 }
 
 impl State {

@@ -12,20 +12,29 @@
 //! response on); a sphere against a plane wall (the wall side and its force magnifier);
 //! three spheres whose outer contact is screened by the middle one (the penalty).
 //!
-//! Checked: the forces, apparent radii and free-surface fractions against LAMMPS at
-//! every recorded step; against the closed forms of Zunker & Kamrin Part I, the elastic
-//! branch against Hertz with its first correction, and the plastic loading branch
-//! against the yield pressure times the contact area.
+//! Each run is also a scene with `"law": "mdr"`, run through the force loop with its
+//! spheres moved by prescribed velocities that turn at the decks' steps.
+//!
+//! Checked: the kernel's forces, apparent radii and free-surface fractions against
+//! LAMMPS at every recorded step (equal to the bit), and the scene's positions, forces
+//! and radii (apart by the running sum of its prescribed motion); against the closed
+//! forms of Zunker & Kamrin Part I, the elastic branch against Hertz with its first
+//! correction, and the plastic loading branch against the yield pressure times the
+//! contact area.
 
 use crate::contact::mdr::damping::{MdrDamping, MdrDampingForm};
 use crate::contact::mdr::side::{self, hertz_mean_pressure, yield_pressure};
 use crate::contact::mdr::{
     Mdr, MdrContact, MdrParticles, PairSides, SideHistory, WallSide, bulk, penalty,
 };
+use crate::contact::normal::NormalLaw;
 use crate::error::{Result, TampError};
 use crate::particles::Vec3;
+use crate::scene::Scene;
+use crate::verify::recording::RecordSpec;
 use crate::verify::{CaseContext, Measured};
 use serde::Deserialize;
+use serde_json::json;
 use std::f64::consts::PI;
 use std::fmt::Write as _;
 
@@ -119,6 +128,54 @@ struct State {
 }
 
 impl Parameters {
+    /// The run as a tamp scene: the law `mdr` in the force loop, the spheres moved by
+    /// prescribed velocities that turn at the deck's steps, frictionless (the decks'
+    /// μ is 0), a plane wall where the run has one.
+    fn scene(&self, run: &Run) -> Result<Scene> {
+        let dt = self.step_displacement / self.speed;
+        let [t1, t2, steps] = self.turns;
+        let law = self.law(run);
+        let particles: Vec<serde_json::Value> = run
+            .spheres
+            .iter()
+            .map(|s| {
+                let along = |v: f64| {
+                    let mut u = [0.0; 3];
+                    if let Some(a) = s.moves {
+                        u[a] = v;
+                    }
+                    u
+                };
+                let mut p = json!({
+                    "position": s.start, "radius": s.radius, "material": "NiAl",
+                    "prescribed_velocity": along(-self.speed),
+                });
+                if s.moves.is_some() {
+                    p["prescribed_velocity_changes"] = json!([
+                        {"time": t1 as f64 * dt, "velocity": along(self.speed)},
+                        {"time": t2 as f64 * dt, "velocity": along(-self.speed)},
+                    ]);
+                }
+                p
+            })
+            .collect();
+        let mut scene = json!({
+            "name": format!("lammps_mdr_contacts, run {}", run.label),
+            "materials": [{"name": "NiAl", "density": self.density}],
+            "contact": {"normal": serde_json::to_value(NormalLaw::Mdr(law)).expect("a law serialises")},
+            "particles": particles,
+            "time_step": {"fixed": dt},
+            "run": {"steps": steps},
+            // The triplet's small sphere is pressed past half its radius.
+            "stability": {"max_overlap_fraction": 0.75},
+        });
+        if let Some(x) = run.wall {
+            scene["walls"] = json!([{"name": "wall", "material": "NiAl",
+                "shape": {"kind": "plane", "point": [x, 0.0, 0.0], "normal": [1.0, 0.0, 0.0]}}]);
+        }
+        crate::scene::parse(&scene.to_string())
+    }
+
     /// A moving sphere's displacement and velocity along its axis at `step` (the decks'
     /// `v_d`, `v_w`).
     fn motion(&self, step: u64) -> (f64, f64) {
@@ -395,6 +452,47 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         measured.push(Measured::new(
             &format!("free_surface_difference_{label}"),
             free,
+            0.0,
+        ));
+        // The same run as a scene, through the force loop.
+        let scene = p.scene(run)?;
+        let rec = ctx.record(label, &scene, RecordSpec::every(10, true))?;
+        let frame_at = |step: u64| rec.frames.iter().find(|f| f.step == step);
+        let (mut scene_gap, mut scene_force, mut scene_radius) = (0.0f64, 0.0f64, 0.0f64);
+        for r in &recorded {
+            let f = frame_at(r.step).ok_or_else(|| {
+                bad(format!(
+                    "run '{label}': the scene's run has no frame at step {}",
+                    r.step
+                ))
+            })?;
+            let gap = match run.wall {
+                Some(plane) => f.bodies[0].position[0] - plane,
+                None => f.bodies[f.bodies.len() - 1].position[0] - f.bodies[0].position[0],
+            };
+            scene_gap = scene_gap.max((gap - r.gap).abs() / r0);
+            let force = |k: usize| f.bodies.get(k).and_then(|b| b.force).unwrap_or_default();
+            let forces = [force(0)[0], force(0)[1], force(1)[0]];
+            for (a, b) in forces.iter().zip(r.forces()) {
+                scene_force = scene_force.max((a - b).abs() / peak);
+            }
+            for (k, b) in r.radii().iter().enumerate().take(f.bodies.len()) {
+                scene_radius = scene_radius.max((f.bodies[k].radius - b).abs() / r0);
+            }
+        }
+        measured.push(Measured::new(
+            &format!("scene_gap_difference_{label}"),
+            scene_gap,
+            0.0,
+        ));
+        measured.push(Measured::new(
+            &format!("scene_force_difference_{label}"),
+            scene_force,
+            0.0,
+        ));
+        measured.push(Measured::new(
+            &format!("scene_radius_difference_{label}"),
+            scene_radius,
             0.0,
         ));
         for r in &recorded {

@@ -188,3 +188,5 @@ impl MdrContact {
         }
     }
 }
+
+impl crate::contact::model::ContactState for MdrContact {}

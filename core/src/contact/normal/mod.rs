@@ -7,6 +7,7 @@ pub mod hertz;
 pub mod hysteretic;
 pub mod kuwabara_kono;
 pub mod linear;
+pub mod mdr;
 pub mod plastic_cylinder;
 pub mod storakers;
 pub mod thornton;
@@ -58,6 +59,8 @@ pub enum NormalLaw {
     Storakers(Storakers),
     /// Thornton 1997 elastic–perfectly-plastic (or LIGGGHTS's `thornton_ning` unloading).
     Thornton(Thornton),
+    /// Zunker & Kamrin 2024's mechanically derived response (LAMMPS's `mdr`).
+    Mdr(crate::contact::mdr::Mdr),
 }
 
 /// `each_normal!(law, n => expr)`: `expr` with `n` bound to the law's own type, for
@@ -73,6 +76,7 @@ macro_rules! each_normal {
             $crate::contact::normal::NormalLaw::Hysteretic($n) => $body,
             $crate::contact::normal::NormalLaw::Storakers($n) => $body,
             $crate::contact::normal::NormalLaw::Thornton($n) => $body,
+            $crate::contact::normal::NormalLaw::Mdr($n) => $body,
         }
     };
 }
@@ -151,6 +155,11 @@ impl NormalLaw {
     /// See `NormalModel::pair_constant`.
     pub fn pair_constant(&self, pair: &PairProperties) -> Option<f64> {
         each_normal!(self, n => n.pair_constant(pair))
+    }
+
+    /// The MDR law, if this is it (`NormalModel::mdr`).
+    pub fn mdr(&self) -> Option<&crate::contact::mdr::Mdr> {
+        each_normal!(self, n => n.mdr())
     }
 
     /// See `NormalModel::error_model`.
