@@ -203,24 +203,29 @@ fn resume_refuses_the_contact_states_of_other_laws() {
     );
 }
 
-#[test]
-fn restored_simulation_steps_on_bit_for_bit() {
-    let scene = die_scene(1, 0);
-    // Stopped while the source is still pouring: its random generator goes on too.
+/// The die scene run for 2000 steps at once, and run for 250, captured as text,
+/// resumed in a simulation built afresh and run for the other 1750. It stops while the
+/// source is still pouring, so its random generator goes on too.
+fn whole_and_resumed(scene: &Value) -> (Simulation, Simulation) {
     let (n, m) = (250, 1750);
-    let mut whole = build(&scene);
+    let mut whole = build(scene);
     steps(&mut whole, n + m);
-
-    let mut first = build(&scene);
+    let mut first = build(scene);
     steps(&mut first, n);
     assert!(first.state().sources[0].remaining > 0 && first.state().particles.len() > 300);
     let json = serde_json::to_string(&first.state()).unwrap();
     drop(first);
-    let mut resumed = build(&scene);
+    let mut resumed = build(scene);
     resumed
         .resume(serde_json::from_str::<State>(&json).unwrap())
         .unwrap();
     steps(&mut resumed, m);
+    (whole, resumed)
+}
+
+#[test]
+fn restored_simulation_steps_on_bit_for_bit() {
+    let (whole, resumed) = whole_and_resumed(&die_scene(1, 0));
 
     let (a, b) = (&whole.state().particles, &resumed.state().particles);
     assert_eq!(a.len(), 330, "the source has poured all");
@@ -359,19 +364,7 @@ fn an_mdr_run_resumes_bit_for_bit() {
                    "damping": {"coefficient": 0.5, "form": "stiffness"}},
         "tangential": {"law": "mindlin_deresiewicz", "friction": 0.4}
     });
-    let (n, m) = (250, 1750);
-    let mut whole = build(&scene);
-    steps(&mut whole, n + m);
-    let mut first = build(&scene);
-    steps(&mut first, n);
-    assert!(first.state().sources[0].remaining > 0);
-    let json = serde_json::to_string(&first.state()).unwrap();
-    drop(first);
-    let mut resumed = build(&scene);
-    resumed
-        .resume(serde_json::from_str::<State>(&json).unwrap())
-        .unwrap();
-    steps(&mut resumed, m);
+    let (whole, resumed) = whole_and_resumed(&scene);
     let mdr = whole.state().mdr.as_ref().expect("an mdr state");
     assert_eq!(mdr.len(), 330, "the poured particles have their mdr state");
     assert!(

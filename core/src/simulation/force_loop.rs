@@ -251,13 +251,7 @@ impl Simulation {
         let torques = spins.on && T::ACTIVE;
         let law_reach = law.reach();
         let mut mdr_particles = self.state.mdr.as_mut();
-        let states = self
-            .state
-            .contacts
-            .store_mut()
-            .as_any_mut()
-            .downcast_mut::<ContactStates<StateOf<N, T>>>()
-            .expect("the contact states were made for the scene's laws");
+        let states = self.state.contacts.typed_mut::<StateOf<N, T>>();
         let mut fresh = StateOf::<N, T>::default();
 
         // The particle arrays as slices of one length n, so that one bounds check

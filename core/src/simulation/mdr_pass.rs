@@ -14,7 +14,6 @@ use super::force_loop::carried_state;
 use super::narrow_phase::NarrowPhase;
 use crate::contact::mdr::{Mdr, PairSides, bulk, penalty};
 use crate::contact::model::{NormalModel, StateOf, TangentialModel};
-use crate::contact::states::ContactStates;
 use crate::particles::Vec3;
 
 impl Simulation {
@@ -39,13 +38,7 @@ impl Simulation {
         let n = p.len();
         p.radius[..n].copy_from_slice(&particles.radius[..n]);
 
-        let states = self
-            .state
-            .contacts
-            .store_mut()
-            .as_any_mut()
-            .downcast_mut::<ContactStates<StateOf<N, T>>>()
-            .expect("the contact states were made for the scene's laws");
+        let states = self.state.contacts.typed_mut::<StateOf<N, T>>();
         let narrow = NarrowPhase {
             image: self.model.detection.space.minimum_image(),
             pairs: &self.state.neighbors.pairs[..],

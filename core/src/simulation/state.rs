@@ -25,7 +25,8 @@
 use super::energy::EnergyBook;
 use crate::boundary::WallPose;
 use crate::contact::mdr::MdrParticles;
-use crate::contact::states::StateStore;
+use crate::contact::model::ContactState;
+use crate::contact::states::{ContactStates, StateStore};
 use crate::detect::NeighborList;
 use crate::generate::pour::SourceState;
 use crate::particles::{Particles, Vec3};
@@ -94,6 +95,14 @@ impl Contacts {
                 panic!("contact states read from JSON are typed by Simulation::resume before use")
             }
         }
+    }
+
+    /// The typed store as the states of `S`, the scene's laws' (`StateOf<N, T>`).
+    pub(crate) fn typed_mut<S: ContactState>(&mut self) -> &mut ContactStates<S> {
+        self.store_mut()
+            .as_any_mut()
+            .downcast_mut::<ContactStates<S>>()
+            .expect("the contact states were made for the scene's laws")
     }
 
     /// The typed store, mutable.
