@@ -14,7 +14,6 @@ use super::force_loop::carried_state;
 use super::narrow_phase::NarrowPhase;
 use crate::contact::mdr::{Mdr, PairSides, bulk, penalty};
 use crate::contact::model::{NormalModel, StateOf, TangentialModel};
-use crate::particles::Vec3;
 
 impl Simulation {
     /// MDR's start of a step, for the scene's laws `N` (whose normal law is `mdr`) and
@@ -54,60 +53,17 @@ impl Simulation {
                 c.penalty = 0.0;
             }
         }
-        let position = narrow.position;
-        let radius = narrow.radius;
-        let image = narrow.image;
-        let between = |a: usize, b: usize| {
-            let d = image.displacement(&position[b], &position[a]);
-            let dist = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
-            (d, dist, 1.0 / dist, radius[a] + radius[b] - dist)
-        };
-        let dot = |a: Vec3, b: Vec3| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-        let index = |a: usize, b: usize| {
-            let key = (a.min(b) as u32, a.max(b) as u32);
-            pairs.binary_search(&key).ok()
-        };
-        let mut first = 0;
-        while first < pairs.len() {
-            let i = pairs[first].0;
-            let mut last = first;
-            while last < pairs.len() && pairs[last].0 == i {
-                last += 1;
-            }
-            for jj in first..last {
-                let j = pairs[jj].1 as usize;
-                let i = i as usize;
-                let (d_ij, r_ij, inv_ij, o_ij) = between(i, j);
-                if o_ij < 0.0 {
-                    continue;
+        let (position, radius, image) = (narrow.position, narrow.radius, narrow.image);
+        penalty::screen(
+            pairs,
+            |a, b| image.displacement(&position[b], &position[a]),
+            radius,
+            |c, p| {
+                if let Some(c) = N::mdr_contact(&mut states.pairs[c].normal) {
+                    c.penalty += p;
                 }
-                for &(_, k) in &pairs[jj + 1..last] {
-                    let k = k as usize;
-                    let (d_ik, r_ik, inv_ik, o_ik) = between(i, k);
-                    if o_ik < 0.0 {
-                        continue;
-                    }
-                    let (d_jk, r_jk, inv_jk, o_jk) = between(j, k);
-                    if o_jk < 0.0 {
-                        continue;
-                    }
-                    let r_max = r_ij.max(r_ik.max(r_jk));
-                    let (alpha, (a, b)) = if r_ij == r_max {
-                        (dot(-(d_ik * inv_ik), -(d_jk * inv_jk)).acos(), (i, j))
-                    } else if r_ik == r_max {
-                        (dot(-(d_ij * inv_ij), d_jk * inv_jk).acos(), (i, k))
-                    } else {
-                        (dot(d_ij * inv_ij, d_ik * inv_ik).acos(), (j, k))
-                    };
-                    if let Some(c) =
-                        index(a, b).and_then(|c| N::mdr_contact(&mut states.pairs[c].normal))
-                    {
-                        c.penalty += penalty::screening(alpha);
-                    }
-                }
-            }
-            first = last;
-        }
+            },
+        );
 
         // The mean surface displacement: pairs, then walls.
         for (k, &(i, j)) in pairs.iter().enumerate() {
@@ -115,14 +71,12 @@ impl Simulation {
             let d = image.displacement(&position[i], &position[j]);
             let rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
             let radsum = radius[i] + radius[j];
-            let state = &mut states.pairs[k];
-            if rsq < radsum * radsum {
-                if let Some(c) = N::mdr_contact(&mut state.normal) {
-                    let sides = PairSides::of(i, j, id[i], id[j]);
-                    bulk::add_pair(c, radsum - rsq.sqrt(), sides.0, particles);
-                }
-            } else {
-                *state = StateOf::<N, T>::default();
+            // A pair apart has its state reset by the force loop.
+            if rsq < radsum * radsum
+                && let Some(c) = N::mdr_contact(&mut states.pairs[k].normal)
+            {
+                let sides = PairSides::of(i, j, id[i], id[j]);
+                bulk::add_pair(c, radsum - rsq.sqrt(), sides.0, particles);
             }
         }
         let mut found = std::mem::take(&mut self.work.found);

@@ -216,8 +216,8 @@ impl Parameters {
         let pairs: Vec<(usize, usize)> = (0..n)
             .flat_map(|i| (i + 1..n).map(move |j| (i, j)))
             .collect();
+        let list: Vec<(u32, u32)> = pairs.iter().map(|&(i, j)| (i as u32, j as u32)).collect();
         let mut contacts = vec![MdrContact::default(); pairs.len()];
-        let pair_index = |i: usize, j: usize| pairs.iter().position(|&p| p == (i.min(j), i.max(j)));
         let mut walls = vec![MdrContact::default(); n];
         let mut states = Vec::new();
         for step in 0..=self.turns[2] {
@@ -238,7 +238,13 @@ impl Parameters {
             }
             if update {
                 particles.begin_step(law.bulk_trigger);
-                self.screen(&pairs, &x, &particles, &mut contacts, pair_index);
+                contacts.iter_mut().for_each(|c| c.penalty = 0.0);
+                penalty::screen(
+                    &list,
+                    |a, b| x[b] - x[a],
+                    &particles.radius,
+                    |c, p| contacts[c].penalty += p,
+                );
                 for (c, &(i, j)) in contacts.iter_mut().zip(&pairs) {
                     let dx = x[i] - x[j];
                     let rsq = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2];
@@ -332,55 +338,6 @@ impl Parameters {
             });
         }
         states
-    }
-
-    /// LAMMPS's contact penalty: every pair's cleared, then each triplet of pairwise
-    /// overlapping spheres (seen from the first sphere's list) adds to the contact
-    /// opposite its central sphere.
-    fn screen(
-        &self,
-        pairs: &[(usize, usize)],
-        x: &[Vec3],
-        particles: &MdrParticles,
-        contacts: &mut [MdrContact],
-        index: impl Fn(usize, usize) -> Option<usize>,
-    ) {
-        contacts.iter_mut().for_each(|c| c.penalty = 0.0);
-        let r = &particles.radius;
-        let between = |a: usize, b: usize| {
-            let d = x[b] - x[a];
-            let dist = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
-            (d, dist, 1.0 / dist, r[a] + r[b] - dist)
-        };
-        let dot = |a: Vec3, b: Vec3| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-        for &(i, j) in pairs {
-            for &(i2, k) in pairs {
-                if i2 != i || k <= j {
-                    continue;
-                }
-                let (d_ij, r_ij, inv_ij, o_ij) = between(i, j);
-                let (d_ik, r_ik, inv_ik, o_ik) = between(i, k);
-                let (d_jk, r_jk, inv_jk, o_jk) = between(j, k);
-                if o_ij < 0.0 || o_ik < 0.0 || o_jk < 0.0 {
-                    continue;
-                }
-                let r_max = r_ij.max(r_ik.max(r_jk));
-                let (alpha, (a, b)) = if r_ij == r_max {
-                    let e_ki = -(d_ik * inv_ik);
-                    let e_kj = -(d_jk * inv_jk);
-                    (dot(e_ki, e_kj).acos(), (i, j))
-                } else if r_ik == r_max {
-                    let e_ji = -(d_ij * inv_ij);
-                    let e_jk = d_jk * inv_jk;
-                    (dot(e_ji, e_jk).acos(), (i, k))
-                } else {
-                    (dot(d_ij * inv_ij, d_ik * inv_ik).acos(), (j, k))
-                };
-                if let Some(c) = index(a, b) {
-                    contacts[c].penalty += penalty::screening(alpha);
-                }
-            }
-        }
     }
 }
 

@@ -60,9 +60,6 @@ pub struct MdrForce {
     pub force: f64,
     /// The dashpot's coefficient η_eff, N·s/m; the dashpot force is η_eff dδ/dt.
     pub damping: f64,
-    /// LAMMPS's contact area output (`svector`, `pair/local p13`): half the sum of the
-    /// sides' weighed areas, the mean for a pair and half the area for a wall, m².
-    pub area: f64,
 }
 
 impl MdrContact {
@@ -90,7 +87,7 @@ impl MdrContact {
         };
         let weight = penalty::weight(self.penalty);
         let mut forces = [0.0; 2];
-        let (mut damping_radius, mut area) = (0.0, 0.0);
+        let mut damping_radius = 0.0;
         for (s, force) in forces.iter_mut().enumerate() {
             let (i, j) = (sides.0[s], sides.0[1 - s]);
             let side_delta = flat.force_side(
@@ -111,7 +108,6 @@ impl MdrContact {
                 update,
             );
             *force = out.force;
-            area += out.area;
             damping_radius += out.damping_radius;
         }
         let scale = (effective_mass * 2.0 * moduli.plane_strain * damping_radius).sqrt();
@@ -120,7 +116,6 @@ impl MdrContact {
             weight * (forces[0] + forces[1]) * 0.5,
             scale,
             damping_radius,
-            area * 0.5,
             update,
         )
     }
@@ -164,7 +159,6 @@ impl MdrContact {
             weight * out.force * magnifier,
             scale,
             damping_radius,
-            out.area * 0.5,
             update,
         )
     }
@@ -175,7 +169,6 @@ impl MdrContact {
         force: f64,
         scale: f64,
         damping_radius: f64,
-        area: f64,
         update: bool,
     ) -> MdrForce {
         if update {
@@ -184,7 +177,6 @@ impl MdrContact {
         MdrForce {
             force,
             damping: law.damping.coefficient(self.damping_scale),
-            area,
         }
     }
 }

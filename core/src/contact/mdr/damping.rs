@@ -31,14 +31,6 @@ pub enum MdrDampingForm {
 }
 
 impl MdrDamping {
-    /// LAMMPS's damping type number.
-    pub fn lammps_type(&self) -> u32 {
-        match self.form {
-            MdrDampingForm::Stiffness => 1,
-            MdrDampingForm::Velocity => 2,
-        }
-    }
-
     /// The dashpot's coefficient for a contact whose stored scale is `scale`
     /// (√(2 m* E* a), zero when the contact has no radius), N·s/m.
     pub fn coefficient(&self, scale: f64) -> f64 {

@@ -49,8 +49,6 @@ pub struct SideForce {
     pub force: f64,
     /// The contact radius the damping uses (the adhesive radius with γ > 0), m.
     pub damping_radius: f64,
-    /// The side's weighted contact area, m².
-    pub area: f64,
 }
 
 /// The force of the 1D indenter of height A (1/A = `a_inv`) and width B at depth
@@ -253,7 +251,6 @@ pub fn evaluate(
     SideForce {
         force: f_mdr + f_bulk,
         damping_radius: a_adh,
-        area: weight * area,
     }
 }
 
