@@ -278,3 +278,81 @@ fn deposited_materials_count_in_the_material_rules() {
         "{paths:?}"
     );
 }
+
+/// One MDR sphere (the law's own E and ν, the material's density) with `walls`.
+fn mdr_sphere_with_walls(walls: &str, output: &str) -> Scene {
+    two_spheres(
+        r#"{"normal": {"law": "mdr", "youngs_modulus": 1.83e11, "poisson_ratio": 0.318, "yield_stress": 8e8,
+            "bulk_trigger": 0.5, "damping": {"coefficient": 1.8, "form": "stiffness"}}}"#,
+        &format!(r#", "walls": [{walls}]{output}"#),
+    )
+}
+
+#[test]
+fn mdr_is_pair_granular_mdr_with_its_dashpot_radii_that_change_and_only_region_walls() {
+    let s = mdr_sphere_with_walls(
+        r#"{"material": "steel", "shape": {"kind": "plane", "point": [0, 0, -0.02], "normal": [0, 0, 1]}}"#,
+        "",
+    );
+    assert!(refusals(&s).is_empty(), "{:?}", refusals(&s));
+    let deck = deck_of(&s, "mdr").unwrap();
+    let model =
+        "mdr 1.83e11 3.18e-1 8e8 0e0 5e-1 1.8e0 damping mdr 1 tangential linear_nohistory 0 0";
+    for line in [
+        "atom_style   sphere 1\n".to_string(),
+        "newton       off\n".to_string(),
+        format!("pair_coeff   1 1 {model}\n"),
+        // Even an axis-aligned fixed plane: LAMMPS's mdr takes region walls only.
+        format!(
+            "region       wall0 plane 0e0 0e0 -2e-2 0e0 0e0 1e0 side in units box\nfix          wall0 all wall/gran/region granular {model} region wall0\n"
+        ),
+    ] {
+        assert!(deck.contains(&line), "{line}\n{deck}");
+    }
+    let boxed = mdr_sphere_with_walls(
+        r#"{"material": "steel", "shape": {"kind": "box", "lower": [-0.01, -0.01, -0.01], "upper": [0.01, 0.01, 0.01]}}"#,
+        "",
+    );
+    let refused = refusals(&boxed);
+    assert_eq!(refused.len(), 1, "{refused:?}");
+    assert_eq!(refused[0].0, "walls[0].shape");
+    assert!(refused[0].1.contains("region walls"), "{}", refused[0].1);
+    // Spins take the moment of inertia of the growing radius in LAMMPS.
+    let plane = r#"{"material": "steel", "shape": {"kind": "plane", "point": [0, 0, -0.02], "normal": [0, 0, 1]}}"#;
+    let spinning = mdr_sphere_with_walls(plane, r#", "rotation": {}"#);
+    let refused: Vec<String> = refusals(&spinning).into_iter().map(|(p, _)| p).collect();
+    assert_eq!(refused, ["rotation.inertia_radius"]);
+    let current = mdr_sphere_with_walls(plane, r#", "rotation": {"inertia_radius": "current"}"#);
+    assert!(refusals(&current).is_empty(), "{:?}", refusals(&current));
+}
+
+#[test]
+fn output_walls_prints_each_walls_displacement_and_force_into_walls_csv() {
+    let s = mdr_sphere_with_walls(
+        r#"{"material": "steel", "shape": {"kind": "plane", "point": [0, 0, -0.02], "normal": [0, 0, 1]},
+            "motion": {"kind": "velocity", "velocity": [0, 0, 0.5]}}"#,
+        r#", "output": {"trajectory_every": 10, "walls": true}"#,
+    );
+    let deck = deck_of(&s, "walls").unwrap();
+    for line in [
+        " region wall0 contacts\n",
+        "compute      wall0_f all reduce sum f_wall0[2] f_wall0[3] f_wall0[4]\n",
+        "variable     rec0_dx equal 0\n",
+        "variable     rec0_dz equal v_wall0_dz\n",
+        "variable     rec0_fz equal -(c_wall0_f[3])\n",
+        "variable     rec0_fz_g format rec0_fz %.17g\n",
+        "fix          rec_walls all print 10 \"\"\"${rec_step},1,${rec0_dx_g},${rec0_dy_g},${rec0_dz_g},${rec0_fx_g},${rec0_fy_g},${rec0_fz_g}\"\"\" file walls.csv screen no title \"step,wall,dx,dy,dz,fx,fy,fz\"\n",
+    ] {
+        assert!(deck.contains(line), "{line}\n{deck}");
+    }
+    // Without output.walls the deck is as before.
+    let plain = mdr_sphere_with_walls(
+        r#"{"material": "steel", "shape": {"kind": "plane", "point": [0, 0, -0.02], "normal": [0, 0, 1]}}"#,
+        "",
+    );
+    let deck = deck_of(&plain, "no-walls").unwrap();
+    assert!(
+        !deck.contains("contacts") && !deck.contains("walls.csv"),
+        "{deck}"
+    );
+}

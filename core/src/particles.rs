@@ -189,3 +189,26 @@ impl Particles {
             .sum()
     }
 }
+
+/// The radius a particle's moment of inertia takes where its radius changes during the
+/// run (MDR's apparent radius; a growth stage's particles have their final size's
+/// inertia throughout).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Deserialize, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum InertiaRadius {
+    /// The radius the particle starts with: its mass keeps the distribution it has,
+    /// and contacts' torques conserve angular momentum.
+    #[default]
+    Initial,
+    /// The radius of the step, as LAMMPS's `fix nve/sphere` takes it: a particle's
+    /// spin is kept while its moment of inertia changes, so angular momentum is not
+    /// conserved where radii change.
+    Current,
+}
+
+impl InertiaRadius {
+    /// The default: the radius the particle starts with.
+    pub fn is_initial(&self) -> bool {
+        *self == InertiaRadius::Initial
+    }
+}

@@ -37,11 +37,16 @@
 //!   equal-style variables of `time`, `region_move`). Servo and pressed walls, moving
 //!   boxes and other walls (open boxes included, `wall_fixes` says why), cohesion,
 //!   growth and scheduled insertion are refused.
+//! - MDR (`LammpsNormal::Mdr`) is `mdr E ν Y γ ψ_b η damping mdr 1|2` with the law's
+//!   own E and ν (for walls too), under `atom_style sphere 1` (its radii change), and
+//!   every wall a region with `fix wall/gran/region`, as LAMMPS's `fix granular/mdr`
+//!   requires: planes and cylinders, no boxes.
 //! - Dumps at `%.17g`, sorted by id: every `dump_every` steps to `dump.lammps`, the
 //!   final state to `final.lammps`; `tamp compare` and `import-liggghts-dump` read them.
 
 use crate::contact::lammps::LammpsNormal;
 use crate::contact::lever_arm::LeverArm;
+use crate::contact::mdr::damping::MdrDampingForm;
 use crate::contact::tangential::TangentialLaw;
 use crate::contact::tangential::lammps_linear_history::LammpsHistory;
 use crate::error::{Result, TampError};
@@ -51,6 +56,7 @@ use crate::peer_deck::{
     neighbor_skin, scene_refusals, timestep_and_gravity,
 };
 use crate::scene::Scene;
+use crate::scene::physics::InertiaRadius;
 use crate::scene::walls::{Curvature, MotionSpec, ShapeSpec, WallSpec};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -70,6 +76,8 @@ pub(super) fn pair_model(scene: &Scene) -> std::result::Result<String, Vec<(Stri
         .map_err(|why| refused.push(("contact.normal.law".to_string(), why.0)))
         .ok();
     let damping = match (&scene.contact.dashpot(), normal) {
+        // MDR's dashpot is the law's own, `damping mdr 1|2` after its η.
+        (_, Some(LammpsNormal::Mdr(law))) => Some(("mdr", law.damping.coefficient)),
         // LAMMPS 22 Jul 2025 refuses `damping none` ("Must specify damping granular
         // model"); `velocity` with η = 0 adds a force of exactly zero.
         (None, _) => Some(("velocity", 0.0)),
@@ -96,6 +104,22 @@ pub(super) fn pair_model(scene: &Scene) -> std::result::Result<String, Vec<(Stri
                 }
                 LammpsNormal::Hooke { stiffness } => {
                     format!("hooke {} {}", g(stiffness), g(coefficient))
+                }
+                LammpsNormal::Mdr(law) => {
+                    let form = match law.damping.form {
+                        MdrDampingForm::Stiffness => 1,
+                        MdrDampingForm::Velocity => 2,
+                    };
+                    let kw = format!("mdr {form}");
+                    return Ok(format!(
+                        "mdr {} {} {} {} {} {} damping {kw} tangential {t}",
+                        g(law.youngs_modulus),
+                        g(law.poisson_ratio),
+                        g(law.yield_stress),
+                        g(law.surface_energy),
+                        g(law.bulk_trigger),
+                        g(coefficient)
+                    ));
                 }
             };
             let limit = match scene.contact.damping.is_some_and(|d| d.limit) {
@@ -237,12 +261,22 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
             "rotation.inertia_scale".into(),
             "LAMMPS's fix nve/sphere uses the moment of inertia of a solid sphere (scale 1)",
         ),
+        Some(r)
+            if scene.contact.normal.mdr().is_some()
+                && r.inertia_radius != InertiaRadius::Current =>
+        {
+            refuse(
+                "rotation.inertia_radius".into(),
+                "LAMMPS's fix nve/sphere takes the moment of inertia of the radius of the step, which MDR grows; set \"inertia_radius\": \"current\" for the same physics",
+            )
+        }
         _ => {}
     }
     for (path, why) in scene_refusals(scene, LAMMPS) {
         refuse(path, &why);
     }
     let hertz = scene.contact.normal.lammps() == Ok(LammpsNormal::HertzMaterial);
+    let mdr = scene.contact.normal.mdr().is_some();
     for (k, m) in scene.materials.iter().enumerate() {
         if m.rigid {
             // A wall material only; walls are refused below, and a stand-in
@@ -282,6 +316,10 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
                     );
                 }
             }
+            _ if mdr => refuse(
+                format!("walls[{k}].shape"),
+                "LAMMPS's mdr takes only region walls (fix wall/gran/region): give the box as plane walls",
+            ),
             _ => {
                 if let Err(why) = wall_fixes(w, periodic) {
                     refuse(format!("walls[{k}]"), why);
@@ -311,11 +349,13 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
                 m.youngs_modulus == wm.youngs_modulus && m.poisson_ratio == wm.poisson_ratio
             })
         };
-        if !scene
-            .materials
-            .iter()
-            .filter(|m| made_of(scene, &m.name))
-            .all(|m| same(&m))
+        // MDR states E and ν in the law, for walls and particles alike.
+        if !mdr
+            && !scene
+                .materials
+                .iter()
+                .filter(|m| made_of(scene, &m.name))
+                .all(|m| same(&m))
         {
             refuse(
                 format!("walls[{k}].material"),
@@ -483,15 +523,16 @@ fn cylinder_region(w: &WallSpec) -> Option<String> {
 /// the contact at the distance d = (x − p)·n̂ when 0 ≤ d < R, and gives it the contact
 /// radius 0, the flat wall R* = R of tamp's plane. Behind the plane (d < 0) LAMMPS has
 /// no contact where tamp reports a deep overlap; a run that gets there has already
-/// failed tamp's stability limits. Axis-aligned fixed planes stay `fix wall/gran`
+/// failed tamp's stability limits. Every plane of an MDR scene is a region (`mdr`:
+/// LAMMPS's mdr takes no other wall). Other axis-aligned fixed planes stay `fix wall/gran`
 /// planes (`wall_fixes`): the same contact to the bit, for a normal along an axis the
 /// region's d has the other components' products exactly zero, and the recorded cases
 /// use that form.
-fn plane_region(w: &WallSpec) -> Option<String> {
+fn plane_region(w: &WallSpec, mdr: bool) -> Option<String> {
     let ShapeSpec::Plane { point, normal } = &w.shape else {
         return None;
     };
-    if matches!(w.motion, MotionSpec::Fixed) && along_an_axis(normal).is_some() {
+    if !mdr && matches!(w.motion, MotionSpec::Fixed) && along_an_axis(normal).is_some() {
         return None;
     }
     let [px, py, pz] = point.map(g);
@@ -699,6 +740,66 @@ fn starts_outside(w: &WallSpec, sim: &crate::simulation::Simulation, shift: Vec3
         .map(|i| p.id[i])
 }
 
+/// The fixes of one wall and the axes its region moves along, for `walls_record`.
+struct WallRecord {
+    fixes: Vec<String>,
+    moves: [bool; 3],
+}
+
+/// `walls.csv` as `tamp run` writes it for `output.walls` (docs/engines.md): every
+/// `every` steps and each wall, its displacement (the region's move variables, 0 for
+/// a fixed wall) and the force the particles exert on it, minus the sum of the wall's
+/// force on each particle (columns 2–4 of its fixes' `contacts` arrays) over its fixes.
+/// Every number goes through a `format` variable at `%.17g`: a plain substitution
+/// would give 15 digits.
+fn walls_record(deck: &mut String, walls: &[WallRecord], every: u64) {
+    deck.push_str(
+        "variable     rec_step equal step
+",
+    );
+    let mut rows = Vec::new();
+    for (k, w) in walls.iter().enumerate() {
+        for fix in &w.fixes {
+            let _ = writeln!(
+                deck,
+                "compute      {fix}_f all reduce sum f_{fix}[2] f_{fix}[3] f_{fix}[4]"
+            );
+        }
+        for (a, (axis, moves)) in AXES.iter().zip(w.moves).enumerate() {
+            let d = match moves {
+                true => format!("v_wall{k}_d{axis}"),
+                false => "0".to_string(),
+            };
+            let _ = writeln!(deck, "variable     rec{k}_d{axis} equal {d}");
+            let sum: Vec<String> = w
+                .fixes
+                .iter()
+                .map(|fix| format!("c_{fix}_f[{}]", a + 1))
+                .collect();
+            let _ = writeln!(
+                deck,
+                "variable     rec{k}_f{axis} equal -({})",
+                sum.join("+")
+            );
+        }
+        let cells: Vec<String> = ["d", "f"]
+            .iter()
+            .flat_map(|q| AXES.iter().map(move |axis| format!("rec{k}_{q}{axis}")))
+            .collect();
+        for c in &cells {
+            let _ = writeln!(deck, "variable     {c}_g format {c} %.17g");
+        }
+        let values: Vec<String> = cells.iter().map(|c| format!("${{{c}_g}}")).collect();
+        rows.push(format!("${{rec_step}},{},{}", k + 1, values.join(",")));
+    }
+    let _ = writeln!(
+        deck,
+        "fix          rec_walls all print {every} \"\"\"{}\"\"\" file walls.csv screen no title \"{}\"",
+        rows.join("\n"),
+        crate::output::run_files::WALLS_HEADER
+    );
+}
+
 fn refuse_all(list: Vec<(String, String)>) -> TampError {
     crate::error::cannot_export("LAMMPS", list)
 }
@@ -833,7 +934,16 @@ pub fn export(
         &format!(", dt {}", g(sim.dt())),
         "lmp -in in.tamp   (or mpiexec -n N lmp -in in.tamp)",
     );
-    deck.push_str("units        si\natom_style   sphere\natom_modify  map array\n");
+    // MDR's apparent radii change every step: `sphere 1` sends them to the ghosts.
+    let mdr = scene.contact.normal.mdr().is_some();
+    let atom_style = match mdr {
+        true => "sphere 1",
+        false => "sphere",
+    };
+    let _ = writeln!(
+        deck,
+        "units        si\natom_style   {atom_style}\natom_modify  map array"
+    );
     let _ = writeln!(deck, "boundary     {}", boundary.join(" "));
     deck.push_str("newton       off\ncomm_modify  vel yes\nread_data    particles.data\n");
     let _ = writeln!(deck, "neighbor     {} bin\nneigh_modify delay 0", g(skin));
@@ -896,7 +1006,18 @@ pub fn export(
     // one μ: where the particle materials meet a wall with different μ (friction
     // pairs), the wall is one fix per particle type, each on the group of that type.
     let mut grouped = Vec::new();
+    // With `output.walls` each wall fix keeps its per-particle forces (`contacts`),
+    // summed into the wall's force in `walls.csv` (`walls_record`).
+    let contacts = match scene.output.walls {
+        true => " contacts",
+        false => "",
+    };
+    let mut wall_records: Vec<WallRecord> = Vec::new();
     for (k, w) in scene.walls.iter().enumerate() {
+        let mut record = WallRecord {
+            fixes: Vec::new(),
+            moves: [false; 3],
+        };
         let wm = sim.model().walls[k].material;
         let groups: Vec<(String, String, f64)> =
             if kinds.iter().all(|&a| mu(a, wm) == mu(kinds[0], wm)) {
@@ -918,11 +1039,14 @@ pub fn export(
                     })
                     .collect()
             };
-        if let Some(region) = cylinder_region(w).or_else(|| plane_region(w)) {
+        if let Some(region) = cylinder_region(w).or_else(|| plane_region(w, mdr)) {
             let motion = region_move(k, w).expect("refusals checked the motion");
             let moving = match motion {
                 Some((variables, keyword)) => {
                     deck.push_str(&variables);
+                    for (moves, axis) in record.moves.iter_mut().zip(AXES) {
+                        *moves = keyword.contains(&format!("v_wall{k}_d{axis}"));
+                    }
                     format!(" {keyword}")
                 }
                 None => String::new(),
@@ -931,21 +1055,28 @@ pub fn export(
             for (id, group, mu) in &groups {
                 let _ = writeln!(
                     deck,
-                    "fix          wall{k}{id} {group} wall/gran/region granular {} region wall{k}",
+                    "fix          wall{k}{id} {group} wall/gran/region granular {} region wall{k}{contacts}",
                     line(wm, *mu)
                 );
+                record.fixes.push(format!("wall{k}{id}"));
             }
+            wall_records.push(record);
             continue;
         }
         for (suffix, geometry) in wall_fixes(w, periodic_axes).expect("refusals checked the wall") {
             for (id, group, mu) in &groups {
                 let _ = writeln!(
                     deck,
-                    "fix          wall{k}{suffix}{id} {group} wall/gran granular {} {geometry}",
+                    "fix          wall{k}{suffix}{id} {group} wall/gran granular {} {geometry}{contacts}",
                     line(wm, *mu)
                 );
+                record.fixes.push(format!("wall{k}{suffix}{id}"));
             }
         }
+        wall_records.push(record);
+    }
+    if scene.output.walls {
+        walls_record(&mut deck, &wall_records, every);
     }
     integrate_and_run(&mut deck, LAMMPS, every, built.steps);
     crate::output::write_atomic(&out_dir.join("in.tamp"), deck.as_bytes())?;

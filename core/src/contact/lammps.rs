@@ -28,6 +28,9 @@ pub enum LammpsNormal {
         /// Normal spring stiffness k_n, N/m.
         stiffness: f64,
     },
+    /// `mdr E ν Y γ ψ_b η` with `damping mdr 1|2` = tamp `mdr`: the law carries its
+    /// own E, ν and dashpot.
+    Mdr(crate::contact::mdr::Mdr),
 }
 
 impl LammpsNormal {
@@ -36,14 +39,16 @@ impl LammpsNormal {
         match self {
             LammpsNormal::HertzMaterial => "hertz/material",
             LammpsNormal::Hooke { .. } => "hooke",
+            LammpsNormal::Mdr(_) => "mdr",
         }
     }
 
     /// The secant stiffness F/δ over the tangent stiffness dF/dδ of the model: 2/3
-    /// for Hertz (F ∝ δ^{3/2}), 1 for a linear spring.
+    /// for Hertz (F ∝ δ^{3/2}) and for MDR's elastic branch, which is Hertz's at small
+    /// overlap; 1 for a linear spring.
     pub fn secant_over_tangent(&self) -> f64 {
         match self {
-            LammpsNormal::HertzMaterial => 2.0 / 3.0,
+            LammpsNormal::HertzMaterial | LammpsNormal::Mdr(_) => 2.0 / 3.0,
             LammpsNormal::Hooke { .. } => 1.0,
         }
     }

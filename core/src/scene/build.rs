@@ -271,6 +271,10 @@ pub fn build(scene: &Scene) -> Result<BuiltScene> {
         gravity: scene.gravity.map(|g| v3(&g)),
         rotation: scene.rotation.is_some(),
         inertia_scale: super::physics::inertia_scale(scene.rotation.as_ref()),
+        inertia_radius: scene
+            .rotation
+            .as_ref()
+            .map_or(Default::default(), |r| r.inertia_radius),
         walls,
         sources,
         growth: None,

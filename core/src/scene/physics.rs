@@ -4,13 +4,14 @@
 //!
 //! ```json
 //! "gravity": [0, 0, -9.81], "periodic": {"x": [0, 0.02], "y": [0, 0.02]},
-//! "rotation": {"inertia_scale": 10}
+//! "rotation": {"inertia_scale": 10, "inertia_radius": "current"}
 //! ```
 
 use super::schema::Scene;
 use crate::contact::ContactLaw;
 use crate::error::{Errors, Result, TampError};
 use crate::generate::pour::Source;
+pub use crate::particles::InertiaRadius;
 use crate::particles::Particles;
 use crate::space::Space;
 use serde::{Deserialize, Serialize};
@@ -55,6 +56,9 @@ pub struct RotationSpec {
     /// Multiplies every moment of inertia (Rojek 2016 §3.4 uses 10).
     #[serde(default = "one")]
     pub inertia_scale: f64,
+    /// The radius of the moment of inertia 2/5 m R² when radii change during the run.
+    #[serde(default, skip_serializing_if = "InertiaRadius::is_initial")]
+    pub inertia_radius: InertiaRadius,
 }
 
 fn one() -> f64 {

@@ -1,7 +1,8 @@
 //! MDR's pass at the start of the force computation, before any contact force
 //! (LAMMPS's `fix GRANULAR/MDR` `pre_force`): the particles' update from the last
 //! step's sums (volumes, free surface, the apparent radius, which becomes the
-//! particle's radius), the screening penalty of every contact, and each particle's
+//! particle's radius, and its moment of inertia with `rotation.inertia_radius`
+//! `current`), the screening penalty of every contact, and each particle's
 //! mean surface displacement. Only a scene with the MDR law runs it: the force loop
 //! calls it behind `NormalModel::mdr`, which is `None` for every other law.
 //!
@@ -14,6 +15,7 @@ use super::force_loop::carried_state;
 use super::narrow_phase::NarrowPhase;
 use crate::contact::mdr::{Mdr, PairSides, bulk, penalty};
 use crate::contact::model::{NormalModel, StateOf, TangentialModel};
+use crate::particles::InertiaRadius;
 
 impl Simulation {
     /// MDR's start of a step, for the scene's laws `N` (whose normal law is `mdr`) and
@@ -36,6 +38,14 @@ impl Simulation {
         let p = &mut self.state.particles;
         let n = p.len();
         p.radius[..n].copy_from_slice(&particles.radius[..n]);
+        // With `"inertia_radius": "current"` the spins turn with the apparent radius's
+        // moment of inertia, 2/5 m R², as LAMMPS's fix nve/sphere takes it.
+        if self.model.inertia_radius == InertiaRadius::Current {
+            let scale = self.model.inertia_scale;
+            for i in 0..n {
+                p.inertia[i] = scale * 0.4 * p.mass[i] * p.radius[i] * p.radius[i];
+            }
+        }
 
         let states = self.state.contacts.typed_mut::<StateOf<N, T>>();
         let narrow = NarrowPhase {

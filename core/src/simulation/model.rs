@@ -33,6 +33,9 @@ pub struct Model {
     pub rotation: bool,
     /// Moment-of-inertia scale of new particles (`rotation.inertia_scale`).
     pub inertia_scale: f64,
+    /// Which radius the moments of inertia take where radii change
+    /// (`rotation.inertia_radius`).
+    pub inertia_radius: crate::particles::InertiaRadius,
     /// Boundaries (walls, containers, meshes): shape, material and motion law. Where
     /// each one is lives in the state (`State::walls`).
     pub walls: Vec<Boundary>,

@@ -22,6 +22,7 @@ mod hollomon_constants;
 mod kuwabara_kono_restitution;
 mod lammps_die_press_cycle;
 mod lammps_mdr_contacts;
+mod lammps_mdr_triaxial;
 mod linear_damped_collision;
 mod linear_restitution;
 mod mdr_curve;
@@ -121,6 +122,7 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("lammps_die_compaction_small", die_compaction_replay::lammps),
     ("lammps_die_press_cycle", lammps_die_press_cycle::run),
     ("lammps_mdr_contacts", lammps_mdr_contacts::run),
+    ("lammps_mdr_triaxial", lammps_mdr_triaxial::run),
     ("lammps_settled_packing", settled_packing::lammps),
 ];
 

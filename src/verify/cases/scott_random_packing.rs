@@ -58,7 +58,10 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         friction: 0.5,
         friction_pairs: Vec::new(),
     });
-    frictional.rotation = Some(RotationSpec { inertia_scale: 1.0 });
+    frictional.rotation = Some(RotationSpec {
+        inertia_scale: 1.0,
+        inertia_radius: Default::default(),
+    });
     let with_friction = interior_packing_fraction(ctx, "frictional", &frictional)?;
     Ok(vec![
         Measured::new("packing_fraction", frictionless, 0.637),

@@ -28,9 +28,23 @@ pub fn export(peer: Peer, resolved: &Resolved, dir: &Path) -> Result<String, Ref
         e => Refusal::Failed(e),
     })?;
     if resolved.spec.walls {
-        return Err(Refusal::NotExpressible(
-            "output.walls: the exported deck records no wall displacements and forces".into(),
-        ));
+        let every = resolved.spec.trajectory_every;
+        match peer {
+            Peer::Liggghts => {
+                return Err(Refusal::NotExpressible(
+                    "output.walls: the LIGGGHTS deck records no wall displacements and forces"
+                        .into(),
+                ));
+            }
+            // The LAMMPS deck prints walls.csv every `every` steps (fix print).
+            Peer::Lammps if !resolved.steps.is_multiple_of(every) => {
+                return Err(Refusal::NotExpressible(format!(
+                    "output.walls: the LAMMPS deck prints walls.csv every {every} steps, and the run's last step {} is not one of them",
+                    resolved.steps
+                )));
+            }
+            Peer::Lammps => {}
+        }
     }
     Ok(super::peer_record::deck_sha256(dir)?)
 }
@@ -93,9 +107,14 @@ pub fn record(
     }
     let bytes = std::fs::read(dir.join(dump))
         .map_err(|e| TampError::io(format!("reading {}", dir.join(dump).display()), e))?;
-    Ok((
-        resolved.recording(&dir.join(dump), &rows)?,
-        deck_sha256,
-        crate::scene::sha256_hex(&bytes),
-    ))
+    let mut recording = resolved.recording(&dir.join(dump), &rows)?;
+    if resolved.spec.walls {
+        let walls = dir.join("walls.csv");
+        recording.attach_walls(
+            &walls.display().to_string(),
+            &crate::compare::read_walls(&walls)?,
+            resolved.scene.walls.len(),
+        )?;
+    }
+    Ok((recording, deck_sha256, crate::scene::sha256_hex(&bytes)))
 }

@@ -64,6 +64,12 @@ impl CriticalFraction {
         let beta = match normal {
             LammpsNormal::HertzMaterial => -self.xi / liggghts::SQRT_FIVE_SIXTHS,
             LammpsNormal::Hooke { .. } => -self.xi,
+            LammpsNormal::Mdr(_) => {
+                return Err(NoLammpsModel(
+                    "mdr takes only its own dashpot (damping mdr 1|2), the law's 'damping' field"
+                        .into(),
+                ));
+            }
         };
         if beta <= -1.0 {
             return Err(NoLammpsModel(format!(

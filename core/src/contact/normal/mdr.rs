@@ -40,12 +40,11 @@ impl NormalModel for Mdr {
         Mdr::check(self, path, errors)
     }
 
-    /// LAMMPS has the law (`pair granular mdr`), but the export does not write it yet:
-    /// it needs `newton off`, region walls and the law's own dashpot.
+    /// `pair granular mdr E ν Y γ ψ_b η damping mdr 1|2`, with `newton off`, an
+    /// `atom_style sphere 1` whose radii change, and every wall a region
+    /// (`fix wall/gran/region`): what LAMMPS's `fix granular/mdr` requires.
     fn lammps(&self) -> Result<LammpsNormal, NoLammpsModel> {
-        Err(NoLammpsModel(
-            "tamp's export does not write LAMMPS's 'mdr' yet (pair granular mdr needs newton off, region walls and damping mdr); reference_data/lammps/lammps_mdr_contacts holds hand-written decks".into(),
-        ))
+        Ok(LammpsNormal::Mdr(*self))
     }
 
     /// A fresh pair of equal spheres of radius R = 2R* evaluated once past yield: each
