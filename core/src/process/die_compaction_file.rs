@@ -243,8 +243,6 @@ impl DieCompactionFile {
                 particle_materials: [dc.particles.material.as_str()].into(),
                 rotation: scene.rotation.is_some(),
                 growth: false,
-                // The pressing draws its force chains from the contact records.
-                contact_records: Some("die_compaction"),
                 materials: &scene.materials,
                 names: &names,
             };

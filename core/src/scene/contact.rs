@@ -136,9 +136,6 @@ pub struct LawContext<'a> {
     pub rotation: bool,
     /// Whether the scene grows its particles (a growth stage).
     pub growth: bool,
-    /// What makes the run write its contacts, if anything: the field that asks
-    /// (`output.contacts_every`, or a die compaction, which draws its force chains).
-    pub contact_records: Option<&'static str>,
 }
 
 impl<'a> LawContext<'a> {
@@ -157,7 +154,6 @@ impl<'a> LawContext<'a> {
                 .collect(),
             rotation: scene.rotation.is_some(),
             growth: scene.growth.is_some(),
-            contact_records: (scene.output.contacts_every > 0).then_some("output.contacts_every"),
         }
     }
 }
@@ -245,12 +241,6 @@ fn mdr_rules(contact: &ContactSpec, at: &str, ctx: &LawContext, e: &mut Errors) 
         e.push(
             "growth",
             why("mdr grows the apparent radius itself from the plastically displaced volume"),
-        );
-    }
-    if let Some(field) = ctx.contact_records {
-        e.push(
-            field,
-            why("the contact records (output.contacts_every, a pressing's force chains) do not yet carry the particles' mdr state, so they would report other forces than the run's"),
         );
     }
 }

@@ -2,6 +2,7 @@
 //! gravity and prescribed bodies, and the check that a run does not create energy.
 
 use super::Simulation;
+use crate::contact::mdr::{PairSides, WallSide};
 use crate::contact::model::{Composed, LawVisitor, NormalModel, StateOf, TangentialModel};
 use crate::error::Result;
 use serde::{Deserialize, Serialize};
@@ -73,11 +74,28 @@ impl Simulation {
     {
         let reach = law.reach();
         let states = self.states_as::<StateOf<N, T>>();
+        // MDR's contacts hold energy by their particles' state too (`MdrContact`).
+        let mdr = law
+            .normal
+            .mdr()
+            .zip(self.state.mdr.as_ref())
+            .map(|(m, particles)| (m, m.moduli(), particles));
+        let id = &self.state.particles.id;
         let pairs: f64 = self
             .touching_pairs(reach)
             .map(|(k, i, j, overlap)| {
                 let (pair, r_eff) = self.pair_of(i, j);
-                law.stored_energy(overlap, r_eff, pair, &states.pair(k))
+                let mut state = states.pair(k);
+                let held = match &mdr {
+                    Some((m, moduli, particles)) => {
+                        N::mdr_contact(&mut state.normal).map_or(0.0, |c| {
+                            let sides = PairSides::of(i, j, id[i], id[j]);
+                            c.pair_energy(m, moduli, overlap, sides, particles)
+                        })
+                    }
+                    None => 0.0,
+                };
+                law.stored_energy(overlap, r_eff, pair, &state) + held
             })
             .sum();
         let walls: f64 = self
@@ -85,7 +103,15 @@ impl Simulation {
             .into_iter()
             .map(|(w, i, facet, overlap)| {
                 let (pair, r_eff) = self.wall_pair_of(w, i);
-                law.stored_energy(overlap, r_eff, pair, &states.wall(w, i, facet))
+                let mut state = states.wall(w, i, facet);
+                let held = match &mdr {
+                    Some((m, moduli, particles)) => N::mdr_contact(&mut state.normal)
+                        .map_or(0.0, |c| {
+                            c.wall_energy(m, moduli, overlap, WallSide(i), particles)
+                        }),
+                    None => 0.0,
+                };
+                law.stored_energy(overlap, r_eff, pair, &state) + held
             })
             .sum();
         pairs + walls

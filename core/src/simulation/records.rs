@@ -1,9 +1,13 @@
 //! The contacts of a step as records (`Simulation::step_recording_contacts`): the
 //! force loop's geometry and laws on copies of the stored states, so nothing advances.
+//! MDR's contacts also need their particles' state after the pass that opens the force
+//! loop (`mdr_pass.rs`): they are evaluated on a copy of the run that has made it.
 
 use super::Simulation;
 use super::contact_pass::Spins;
 use super::force_loop::{Bodies, carried_state, pair_geometry, resolve, wall_geometry};
+use crate::contact::mdr::parameters::Moduli;
+use crate::contact::mdr::{Mdr, MdrParticles, PairSides, WallSide};
 use crate::contact::model::{Composed, LawVisitor, NormalModel, StateOf, TangentialModel};
 use crate::contact::record::{ContactRecord, Partner};
 use crate::contact::states::ContactStates;
@@ -35,6 +39,31 @@ impl Simulation {
         N: NormalModel,
         T: TangentialModel,
     {
+        match law.normal.mdr() {
+            // MDR's forces need the pass before them, which changes the particles'
+            // state: it runs on a copy of the run, as the force loop will run it.
+            Some(m) => {
+                let mut copy = self.clone();
+                copy.mdr_begin_step::<N, T>(m);
+                let particles = copy.state.mdr.take();
+                copy.records_of(law, particles.map(|p| (m, m.moduli(), p)))
+            }
+            None => self.records_of(law, None),
+        }
+    }
+
+    /// The records of `contact_records_with`, each MDR contact evaluated with the
+    /// particles' MDR state `mdr` (which the evaluations advance, as the force loop's do).
+    fn records_of<N, T>(
+        &self,
+        law: &Composed<N, T>,
+        mut mdr: Option<(&Mdr, Moduli, MdrParticles)>,
+    ) -> Vec<ContactRecord>
+    where
+        N: NormalModel,
+        T: TangentialModel,
+    {
+        let update = self.work.stepping;
         let kept = ContactStates::<StateOf<N, T>>::KEPT;
         let spins = Spins::of(&self.model.law, self.model.rotation);
         let states = self.states_as::<StateOf<N, T>>();
@@ -61,7 +90,22 @@ impl Simulation {
             } else {
                 Default::default()
             };
-            if let Ok((_, f)) = resolve(law, &g, ratio, max_fraction, pair, &mut state, dt, None) {
+            let given = mdr.as_mut().and_then(|(m, moduli, particles)| {
+                N::mdr_contact(&mut state.normal).map(|c| {
+                    let sides = PairSides::of(i, j, p.id[i], p.id[j]);
+                    c.pair(
+                        m,
+                        moduli,
+                        overlap,
+                        sides,
+                        particles,
+                        g.normal,
+                        g.effective_mass,
+                        update,
+                    )
+                })
+            });
+            if let Ok((_, f)) = resolve(law, &g, ratio, max_fraction, pair, &mut state, dt, given) {
                 out.push(ContactRecord {
                     i,
                     partner: Partner::Particle(j),
@@ -92,8 +136,22 @@ impl Simulation {
                     } else {
                         Default::default()
                     };
+                    let given = mdr.as_mut().and_then(|(m, moduli, particles)| {
+                        N::mdr_contact(&mut state.normal).map(|c| {
+                            c.wall(
+                                m,
+                                moduli,
+                                contact.overlap,
+                                WallSide(i),
+                                particles,
+                                g.normal,
+                                g.effective_mass,
+                                update,
+                            )
+                        })
+                    });
                     if let Ok((_, f)) =
-                        resolve(law, &g, ratio, max_fraction, pair, &mut state, dt, None)
+                        resolve(law, &g, ratio, max_fraction, pair, &mut state, dt, given)
                     {
                         let point = p.position[i] - g.normal * arm.torque;
                         out.push(ContactRecord {

@@ -163,6 +163,56 @@ impl MdrContact {
         )
     }
 
+    /// The elastic energy the pair holds (`side::stored_energy`): the two sides' in
+    /// series carry one force w(F₀ + F₁)/2 ≈ wF over the sum of their overlaps, so
+    /// w (E₀ + E₁).
+    /// `delta` is the pair's overlap, which the flat splits between the sides as
+    /// `pair` does.
+    pub fn pair_energy(
+        &self,
+        law: &Mdr,
+        moduli: &Moduli,
+        delta: f64,
+        sides: PairSides,
+        particles: &MdrParticles,
+    ) -> f64 {
+        let flat = Flat {
+            max_overlap: self.max_overlap.max(delta),
+            plastic: [self.sides[0].plastic_overlap, self.sides[1].plastic_overlap],
+        };
+        let w = penalty::weight(self.penalty);
+        w * (0..2)
+            .map(|s| {
+                let (i, j) = (sides.0[s], sides.0[1 - s]);
+                let side_delta = flat.force_side(
+                    delta,
+                    particles.radius[i],
+                    particles.radius[j],
+                    flat.plastic[s],
+                );
+                side::stored_energy(law, moduli, &self.sides[s], side_delta, i, particles)
+            })
+            .sum::<f64>()
+    }
+
+    /// The elastic energy the wall contact holds: its side's, times the weight and the
+    /// force magnifier of the present displacement.
+    pub fn wall_energy(
+        &self,
+        law: &Mdr,
+        moduli: &Moduli,
+        delta: f64,
+        side: WallSide,
+        particles: &MdrParticles,
+    ) -> f64 {
+        let i = side.0;
+        let magnifier =
+            (10.7 * self.sides[0].displacement / particles.initial_radius[i] - 10.0).exp() + 1.0;
+        penalty::weight(self.penalty)
+            * magnifier
+            * side::stored_energy(law, moduli, &self.sides[0], delta, i, particles)
+    }
+
     fn finish(
         &mut self,
         law: &Mdr,

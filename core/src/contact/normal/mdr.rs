@@ -15,8 +15,9 @@
 //! Time-step stiffness: one side's indenter has dF/dδ_e = 2E*a at contact radius a, so a
 //! side is bounded by 2E*a and a pair of equal sides (in series) by E*a; tamp takes
 //! 2E* times the larger side's radius. Before contact, the Hertz impact stiffness of
-//! the pair (E*/2, R*), MDR's small-overlap limit. Stored energy: none is counted (the
-//! energy book's dissipation then includes what the contacts hold).
+//! the pair (E*/2, R*), MDR's small-overlap limit. Stored energy: the particles' state
+//! is needed, so `energy` here is 0 and the energy book adds each contact's
+//! (`MdrContact::pair_energy`, `wall_energy`).
 
 use super::NormalLaw;
 use super::hertz::{hertz_max_overlap, hertz_stiffness};
