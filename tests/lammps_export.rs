@@ -302,6 +302,7 @@ fn mdr_is_pair_granular_mdr_with_its_dashpot_radii_that_change_and_only_region_w
         "atom_style   sphere 1\n".to_string(),
         "newton       off\n".to_string(),
         format!("pair_coeff   1 1 {model}\n"),
+        "dump         mdr all custom 10 mdr.lammps id d_psi\n".to_string(),
         // Even an axis-aligned fixed plane: LAMMPS's mdr takes region walls only.
         format!(
             "region       wall0 plane 0e0 0e0 -2e-2 0e0 0e0 1e0 side in units box\nfix          wall0 all wall/gran/region granular {model} region wall0\n"

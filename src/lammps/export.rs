@@ -41,6 +41,8 @@
 //!   own E and ν (for walls too), under `atom_style sphere 1` (its radii change), and
 //!   every wall a region with `fix wall/gran/region`, as LAMMPS's `fix granular/mdr`
 //!   requires: planes and cylinders, no boxes.
+//! - MDR scenes also dump each particle's free-surface fraction ψ (`d_psi`, from
+//!   `fix granular/mdr`) to `mdr.lammps` at the frames of `dump.lammps`.
 //! - Dumps at `%.17g`, sorted by id: every `dump_every` steps to `dump.lammps`, the
 //!   final state to `final.lammps`; `tamp compare` and `import-liggghts-dump` read them.
 
@@ -1077,6 +1079,14 @@ pub fn export(
     }
     if scene.output.walls {
         walls_record(&mut deck, &wall_records, every);
+    }
+    if mdr {
+        // fix granular/mdr's free-surface fraction ψ of every particle, beside the
+        // frames of dump.lammps (whose radius column is the apparent radius).
+        let _ = writeln!(
+            deck,
+            "dump         mdr all custom {every} mdr.lammps id d_psi\ndump_modify  mdr format line \"%d %.17g\" sort id"
+        );
     }
     integrate_and_run(&mut deck, LAMMPS, every, built.steps);
     crate::output::write_atomic(&out_dir.join("in.tamp"), deck.as_bytes())?;

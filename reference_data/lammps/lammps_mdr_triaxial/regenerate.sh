@@ -3,7 +3,8 @@
 # verification/lammps_mdr_triaxial.scene.json (deck/in.tamp, deck/particles.data), run
 # by LAMMPS in deck/. Its dump becomes trajectory.csv (and quantities.csv) through
 # `tamp import-liggghts-dump`; the walls' displacements and forces are the deck's own
-# walls.csv (the scene sets output.walls); its log is log.lammps. deck/ keeps only what
+# walls.csv (the scene sets output.walls); each particle's free-surface fraction goes from
+# the deck's mdr.lammps to free_surface.csv; its log is log.lammps. deck/ keeps only what
 # tamp exported (the case checks it is the deck tamp exports now); the dumps are not kept.
 # usage: regenerate.sh [OUTDIR]   (default: this directory, i.e. re-record)
 #   $LMP the LAMMPS executable (default: .peers/bin/lmp from .ci/install-lammps);
@@ -19,4 +20,9 @@ rm -rf "$out/deck"
 (cd "$out/deck" && "$lmp" -in in.tamp -log log.lammps -screen none -nocite)
 "$tamp" import-liggghts-dump "$out/deck/dump.lammps" --out "$out"
 mv "$out/deck/walls.csv" "$out/deck/log.lammps" "$out/"
-rm -f "$out/deck/dump.lammps" "$out/deck/final.lammps"
+# fix granular/mdr's free-surface fraction of every particle at the same steps.
+awk 'BEGIN { print "step,id,free_surface" }
+     /^ITEM: TIMESTEP/ { getline; step = $1; next }
+     /^ITEM:/ { atoms = ($2 == "ATOMS"); next }
+     atoms && NF == 2 { print step "," $1 "," $2 }' "$out/deck/mdr.lammps" > "$out/free_surface.csv"
+rm -f "$out/deck/dump.lammps" "$out/deck/final.lammps" "$out/deck/mdr.lammps"

@@ -7,8 +7,9 @@
 //! (displacement, the force the particles exert on it) at the same steps; the case
 //! compares them frame by frame: the largest difference in position over the radius,
 //! in apparent radius, in velocity over the walls' speed, in wall force over the
-//! largest wall force of the run, and in wall displacement over the walls' travel,
-//! and the last frame's force on the lower z wall. The recorded deck must be the one
+//! largest wall force of the run, in wall displacement over the walls' travel and in
+//! free-surface fraction ψ (`fix granular/mdr`'s, from the deck's `mdr.lammps`), and
+//! the last frame's force on the lower z wall. The recorded deck must be the one
 //! tamp exports from the scene now (the same lines but comments), so the record
 //! cannot belong to another scene or another exporter.
 
@@ -17,6 +18,7 @@ use crate::error::{Result, TampError};
 use crate::verify::engine::peer_record::deck_sha256;
 use crate::verify::recording::RecordSpec;
 use crate::verify::{CaseContext, Measured};
+use serde::Deserialize;
 
 /// The wall whose last force is reported: the plane z = −1.5 m moving up
 /// (`walls[5]`, `plane_xy_neg`, LAMMPS's example prints its force).
@@ -116,6 +118,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
             scene.walls.len()
         )));
     }
+    let free_surface = free_surface_difference(&scene, &recorded.join("free_surface.csv"))?;
     let lower = |f: &crate::verify::recording::Frame| f.walls[LOWER_Z_WALL].force.z;
     let our_last = ours.frames.last().map(lower).unwrap_or_default();
     let their_last = their_walls
@@ -128,6 +131,52 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
         Measured::new("velocity_difference", velocity, 0.0),
         Measured::new("wall_force_difference", force, 0.0),
         Measured::new("wall_displacement_difference", displacement, 0.0),
+        Measured::new("free_surface_difference", free_surface, 0.0),
         Measured::new("lower_wall_force", our_last, their_last),
     ])
+}
+
+/// One row of LAMMPS's free-surface fractions (`free_surface.csv`).
+#[derive(Debug, Deserialize)]
+struct FreeSurface {
+    step: u64,
+    id: u64,
+    free_surface: f64,
+}
+
+/// The largest difference between LAMMPS's free-surface fraction ψ of each particle at
+/// each recorded step and tamp's (`MdrParticles::free_surface`, from a run of the
+/// scene stepped here: an engine's recording carries no MDR state).
+fn free_surface_difference(scene: &crate::scene::Scene, path: &std::path::Path) -> Result<f64> {
+    let bad = |what: String| TampError::Other(format!("{}: {what}", path.display()));
+    let mut rows: Vec<FreeSurface> = csv::Reader::from_path(path)
+        .map_err(|e| bad(e.to_string()))?
+        .deserialize()
+        .collect::<std::result::Result<_, _>>()
+        .map_err(|e| bad(e.to_string()))?;
+    rows.sort_by_key(|r| (r.step, r.id));
+    let mut sim = crate::scene::build(scene)?.sim;
+    let mut largest = 0.0_f64;
+    for row in &rows {
+        while sim.state().step < row.step {
+            sim.step()?;
+        }
+        if sim.state().step != row.step {
+            return Err(bad(format!("step {} is past the run's last", row.step)));
+        }
+        let p = &sim.state().particles;
+        let i = (0..p.len())
+            .find(|&i| p.id[i] == row.id)
+            .ok_or_else(|| bad(format!("no particle {} in the scene", row.id)))?;
+        let ours = sim
+            .state()
+            .mdr
+            .as_ref()
+            .map_or(f64::NAN, |m| m.free_surface[i]);
+        largest = largest.max((ours - row.free_surface).abs());
+    }
+    if rows.is_empty() {
+        return Err(bad("no rows".into()));
+    }
+    Ok(largest)
 }
