@@ -220,6 +220,7 @@ pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> R
         contact.friction_between(particle, &dc.wall_material),
     );
     let n = stroke.steps_per_record;
+    let mdr = file.scene.contact.normal.mdr().is_some();
     let mut notes = vec![format!(
         "the punch replays the stroke tamp pressed under the pressure ramp (h0 = {} m, {} records of {} steps of {} s)",
         g(specimen.h0),
@@ -229,9 +230,12 @@ pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> R
     )];
     let (walls, steps, files) = match &replay {
         Replay::Pressing(..) => {
-            notes.push("the die is LAMMPS's infinite zcylinder wall, its contacts with the wall radius -2 R_c (tamp's die_curvature mean); the floor a zplane; the punch a moving region plane".into());
+            notes.push(match mdr {
+                false => "the die is LAMMPS's infinite zcylinder wall, its contacts with the wall radius -2 R_c (tamp's die_curvature mean); the floor a zplane; the punch a moving region plane".into(),
+                true => "LAMMPS's mdr takes region walls only: the die is a region cylinder from the floor to the specimen's height H0, its ends open (the punch stays below H0), the floor and the punch region planes".into(),
+            });
             (
-                pressing_walls(&wall, radius, specimen.h0, stroke),
+                pressing_walls(&wall, radius, specimen.h0, stroke, mdr),
                 n * stroke.heights.len() as u64,
                 vec!["in.tamp", "particles.data", "stroke.json"],
             )
@@ -275,9 +279,14 @@ pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> R
         Replay::Pressing(..) => "f f f",
         Replay::Cycle(..) => "m m m",
     };
+    // MDR's apparent radii change every step: `sphere 1` sends them to the ghosts.
+    let atom_style = match mdr {
+        true => "sphere 1",
+        false => "sphere",
+    };
     let _ = write!(
         deck,
-        "units        si\natom_style   sphere\natom_modify  map array\nboundary     {boundary}\n\
+        "units        si\natom_style   {atom_style}\natom_modify  map array\nboundary     {boundary}\n\
          newton       off\ncomm_modify  vel yes\nread_data    particles.data\n",
     );
     let _ = writeln!(
@@ -323,11 +332,34 @@ enum Replay {
 
 /// The pressing's walls: the die an infinite zcylinder and the floor a zplane, both
 /// fixed, the punch a region plane moved by the stroke; thermo and a dump per record.
-fn pressing_walls(wall: &str, radius: f64, h0: f64, stroke: &die_replay::Stroke) -> String {
+/// Under MDR (`mdr`), whose LAMMPS walls are regions only, the die is a region cylinder
+/// from the floor to the specimen's height `h0` with open ends and the floor a region
+/// plane: the same contacts while the particles stay below the punch.
+fn pressing_walls(
+    wall: &str,
+    radius: f64,
+    h0: f64,
+    stroke: &die_replay::Stroke,
+    mdr: bool,
+) -> String {
     let n = stroke.steps_per_record;
+    let fixed = match mdr {
+        false => format!(
+            "fix          die all wall/gran granular {wall} zcylinder {} contacts\n\
+             fix          floor all wall/gran granular {wall} zplane 0e0 NULL contacts\n",
+            g(radius)
+        ),
+        true => format!(
+            "region       die cylinder z 0 0 {} 0 {} side in open 1 open 2 units box\n\
+             region       floor plane 0 0 0 0 0 1 side in units box\n\
+             fix          die all wall/gran/region granular {wall} region die contacts\n\
+             fix          floor all wall/gran/region granular {wall} region floor contacts\n",
+            g(radius),
+            g(h0)
+        ),
+    };
     format!(
-        "fix          die all wall/gran granular {wall} zcylinder {} contacts\n\
-         fix          floor all wall/gran granular {wall} zplane 0e0 NULL contacts\n\
+        "{fixed}\
          {}\
          region       punch plane 0 0 {} 0 0 -1 side in move NULL NULL v_dz units box\n\
          fix          punch all wall/gran/region granular {wall} region punch contacts\n\
@@ -342,7 +374,6 @@ fn pressing_walls(wall: &str, radius: f64, h0: f64, stroke: &die_replay::Stroke)
          thermo_style custom step time v_punch_fz v_floor_fz v_dz\n\
          thermo_modify norm no lost ignore format float %.17g\n\
          thermo       {n}\n",
-        g(radius),
         punch_displacement(stroke),
         g(h0),
         dump_format()

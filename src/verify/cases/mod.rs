@@ -120,6 +120,10 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ),
     ("liggghts_die_compaction", die_compaction_replay::liggghts),
     ("lammps_die_compaction_small", die_compaction_replay::lammps),
+    (
+        "lammps_die_compaction_small_mdr",
+        die_compaction_replay::lammps,
+    ),
     ("lammps_die_press_cycle", lammps_die_press_cycle::run),
     ("lammps_mdr_contacts", lammps_mdr_contacts::run),
     ("lammps_mdr_triaxial", lammps_mdr_triaxial::run),
