@@ -4,11 +4,11 @@
 
 use super::Simulation;
 use super::contact_pass::{ContactPass, Spins};
+use super::mdr_pass::MdrStep;
 use super::narrow_phase::NarrowPhase;
 use crate::boundary::{Boundary, WallPose, shape::ShapeContact};
 use crate::contact::lever_arm::Arms;
 use crate::contact::mdr::contact::MdrForce;
-use crate::contact::mdr::{PairSides, WallSide};
 use crate::contact::model::{Composed, NormalModel, StateOf, TangentialModel};
 use crate::contact::states::ContactStates;
 use crate::contact::{ContactForce, ContactGeometry};
@@ -231,7 +231,6 @@ impl Simulation {
         if let Some(m) = mdr {
             self.mdr_begin_step::<N, T>(m);
         }
-        let moduli = mdr.map(|m| m.moduli());
         let update = self.work.stepping;
         let kept = ContactStates::<StateOf<N, T>>::KEPT;
         let gravity = self.active_gravity();
@@ -250,7 +249,7 @@ impl Simulation {
         let mut worst = self.state.max_overlap_ratio;
         let torques = spins.on && T::ACTIVE;
         let law_reach = law.reach();
-        let mut mdr_particles = self.state.mdr.as_mut();
+        let mut mdr_step = MdrStep::of(mdr, self.state.mdr.as_mut(), update);
         let states = self.state.contacts.typed_mut::<StateOf<N, T>>();
         let mut fresh = StateOf::<N, T>::default();
 
@@ -326,23 +325,9 @@ impl Simulation {
             } else {
                 &mut fresh
             };
-            let given = match (mdr, &moduli, mdr_particles.as_deref_mut()) {
-                (Some(m), Some(moduli), Some(particles)) => N::mdr_contact(&mut state.normal)
-                    .map(|c| {
-                        let sides = PairSides::of(i, j, id[i], id[j]);
-                        c.pair(
-                            m,
-                            moduli,
-                            overlap,
-                            sides,
-                            particles,
-                            g.normal,
-                            g.effective_mass,
-                            update,
-                        )
-                    }),
-                _ => None,
-            };
+            let given = mdr_step
+                .as_mut()
+                .and_then(|m| m.pair::<N>(&mut state.normal, overlap, (i, j), id, &g));
             let (total, f) = resolve(law, &g, ratio, max_fraction, pair, state, dt, given)
                 .map_err(|what| format!("{}: {what}", name()))?;
             force[i] += total;
@@ -383,23 +368,9 @@ impl Simulation {
                         } else {
                             &mut fresh
                         };
-                        let given = match (mdr, &moduli, mdr_particles.as_deref_mut()) {
-                            (Some(m), Some(moduli), Some(particles)) => {
-                                N::mdr_contact(&mut state.normal).map(|c| {
-                                    c.wall(
-                                        m,
-                                        moduli,
-                                        contact.overlap,
-                                        WallSide(i),
-                                        particles,
-                                        normal,
-                                        g.effective_mass,
-                                        update,
-                                    )
-                                })
-                            }
-                            _ => None,
-                        };
+                        let given = mdr_step
+                            .as_mut()
+                            .and_then(|m| m.wall::<N>(&mut state.normal, contact.overlap, i, &g));
                         let (total, f) =
                             resolve(law, &g, ratio, max_fraction, pair, state, dt, given).map_err(
                                 |what| {

@@ -13,7 +13,10 @@
 use super::Simulation;
 use super::force_loop::carried_state;
 use super::narrow_phase::NarrowPhase;
-use crate::contact::mdr::{Mdr, PairSides, bulk, penalty};
+use crate::contact::ContactGeometry;
+use crate::contact::mdr::contact::MdrForce;
+use crate::contact::mdr::parameters::Moduli;
+use crate::contact::mdr::{Mdr, MdrParticles, PairSides, WallSide, bulk, penalty};
 use crate::contact::model::{NormalModel, StateOf, TangentialModel};
 use crate::particles::InertiaRadius;
 
@@ -101,5 +104,78 @@ impl Simulation {
             Ok::<(), ()>(())
         });
         self.work.found = found;
+    }
+}
+
+/// MDR's contacts in a pass over the contacts (the force loop, the records): the law,
+/// its moduli and the particles' state, and whether the evaluations advance the
+/// histories and the particles' sums.
+pub(super) struct MdrStep<'a> {
+    pub law: &'a Mdr,
+    pub moduli: Moduli,
+    pub particles: &'a mut MdrParticles,
+    pub update: bool,
+}
+
+impl<'a> MdrStep<'a> {
+    /// The step's MDR part, for a scene whose law is `law` and whose state holds
+    /// `particles`; `None` for every other law.
+    pub fn of(
+        law: Option<&'a Mdr>,
+        particles: Option<&'a mut MdrParticles>,
+        update: bool,
+    ) -> Option<Self> {
+        law.zip(particles).map(|(law, particles)| MdrStep {
+            law,
+            moduli: law.moduli(),
+            particles,
+            update,
+        })
+    }
+
+    /// The normal force of the pair (i, j), ids `id`, at `overlap` with the contact's
+    /// geometry `g`, `normal` its normal state; `None` if that is another law's.
+    pub fn pair<N: NormalModel>(
+        &mut self,
+        normal: &mut N::State,
+        overlap: f64,
+        (i, j): (usize, usize),
+        id: &[u64],
+        g: &ContactGeometry,
+    ) -> Option<MdrForce> {
+        N::mdr_contact(normal).map(|c| {
+            c.pair(
+                self.law,
+                &self.moduli,
+                overlap,
+                PairSides::of(i, j, id[i], id[j]),
+                self.particles,
+                g.normal,
+                g.effective_mass,
+                self.update,
+            )
+        })
+    }
+
+    /// The normal force of particle `i`'s wall contact at `overlap`, as `pair`.
+    pub fn wall<N: NormalModel>(
+        &mut self,
+        normal: &mut N::State,
+        overlap: f64,
+        i: usize,
+        g: &ContactGeometry,
+    ) -> Option<MdrForce> {
+        N::mdr_contact(normal).map(|c| {
+            c.wall(
+                self.law,
+                &self.moduli,
+                overlap,
+                WallSide(i),
+                self.particles,
+                g.normal,
+                g.effective_mass,
+                self.update,
+            )
+        })
     }
 }

@@ -6,8 +6,7 @@
 use super::Simulation;
 use super::contact_pass::Spins;
 use super::force_loop::{Bodies, carried_state, pair_geometry, resolve, wall_geometry};
-use crate::contact::mdr::parameters::Moduli;
-use crate::contact::mdr::{Mdr, MdrParticles, PairSides, WallSide};
+use super::mdr_pass::MdrStep;
 use crate::contact::model::{Composed, LawVisitor, NormalModel, StateOf, TangentialModel};
 use crate::contact::record::{ContactRecord, Partner};
 use crate::contact::states::ContactStates;
@@ -45,8 +44,9 @@ impl Simulation {
             Some(m) => {
                 let mut copy = self.clone();
                 copy.mdr_begin_step::<N, T>(m);
-                let particles = copy.state.mdr.take();
-                copy.records_of(law, particles.map(|p| (m, m.moduli(), p)))
+                let mut particles = copy.state.mdr.take();
+                let step = MdrStep::of(Some(m), particles.as_mut(), copy.work.stepping);
+                copy.records_of(law, step)
             }
             None => self.records_of(law, None),
         }
@@ -54,16 +54,11 @@ impl Simulation {
 
     /// The records of `contact_records_with`, each MDR contact evaluated with the
     /// particles' MDR state `mdr` (which the evaluations advance, as the force loop's do).
-    fn records_of<N, T>(
-        &self,
-        law: &Composed<N, T>,
-        mut mdr: Option<(&Mdr, Moduli, MdrParticles)>,
-    ) -> Vec<ContactRecord>
+    fn records_of<N, T>(&self, law: &Composed<N, T>, mut mdr: Option<MdrStep>) -> Vec<ContactRecord>
     where
         N: NormalModel,
         T: TangentialModel,
     {
-        let update = self.work.stepping;
         let kept = ContactStates::<StateOf<N, T>>::KEPT;
         let spins = Spins::of(&self.model.law, self.model.rotation);
         let states = self.states_as::<StateOf<N, T>>();
@@ -90,21 +85,9 @@ impl Simulation {
             } else {
                 Default::default()
             };
-            let given = mdr.as_mut().and_then(|(m, moduli, particles)| {
-                N::mdr_contact(&mut state.normal).map(|c| {
-                    let sides = PairSides::of(i, j, p.id[i], p.id[j]);
-                    c.pair(
-                        m,
-                        moduli,
-                        overlap,
-                        sides,
-                        particles,
-                        g.normal,
-                        g.effective_mass,
-                        update,
-                    )
-                })
-            });
+            let given = mdr
+                .as_mut()
+                .and_then(|m| m.pair::<N>(&mut state.normal, overlap, (i, j), &p.id, &g));
             if let Ok((_, f)) = resolve(law, &g, ratio, max_fraction, pair, &mut state, dt, given) {
                 out.push(ContactRecord {
                     i,
@@ -136,20 +119,9 @@ impl Simulation {
                     } else {
                         Default::default()
                     };
-                    let given = mdr.as_mut().and_then(|(m, moduli, particles)| {
-                        N::mdr_contact(&mut state.normal).map(|c| {
-                            c.wall(
-                                m,
-                                moduli,
-                                contact.overlap,
-                                WallSide(i),
-                                particles,
-                                g.normal,
-                                g.effective_mass,
-                                update,
-                            )
-                        })
-                    });
+                    let given = mdr
+                        .as_mut()
+                        .and_then(|m| m.wall::<N>(&mut state.normal, contact.overlap, i, &g));
                     if let Ok((_, f)) =
                         resolve(law, &g, ratio, max_fraction, pair, &mut state, dt, given)
                     {

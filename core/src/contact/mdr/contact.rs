@@ -81,21 +81,12 @@ impl MdrContact {
         if delta >= self.max_overlap {
             self.max_overlap = delta;
         }
-        let flat = Flat {
-            max_overlap: self.max_overlap,
-            plastic: [self.sides[0].plastic_overlap, self.sides[1].plastic_overlap],
-        };
+        let overlaps = self.side_overlaps(self.max_overlap, delta, sides, particles);
         let weight = penalty::weight(self.penalty);
         let mut forces = [0.0; 2];
         let mut damping_radius = 0.0;
         for (s, force) in forces.iter_mut().enumerate() {
-            let (i, j) = (sides.0[s], sides.0[1 - s]);
-            let side_delta = flat.force_side(
-                delta,
-                particles.radius[i],
-                particles.radius[j],
-                flat.plastic[s],
-            );
+            let (i, side_delta) = overlaps[s];
             let out = side::evaluate(
                 law,
                 moduli,
@@ -176,23 +167,34 @@ impl MdrContact {
         sides: PairSides,
         particles: &MdrParticles,
     ) -> f64 {
-        let flat = Flat {
-            max_overlap: self.max_overlap.max(delta),
-            plastic: [self.sides[0].plastic_overlap, self.sides[1].plastic_overlap],
-        };
+        let overlaps = self.side_overlaps(self.max_overlap.max(delta), delta, sides, particles);
         let w = penalty::weight(self.penalty);
         w * (0..2)
             .map(|s| {
-                let (i, j) = (sides.0[s], sides.0[1 - s]);
-                let side_delta = flat.force_side(
-                    delta,
-                    particles.radius[i],
-                    particles.radius[j],
-                    flat.plastic[s],
-                );
+                let (i, side_delta) = overlaps[s];
                 side::stored_energy(law, moduli, &self.sides[s], side_delta, i, particles)
             })
             .sum::<f64>()
+    }
+
+    /// Each side's particle and its share of the pair overlap `delta`, the flat placed
+    /// by the largest pair overlap `max_overlap` and the sides' plastic sets.
+    fn side_overlaps(
+        &self,
+        max_overlap: f64,
+        delta: f64,
+        sides: PairSides,
+        particles: &MdrParticles,
+    ) -> [(usize, f64); 2] {
+        let flat = Flat {
+            max_overlap,
+            plastic: [self.sides[0].plastic_overlap, self.sides[1].plastic_overlap],
+        };
+        [0, 1].map(|s| {
+            let (i, j) = (sides.0[s], sides.0[1 - s]);
+            let r = &particles.radius;
+            (i, flat.force_side(delta, r[i], r[j], flat.plastic[s]))
+        })
     }
 
     /// The elastic energy the wall contact holds: its side's, times the weight and the

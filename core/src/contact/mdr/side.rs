@@ -73,6 +73,25 @@ pub fn hertz_mean_pressure(e_star: f64, overlap: f64, radius: f64) -> f64 {
     4.0 * e_star * overlap.sqrt() / (3.0 * PI * radius.sqrt())
 }
 
+/// How the side's overlap increment `ddelta` to `delta` divides between the MDR and the
+/// bulk responses: all to MDR while particle `i`'s free-surface fraction is at least
+/// ψ_b, else the particle's mean surface displacement to the bulk and the rest to MDR.
+fn split(
+    law: &Mdr,
+    h: &SideHistory,
+    delta: f64,
+    ddelta: f64,
+    i: usize,
+    particles: &MdrParticles,
+) -> (f64, f64) {
+    if particles.free_surface[i] < law.bulk_trigger {
+        let bar = particles.mean_displacement_increment[i];
+        ((ddelta - bar).min(delta - h.mdr_overlap), bar)
+    } else {
+        (ddelta, 0.0)
+    }
+}
+
 /// Evaluate one side at overlap `delta` for particle `i` of `particles`: the side's
 /// force, with its history and (when `update`) the particle's sums advanced.
 /// `weight` is the contact's w = max(1 − p, 0); `normal` the contact normal.
@@ -105,13 +124,7 @@ pub fn evaluate(
         h.displacement = deltao;
     }
 
-    // The split between the MDR and bulk responses.
-    let (ddelta_mdr, ddelta_bulk) = if particles.free_surface[i] < law.bulk_trigger {
-        let bar = particles.mean_displacement_increment[i];
-        ((ddelta - bar).min(delta - h.mdr_overlap), bar)
-    } else {
-        (ddelta, 0.0)
-    };
+    let (ddelta_mdr, ddelta_bulk) = split(law, h, delta, ddelta, i, particles);
     let delta_mdr = h.mdr_overlap + ddelta_mdr;
     if update {
         h.mdr_overlap = delta_mdr;
@@ -293,13 +306,7 @@ pub fn stored_energy(
 ) -> f64 {
     let e_star = moduli.plane_strain;
     let r = particles.radius[i];
-    let ddelta = delta - h.overlap;
-    let (ddelta_mdr, ddelta_bulk) = if particles.free_surface[i] < law.bulk_trigger {
-        let bar = particles.mean_displacement_increment[i];
-        ((ddelta - bar).min(delta - h.mdr_overlap), bar)
-    } else {
-        (ddelta, 0.0)
-    };
+    let (ddelta_mdr, ddelta_bulk) = split(law, h, delta, delta - h.overlap, i, particles);
     let delta_mdr = h.mdr_overlap + ddelta_mdr;
     let delta_bulk = (h.bulk_overlap + ddelta_bulk).max(0.0);
     let deltamax_mdr = h.max_mdr_overlap.max(delta_mdr);
