@@ -28,6 +28,7 @@
 //!   which `tamp import-liggghts-dump --die-stroke stroke.json` measures densities.
 
 use super::export::{pair_model, refusals};
+use crate::contact::normal::NormalLaw;
 use crate::error::Result;
 use crate::liggghts::die_compaction::DieStroke;
 use crate::peer_deck::{DUMP_COLUMNS, Exported, dump_format, neighbor_skin};
@@ -196,7 +197,17 @@ pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> R
         "Atoms # sphere",
     );
     crate::output::write_atomic(&out_dir.join("particles.data"), data.as_bytes())?;
-    DieStroke::write(out_dir, stroke, dc)?;
+    let material_radius = matches!(file.scene.contact.normal, NormalLaw::Mdr(_)).then(|| {
+        let state = sim.state();
+        state
+            .particles
+            .id
+            .iter()
+            .copied()
+            .zip(state.material_radius().iter().copied())
+            .collect()
+    });
+    DieStroke::write(out_dir, stroke, dc, material_radius)?;
 
     let particle = &dc.particles.material;
     let material = |name: &str| {

@@ -40,6 +40,7 @@ use crate::process::die_replay::{self, Stroke};
 use crate::scene;
 use crate::scene::walls::Curvature;
 use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -49,16 +50,27 @@ pub struct DieStroke {
     pub stroke: Stroke,
     pub die_diameter: f64,
     pub rve_diameter: f64,
+    /// Under MDR, each particle's material radius by atom id: the dumped radius is
+    /// the apparent one, which outgrows it, and the densities are mass fractions
+    /// (`State::material_radius`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub material_radius: Option<BTreeMap<u64, f64>>,
 }
 
 impl DieStroke {
     /// Writes `DIR/stroke.json`, the punch stroke a replay deck follows and the
     /// diameters the importer measures the specimen and RVE with.
-    pub fn write(out_dir: &Path, stroke: &Stroke, dc: &DieCompactionSpec) -> Result<()> {
+    pub fn write(
+        out_dir: &Path,
+        stroke: &Stroke,
+        dc: &DieCompactionSpec,
+        material_radius: Option<BTreeMap<u64, f64>>,
+    ) -> Result<()> {
         let file = DieStroke {
             stroke: stroke.clone(),
             die_diameter: dc.die_diameter,
             rve_diameter: dc.rve_diameter,
+            material_radius,
         };
         let json = serde_json::to_vec_pretty(&file).expect("stroke serialises");
         crate::output::write_atomic(&out_dir.join("stroke.json"), &json)
@@ -121,7 +133,7 @@ pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> R
         crate::output::write_atomic(&out_dir.join(&file), stl(name, &triangles).as_bytes())?;
         files.push(file);
     }
-    DieStroke::write(out_dir, &stroke, dc)?;
+    DieStroke::write(out_dir, &stroke, dc, None)?;
     files.push("stroke.json".into());
 
     let mut deck = deck_head(&replay, sha, &sim, &["f", "f", "f"], &model);

@@ -206,9 +206,27 @@ fn die_densities(frames: &[dump::Frame], path: &Path) -> Result<String> {
             ));
         }
         let height = if k == 0 { s.h0 } else { s.heights[k - 1] };
+        let material: Vec<f64>;
+        let radii = match &die.material_radius {
+            None => &f.radius,
+            Some(by_id) => {
+                material =
+                    f.id.iter()
+                        .map(|id| {
+                            by_id.get(id).copied().ok_or_else(|| {
+                                crate::error::TampError::input(
+                                    "--die-stroke",
+                                    format!("material_radius has no atom {id}"),
+                                )
+                            })
+                        })
+                        .collect::<Result<_>>()?;
+                &material
+            }
+        };
         let (specimen, rve) = crate::process::die_compaction::densities_in(
             &f.position,
-            &f.radius,
+            radii,
             die.die_diameter,
             die.rve_diameter,
             height,

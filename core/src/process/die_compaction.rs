@@ -38,7 +38,7 @@ use super::press_cycle::DieWall;
 use crate::error::{Result, TampError};
 use crate::generate::rsi::{InsertionBox, Placed};
 use crate::measure::{Region, packing::packing_fraction};
-use crate::particles::{Particles, Vec3};
+use crate::particles::Vec3;
 use crate::progress::Progress;
 use crate::scene::schema::{ContactSpec, ParticleSpec, RunSpec, Scene};
 use crate::scene::walls::{MotionSpec, ShapeSpec, WallSpec};
@@ -99,8 +99,8 @@ pub struct PressRecord {
     /// Solid fraction of the RVE sphere centred on the axis at H/2.
     pub density_rve: f64,
     /// Volume of the caps of particles pressed through the floor, punch face and die
-    /// wall, m³ (planar caps): what the specimen's exact solid volume leaves out of
-    /// the particles' volume.
+    /// wall, m³ (planar caps, of the material's spheres as the densities): what the
+    /// specimen's exact solid volume leaves out of the particles' volume.
     pub wall_lens_volume: f64,
     /// Number of particle–particle and particle–wall contacts.
     pub contact_count: usize,
@@ -255,10 +255,17 @@ pub(super) fn top_of_bed(sim: &Simulation) -> f64 {
 }
 
 /// Solid fraction of the die cylinder up to `height` and of the RVE centred at
-/// half that height (Rojek §5, Fig 15).
-pub fn densities(particles: &Particles, dc: &DieCompactionSpec, height: f64) -> Result<(f64, f64)> {
-    let (positions, radii) = (&particles.position, &particles.radius);
-    densities_in(positions, radii, dc.die_diameter, dc.rve_diameter, height)
+/// half that height (Rojek §5, Fig 15), of the particles' material
+/// (`State::material_radius`).
+pub fn densities(state: &State, dc: &DieCompactionSpec, height: f64) -> Result<(f64, f64)> {
+    let positions = &state.particles.position;
+    densities_in(
+        positions,
+        state.material_radius(),
+        dc.die_diameter,
+        dc.rve_diameter,
+        height,
+    )
 }
 
 /// `densities` for a die and RVE given by their diameters.
@@ -567,7 +574,7 @@ pub fn prepare(file: &DieCompactionFile, quiet: bool) -> Result<Specimen> {
     }
     progress.finish();
     let h0 = top_of_bed(&sim);
-    let (density_specimen, density_rve) = densities(&sim.state.particles, dc, h0)?;
+    let (density_specimen, density_rve) = densities(&sim.state, dc, h0)?;
     Ok(Specimen {
         h0,
         density_specimen,
@@ -660,7 +667,7 @@ pub fn press(
     let records = dc.press.records;
     let record = |sim: &Simulation, out: &mut Pressing| -> Result<()> {
         let height = specimen.h0 + sim.state.walls[punch].displacement.z;
-        let (density_specimen, density_rve) = densities(&sim.state.particles, dc, height)?;
+        let (density_specimen, density_rve) = densities(&sim.state, dc, height)?;
         let crate::boundary::BoundaryMotion::Pressed(load) = &sim.model.walls[punch].motion else {
             unreachable!("the punch is pressure-loaded")
         };
@@ -676,7 +683,7 @@ pub fn press(
             density_rve,
             wall_lens_volume: wall_lens_volume(
                 &sim.state.particles.position,
-                &sim.state.particles.radius,
+                sim.state.material_radius(),
                 die_radius,
                 height,
             ),

@@ -457,7 +457,7 @@ impl Die<'_> {
         let above_floor: Vec<Vec3> = p.position.iter().map(|x| x - Vec3::z() * floor).collect();
         let (density, _) = densities_in(
             &above_floor,
-            &p.radius,
+            sim.state().material_radius(),
             2.0 * self.radius,
             self.file.die_compaction.rve_diameter,
             height,

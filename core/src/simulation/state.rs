@@ -67,6 +67,18 @@ pub struct State {
 }
 
 impl State {
+    /// The radius of each particle's material, 4/3 π r³ = m / ρ: the particle's radius,
+    /// except under MDR, whose apparent radius grows as plastic flow moves material out
+    /// of the contact flats (the particle's volume is conserved, Zunker & Kamrin 2024
+    /// Part I), so its material keeps the initial radius. Relative densities are taken
+    /// with it, as mass fractions.
+    pub fn material_radius(&self) -> &[f64] {
+        match &self.mdr {
+            Some(mdr) => &mdr.initial_radius[..self.particles.len()],
+            None => &self.particles.radius,
+        }
+    }
+
     /// Particles the sources have still to pour.
     pub fn still_to_pour(&self) -> usize {
         self.sources.iter().map(|s| s.remaining).sum()

@@ -42,6 +42,21 @@ pub fn load(reference_data: &Path) -> Result<Vec<MdrRecord>> {
     Ok(records)
 }
 
+/// The specimen density where the punch pressure first reaches `p` (Pa), linear
+/// between the two thermo lines that bracket it.
+pub fn density_at(records: &[MdrRecord], p: f64) -> Result<f64> {
+    records
+        .windows(2)
+        .find_map(|w| {
+            let (a, b) = (&w[0], &w[1]);
+            (a.punch_pressure < p && p <= b.punch_pressure).then(|| {
+                let s = (p - a.punch_pressure) / (b.punch_pressure - a.punch_pressure);
+                a.density_specimen + s * (b.density_specimen - a.density_specimen)
+            })
+        })
+        .ok_or_else(|| TampError::Other(format!("the recorded mdr run never reaches {p:e} Pa")))
+}
+
 /// The name the plots give the run.
 const NAME: &str = "LAMMPS mdr (σy = 800 MPa), specimen, against its punch pressure";
 

@@ -21,6 +21,7 @@
 //! `tamp verify` that is killed goes on from there when run again; a change of code
 //! or scene starts the work afresh.
 
+use crate::contact::mdr::{Mdr, MdrDamping, damping::MdrDampingForm};
 use crate::contact::normal::{NormalLaw, Storakers};
 use crate::contact::tangential::{TangentialLaw, storakers};
 use crate::error::{Result, TampError};
@@ -41,28 +42,59 @@ const POURED_DENSITY: f64 = 0.650;
 /// against a pressure near zero.
 const BALANCE_FROM: f64 = 0.1;
 
+/// The normal law of one pressing.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Law {
+    /// The scene's Hertz–Mindlin–Deresiewicz.
+    Hertz,
+    /// Storåkers with Hollomon m and σ₀ (Pa).
+    Storakers(f64, f64),
+    /// MDR (`MDR`): Zunker & Kamrin's law for compaction to high density.
+    Mdr,
+}
+
 /// A contact law of one pressing.
 #[derive(Clone, Copy, Debug)]
 struct Model {
     label: &'static str,
-    /// Storåkers (Hollomon m, σ₀ in Pa), or Hertz when absent.
-    storakers: Option<(f64, f64)>,
+    law: Law,
     /// Friction between particles (the die wall keeps the scene's 0.02).
     friction: f64,
+    /// The pressure the ramp reaches in the scene's ramp time, Pa (the scene's 50 MPa
+    /// when absent).
+    pressure: Option<f64>,
 }
 
 impl Model {
     /// Whether the pressing goes on through the press cycle (`CYCLE_UNLOAD`,
-    /// `CYCLE_EJECT`): the frictionless ones do.
+    /// `CYCLE_EJECT`): the frictionless pairwise ones to 50 MPa do.
     fn cycle(&self) -> bool {
-        self.friction == 0.0
+        self.friction == 0.0 && self.law != Law::Mdr && self.pressure.is_none()
     }
 }
 
 const HERTZ: Model = Model {
     label: "hertz",
-    storakers: None,
+    law: Law::Hertz,
     friction: 0.0,
+    pressure: None,
+};
+
+/// MDR with NiAl's E and ν, the yield stress of the Storåkers m = 0 pair (800 MPa, a
+/// perfectly plastic solid, which is what MDR models), no adhesion, the bulk response
+/// below a free-surface fraction of 0.5 (Zunker & Kamrin's value, LAMMPS's example),
+/// and the dashpot `damping mdr 1` with η = 1.8 = 2ξ for the Hertz pressing's ξ = 0.9:
+/// the law of reference_data/lammps/nial_die_compaction_mdr.
+const MDR: Mdr = Mdr {
+    youngs_modulus: 1.83e11,
+    poisson_ratio: 0.318,
+    yield_stress: 800e6,
+    surface_energy: 0.0,
+    bulk_trigger: 0.5,
+    damping: MdrDamping {
+        coefficient: 1.8,
+        form: MdrDampingForm::Stiffness,
+    },
 };
 
 /// The frictionless pressings go on through the press cycle as
@@ -92,20 +124,40 @@ const FRICTIONS: [(f64, &str, &str); 3] = [
     (0.05, "hertz_mu0.05", "storakers_m0.2_mu0.05"),
 ];
 
-/// The pressings of Figs 17–20, longest first (Storåkers, then Hertz with friction,
+/// MDR pressed on to high density: the ramp reaches 600 MPa in the scene's 1e-4 s,
+/// which passes relative density 0.85 (the 300-particle specimen reaches it near
+/// 380 MPa). Its mean punch speed, 0.25 m/s, is LAMMPS's mdr run's.
+const DENSE_PRESSURE: f64 = 600e6;
+const MDR_DENSE: &str = "mdr_600MPa";
+/// The density the dense pressing is read at.
+const DENSE_DENSITY: f64 = 0.85;
+/// Frictionless Hertz pressed on as far. Storåkers is not: pressed so (m = 0, MDR's
+/// yield stress) the 300-particle specimen stops near 440 MPa, a contact overlapping
+/// half its smaller particle's radius, past any pairwise law's reach.
+const HERTZ_DENSE: &str = "hertz_600MPa";
+const DENSE_MODELS: [&str; 2] = [MDR_DENSE, HERTZ_DENSE];
+/// MDR's overlap limit: a small particle pressed between two large ones flattens into
+/// a disc, its overlap with each approaching its radius, which the law follows (the
+/// displaced volume, the bulk response); the run stops only once one is pushed
+/// nearly through the other.
+const MDR_MAX_OVERLAP: f64 = 0.95;
+
+/// The pressings of Figs 17–20 and MDR's, longest first (Storåkers, then Hertz with friction,
 /// then frictionless Hertz; their times are in reference_data/nial/README.md), so that
 /// the threads that share them finish close together; a run cut short keeps each
 /// pressing's checkpoint.
 fn full_models() -> Vec<Model> {
     let storakers = |k: usize, friction: f64, label: &'static str| Model {
         label,
-        storakers: Some((STORAKERS[k].0, STORAKERS[k].1)),
+        law: Law::Storakers(STORAKERS[k].0, STORAKERS[k].1),
         friction,
+        pressure: None,
     };
     let hertz = |friction: f64, label: &'static str| Model {
         label,
-        storakers: None,
+        law: Law::Hertz,
         friction,
+        pressure: None,
     };
     let (mu, h, s) = (
         FRICTIONS.map(|f| f.0),
@@ -113,6 +165,24 @@ fn full_models() -> Vec<Model> {
         FRICTIONS.map(|f| f.2),
     );
     vec![
+        Model {
+            label: MDR_DENSE,
+            law: Law::Mdr,
+            friction: 0.0,
+            pressure: Some(DENSE_PRESSURE),
+        },
+        Model {
+            label: "mdr",
+            law: Law::Mdr,
+            friction: 0.0,
+            pressure: None,
+        },
+        Model {
+            label: HERTZ_DENSE,
+            law: Law::Hertz,
+            friction: 0.0,
+            pressure: Some(DENSE_PRESSURE),
+        },
         storakers(2, 0.0, STORAKERS[2].2),
         storakers(1, 0.0, STORAKERS[1].2),
         storakers(2, mu[1], s[1]),
@@ -128,14 +198,24 @@ fn full_models() -> Vec<Model> {
 
 /// The case scene with a model's normal law, Hollomon constants and friction. The
 /// Storåkers runs take Rojek's tangential law (eq 21, k_t = β k_n) with β = 1, the
-/// middle of the 0.5–5 Olsson & Larsson suggest, since §5 does not state it.
+/// middle of the 0.5–5 Olsson & Larsson suggest, since §5 does not state it. MDR
+/// keeps the Mindlin–Deresiewicz friction (only the walls have any) and brings its
+/// own dashpot.
 fn with_model(scene: &DieCompactionFile, model: &Model) -> Result<DieCompactionFile> {
     let mut s = scene.clone();
     let tangential = s.scene.contact.tangential.as_mut().ok_or_else(|| {
         TampError::Other("the NiAl scene must have a tangential law (wall friction)".into())
     })?;
     tangential.friction = model.friction;
-    if let Some((m, sigma0)) = model.storakers {
+    if let Some(p) = model.pressure {
+        s.die_compaction.press.pressure = p;
+    }
+    if model.law == Law::Mdr {
+        s.scene.contact.normal = NormalLaw::Mdr(MDR);
+        s.scene.contact.damping = None;
+        s.scene.stability.max_overlap_fraction = MDR_MAX_OVERLAP;
+    }
+    if let Law::Storakers(m, sigma0) = model.law {
         s.scene.contact.normal = NormalLaw::Storakers(Storakers {
             min_with_hertz: false,
         });
@@ -358,7 +438,13 @@ pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {
 
     // Plots: density against pressure (all frictionless models), ΔH/H₀, friction sweeps.
     let name = &ctx.spec.name;
-    let frictionless = ["hertz", "storakers_m0", "storakers_m0.1", "storakers_m0.2"];
+    let frictionless = [
+        "hertz",
+        "storakers_m0",
+        "storakers_m0.1",
+        "storakers_m0.2",
+        "mdr",
+    ];
     let mut density = Vec::new();
     let mut height = Vec::new();
     for label in frictionless {
@@ -398,6 +484,33 @@ pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {
             log_x: false,
             log_y: false,
             series: &height,
+        }],
+    )?;
+    let dense: Vec<Series> = DENSE_MODELS
+        .iter()
+        .map(|label| {
+            Series::line(
+                &format!("{label}, specimen"),
+                mpa(&find(label).records, |r| r.density_specimen),
+            )
+        })
+        .chain([
+            super::mdr_curve::density(&mdr),
+            Series::line(
+                &format!("relative density {DENSE_DENSITY}"),
+                vec![(0.0, DENSE_DENSITY), (DENSE_PRESSURE / 1e6, DENSE_DENSITY)],
+            ),
+        ])
+        .collect();
+    write_svg(
+        &ctx.report_dir.join(format!("{name}_dense.svg")),
+        &[Panel {
+            title: "NiAl die compaction pressed on: MDR against the pairwise laws, μ = 0",
+            x_label: "pressure (MPa)",
+            y_label: "relative density (specimen)",
+            log_x: false,
+            log_y: false,
+            series: &dense,
         }],
     )?;
     for (base, title) in [
@@ -475,6 +588,48 @@ pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {
             0.0,
         ),
     ];
+    // MDR: at 50 MPa against LAMMPS's mdr on the same specimen; pressed on, the
+    // solid balance and the pairwise laws' parting.
+    let mdr_dense = find(MDR_DENSE);
+    let dense_last = mdr_dense.records.last().expect("records");
+    let p85 = mdr_dense
+        .records
+        .windows(2)
+        .find_map(|w| {
+            let (a, b) = (&w[0], &w[1]);
+            (a.density_specimen < DENSE_DENSITY && DENSE_DENSITY <= b.density_specimen).then(|| {
+                let s = (DENSE_DENSITY - a.density_specimen)
+                    / (b.density_specimen - a.density_specimen);
+                a.pressure + s * (b.pressure - a.pressure)
+            })
+        })
+        .ok_or_else(|| {
+            TampError::Other(format!(
+                "{MDR_DENSE} does not reach relative density {DENSE_DENSITY}"
+            ))
+        })?;
+    eprintln!(
+        "nial_die_compaction: {MDR_DENSE} reaches relative density {DENSE_DENSITY} at {:.1} MPa",
+        p85 / 1e6
+    );
+    let at_dense = |label: &str| at(find(label), DENSE_PRESSURE, |r| r.density_specimen);
+    measured.extend([
+        Measured::new(
+            "density_specimen_at_50MPa_mdr",
+            at(find("mdr"), p_max, |r| r.density_specimen)?,
+            super::mdr_curve::density_at(&mdr, p_max)?,
+        ),
+        Measured::new(
+            "density_specimen_at_600MPa_mdr",
+            at_dense(MDR_DENSE)?,
+            (solid - dense_last.wall_lens_volume) / (die_area * dense_last.height),
+        ),
+        Measured::new(
+            "density_specimen_at_600MPa_hertz_minus_mdr",
+            at_dense(HERTZ_DENSE)? - at_dense(MDR_DENSE)?,
+            0.0,
+        ),
+    ]);
     for (label, c) in &cycles {
         let missing = || TampError::Other(format!("the {label} cycle did not unload"));
         measured.push(Measured::new(
