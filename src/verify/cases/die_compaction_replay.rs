@@ -76,6 +76,18 @@ struct Row {
     density_rve: f64,
 }
 
+/// The radius of each body's material (docs/measures.md): the radius it starts the
+/// replay with, which MDR's apparent radius outgrows as the bed is pressed and a
+/// pairwise law keeps.
+pub(super) fn material_radii(rec: &Recording) -> Result<Vec<f64>> {
+    match rec.frames.first() {
+        Some(f) if f.step == 0 => Ok(f.bodies.iter().map(|b| b.radius).collect()),
+        _ => Err(TampError::Other(
+            "the recording has no frame at step 0 to take the material's radii from".into(),
+        )),
+    }
+}
+
 /// The punch pressures the densities are compared at, Pa.
 const PRESSURES: [f64; 3] = [10e6, 25e6, 50e6];
 
@@ -354,12 +366,12 @@ fn replay(ctx: &CaseContext, store: &Store, run: &RecordedRun) -> Result<Vec<Rep
     };
     let measure = |rec: &Recording, (h0, walls): &(f64, Walls)| {
         let area = PI * (0.5 * dc.die_diameter).powi(2);
+        let radii = material_radii(rec)?;
         rec.frames
             .iter()
             .map(|f| {
                 let height = h0 + f.walls[walls.punch].displacement.z;
                 let positions: Vec<Vec3> = f.bodies.iter().map(|b| b.position).collect();
-                let radii: Vec<f64> = f.bodies.iter().map(|b| b.radius).collect();
                 let (density_specimen, density_rve) =
                     densities_in(&positions, &radii, dc.die_diameter, dc.rve_diameter, height)?;
                 Ok(ReplayRecord {

@@ -73,6 +73,7 @@ fn pressing(
     let height = |f: &Frame| h0 + f.walls[walls.punch].displacement.z;
     let mut records = Vec::with_capacity(dc.press.records + 1);
     let mut escaped = Vec::new();
+    let radii = super::die_compaction_replay::material_radii(rec)?;
     for f in &rec.frames {
         let h = height(f);
         for (i, b) in f.bodies.iter().enumerate() {
@@ -85,7 +86,6 @@ fn pressing(
             continue;
         }
         let positions: Vec<Vec3> = f.bodies.iter().map(|b| b.position).collect();
-        let radii: Vec<f64> = f.bodies.iter().map(|b| b.radius).collect();
         let (density_specimen, density_rve) =
             densities_in(&positions, &radii, dc.die_diameter, dc.rve_diameter, h)?;
         let force = |k: usize| f.walls[k].force.z / area;
