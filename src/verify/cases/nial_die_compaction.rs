@@ -60,16 +60,13 @@ struct Model {
     law: Law,
     /// Friction between particles (the die wall keeps the scene's 0.02).
     friction: f64,
-    /// The pressure the ramp reaches in the scene's ramp time, Pa (the scene's 50 MPa
-    /// when absent).
-    pressure: Option<f64>,
 }
 
 impl Model {
     /// Whether the pressing goes on through the press cycle (`CYCLE_UNLOAD`,
-    /// `CYCLE_EJECT`): the frictionless pairwise ones to 50 MPa do.
+    /// `CYCLE_EJECT`): the frictionless pairwise ones do.
     fn cycle(&self) -> bool {
-        self.friction == 0.0 && self.law != Law::Mdr && self.pressure.is_none()
+        self.friction == 0.0 && self.law != Law::Mdr
     }
 }
 
@@ -77,7 +74,6 @@ const HERTZ: Model = Model {
     label: "hertz",
     law: Law::Hertz,
     friction: 0.0,
-    pressure: None,
 };
 
 /// MDR with NiAl's E and ν, the yield stress of the Storåkers m = 0 pair (800 MPa, a
@@ -85,6 +81,7 @@ const HERTZ: Model = Model {
 /// below a free-surface fraction of 0.5 (Zunker & Kamrin's value, LAMMPS's example),
 /// and the dashpot `damping mdr 1` with η = 1.8 = 2ξ for the Hertz pressing's ξ = 0.9:
 /// the law of reference_data/lammps/nial_die_compaction_mdr.
+#[allow(clippy::approx_constant)] // NiAl's ν, not 1/π
 const MDR: Mdr = Mdr {
     youngs_modulus: 1.83e11,
     poisson_ratio: 0.318,
@@ -124,26 +121,14 @@ const FRICTIONS: [(f64, &str, &str); 3] = [
     (0.05, "hertz_mu0.05", "storakers_m0.2_mu0.05"),
 ];
 
-/// MDR pressed on to high density: the ramp reaches 600 MPa in the scene's 1e-4 s,
-/// which passes relative density 0.85 (the 300-particle specimen reaches it near
-/// 380 MPa). Its mean punch speed, 0.25 m/s, is LAMMPS's mdr run's.
-const DENSE_PRESSURE: f64 = 600e6;
-const MDR_DENSE: &str = "mdr_600MPa";
-/// The density the dense pressing is read at.
-const DENSE_DENSITY: f64 = 0.85;
-/// Frictionless Hertz pressed on as far. Storåkers is not: pressed so (m = 0, MDR's
-/// yield stress) the 300-particle specimen stops near 440 MPa, a contact overlapping
-/// half its smaller particle's radius, past any pairwise law's reach.
-const HERTZ_DENSE: &str = "hertz_600MPa";
-const DENSE_MODELS: [&str; 2] = [MDR_DENSE, HERTZ_DENSE];
 /// MDR's overlap limit: a small particle pressed between two large ones flattens into
 /// a disc, its overlap with each approaching its radius, which the law follows (the
 /// displaced volume, the bulk response); the run stops only once one is pushed
 /// nearly through the other.
 const MDR_MAX_OVERLAP: f64 = 0.95;
 
-/// The pressings of Figs 17–20 and MDR's, longest first (Storåkers, then Hertz with friction,
-/// then frictionless Hertz; their times are in reference_data/nial/README.md), so that
+/// MDR's pressing and those of Figs 17–20, longest first (MDR, Storåkers, then Hertz with
+/// friction, then frictionless Hertz; their times are in reference_data/nial/README.md), so that
 /// the threads that share them finish close together; a run cut short keeps each
 /// pressing's checkpoint.
 fn full_models() -> Vec<Model> {
@@ -151,13 +136,11 @@ fn full_models() -> Vec<Model> {
         label,
         law: Law::Storakers(STORAKERS[k].0, STORAKERS[k].1),
         friction,
-        pressure: None,
     };
     let hertz = |friction: f64, label: &'static str| Model {
         label,
         law: Law::Hertz,
         friction,
-        pressure: None,
     };
     let (mu, h, s) = (
         FRICTIONS.map(|f| f.0),
@@ -166,22 +149,9 @@ fn full_models() -> Vec<Model> {
     );
     vec![
         Model {
-            label: MDR_DENSE,
-            law: Law::Mdr,
-            friction: 0.0,
-            pressure: Some(DENSE_PRESSURE),
-        },
-        Model {
             label: "mdr",
             law: Law::Mdr,
             friction: 0.0,
-            pressure: None,
-        },
-        Model {
-            label: HERTZ_DENSE,
-            law: Law::Hertz,
-            friction: 0.0,
-            pressure: Some(DENSE_PRESSURE),
         },
         storakers(2, 0.0, STORAKERS[2].2),
         storakers(1, 0.0, STORAKERS[1].2),
@@ -207,9 +177,6 @@ fn with_model(scene: &DieCompactionFile, model: &Model) -> Result<DieCompactionF
         TampError::Other("the NiAl scene must have a tangential law (wall friction)".into())
     })?;
     tangential.friction = model.friction;
-    if let Some(p) = model.pressure {
-        s.die_compaction.press.pressure = p;
-    }
     if model.law == Law::Mdr {
         s.scene.contact.normal = NormalLaw::Mdr(MDR);
         s.scene.contact.damping = None;
@@ -486,33 +453,6 @@ pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {
             series: &height,
         }],
     )?;
-    let dense: Vec<Series> = DENSE_MODELS
-        .iter()
-        .map(|label| {
-            Series::line(
-                &format!("{label}, specimen"),
-                mpa(&find(label).records, |r| r.density_specimen),
-            )
-        })
-        .chain([
-            super::mdr_curve::density(&mdr),
-            Series::line(
-                &format!("relative density {DENSE_DENSITY}"),
-                vec![(0.0, DENSE_DENSITY), (DENSE_PRESSURE / 1e6, DENSE_DENSITY)],
-            ),
-        ])
-        .collect();
-    write_svg(
-        &ctx.report_dir.join(format!("{name}_dense.svg")),
-        &[Panel {
-            title: "NiAl die compaction pressed on: MDR against the pairwise laws, μ = 0",
-            x_label: "pressure (MPa)",
-            y_label: "relative density (specimen)",
-            log_x: false,
-            log_y: false,
-            series: &dense,
-        }],
-    )?;
     for (base, title) in [
         ("hertz", "Hertz–Mindlin–Deresiewicz (Rojek Fig 19)"),
         ("storakers_m0.2", "Storåkers m = 0.2 (Rojek Fig 20)"),
@@ -588,45 +528,20 @@ pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {
             0.0,
         ),
     ];
-    // MDR: at 50 MPa against LAMMPS's mdr on the same specimen; pressed on, the
-    // solid balance and the pairwise laws' parting.
-    let mdr_dense = find(MDR_DENSE);
-    let dense_last = mdr_dense.records.last().expect("records");
-    let p85 = mdr_dense
-        .records
-        .windows(2)
-        .find_map(|w| {
-            let (a, b) = (&w[0], &w[1]);
-            (a.density_specimen < DENSE_DENSITY && DENSE_DENSITY <= b.density_specimen).then(|| {
-                let s = (DENSE_DENSITY - a.density_specimen)
-                    / (b.density_specimen - a.density_specimen);
-                a.pressure + s * (b.pressure - a.pressure)
-            })
-        })
-        .ok_or_else(|| {
-            TampError::Other(format!(
-                "{MDR_DENSE} does not reach relative density {DENSE_DENSITY}"
-            ))
-        })?;
-    eprintln!(
-        "nial_die_compaction: {MDR_DENSE} reaches relative density {DENSE_DENSITY} at {:.1} MPa",
-        p85 / 1e6
-    );
-    let at_dense = |label: &str| at(find(label), DENSE_PRESSURE, |r| r.density_specimen);
+    // MDR: the solid balance with the material's balls (State::material_radius), and
+    // LAMMPS's mdr on the same specimen.
+    let mdr_pressing = find("mdr");
+    let mdr_last = mdr_pressing.records.last().expect("records");
+    let mdr_density = at(mdr_pressing, p_max, |r| r.density_specimen)?;
     measured.extend([
         Measured::new(
             "density_specimen_at_50MPa_mdr",
-            at(find("mdr"), p_max, |r| r.density_specimen)?,
-            super::mdr_curve::density_at(&mdr, p_max)?,
+            mdr_density,
+            (solid - mdr_last.wall_lens_volume) / (die_area * mdr_last.height),
         ),
         Measured::new(
-            "density_specimen_at_600MPa_mdr",
-            at_dense(MDR_DENSE)?,
-            (solid - dense_last.wall_lens_volume) / (die_area * dense_last.height),
-        ),
-        Measured::new(
-            "density_specimen_at_600MPa_hertz_minus_mdr",
-            at_dense(HERTZ_DENSE)? - at_dense(MDR_DENSE)?,
+            "density_specimen_at_50MPa_mdr_minus_lammps",
+            mdr_density - super::mdr_curve::density_at(&mdr, p_max)?,
             0.0,
         ),
     ]);
