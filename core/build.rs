@@ -87,7 +87,13 @@ fn main() {
     println!("cargo:rerun-if-changed=build.rs");
     // The code's own files too: an edit leaves HEAD and the index as they were, and the
     // stamp of a build from edited code must say `-dirty`.
-    for path in ["core/src", "core/Cargo.toml", "src", "Cargo.toml", "Cargo.lock"] {
+    for path in [
+        "core/src",
+        "core/Cargo.toml",
+        "src",
+        "Cargo.toml",
+        "Cargo.lock",
+    ] {
         println!("cargo:rerun-if-changed={}", top.join(path).display());
     }
     if let Some(dir) = git_dir {
