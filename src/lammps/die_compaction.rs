@@ -28,7 +28,6 @@
 //!   which `tamp import-liggghts-dump --die-stroke stroke.json` measures densities.
 
 use super::export::{pair_model, refusals};
-use crate::contact::normal::NormalLaw;
 use crate::error::Result;
 use crate::liggghts::die_compaction::DieStroke;
 use crate::peer_deck::{DUMP_COLUMNS, Exported, dump_format, neighbor_skin};
@@ -197,7 +196,8 @@ pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> R
         "Atoms # sphere",
     );
     crate::output::write_atomic(&out_dir.join("particles.data"), data.as_bytes())?;
-    let material_radius = matches!(file.scene.contact.normal, NormalLaw::Mdr(_)).then(|| {
+    let mdr = file.scene.contact.normal.mdr().is_some();
+    let material_radius = mdr.then(|| {
         let state = sim.state();
         state
             .particles
@@ -231,7 +231,6 @@ pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> R
         contact.friction_between(particle, &dc.wall_material),
     );
     let n = stroke.steps_per_record;
-    let mdr = file.scene.contact.normal.mdr().is_some();
     let mut notes = vec![format!(
         "the punch replays the stroke tamp pressed under the pressure ramp (h0 = {} m, {} records of {} steps of {} s)",
         g(specimen.h0),
