@@ -81,6 +81,7 @@ fn law(
         damping,
         tangential,
         cohesion,
+        rolling: None,
         lever_arm: Default::default(),
         no_pull: false,
     }

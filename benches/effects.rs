@@ -60,6 +60,20 @@ fn bed(variant: &str) -> Value {
             v["contact"]["tangential"] =
                 json!({"law": "cundall_strack", "friction": 0.5, "stiffness": 1e3})
         }
+        "+friction(cundall_strack)+rotation" => {
+            v["contact"]["tangential"] =
+                json!({"law": "cundall_strack", "friction": 0.5, "stiffness": 1e3});
+            v["rotation"] = json!({});
+        }
+        // LAMMPS's rolling sds joined to the spring (k_r = 2.25 μ_r² E R, its tableting
+        // example's choice).
+        "+friction(cundall_strack)+rotation+rolling" => {
+            v["contact"]["tangential"] =
+                json!({"law": "cundall_strack", "friction": 0.5, "stiffness": 1e3});
+            v["contact"]["rolling"] =
+                json!({"law": "sds", "stiffness": 4.05e4, "damping": 0.0, "friction": 0.6});
+            v["rotation"] = json!({});
+        }
         "+no_pull" => v["contact"]["damping"]["limit"] = json!(true),
         "+cohesion" => {
             v["contact"]["cohesion"] = json!({"law": "van_der_waals", "hamaker": 6.5e-20,
@@ -120,6 +134,8 @@ fn effects(c: &mut Criterion) {
         "+friction(cundall_strack)",
         "+rotation",
         "+friction+rotation",
+        "+friction(cundall_strack)+rotation",
+        "+friction(cundall_strack)+rotation+rolling",
         "+no_pull",
         "+cohesion",
         "mdr",

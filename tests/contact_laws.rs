@@ -23,6 +23,7 @@ fn every_law() -> Vec<ContactLaw> {
                 damping: None,
                 tangential: t,
                 cohesion: None,
+                rolling: None,
                 lever_arm: Default::default(),
                 no_pull: false,
             });
@@ -290,6 +291,7 @@ fn newtons_third_law_holds_in_a_simulation() {
                 friction_pairs: Vec::new(),
             }),
             cohesion: None,
+            rolling: None,
             lever_arm: Default::default(),
         };
         let mut sim = scene::build(&s).unwrap().sim;
@@ -322,6 +324,7 @@ fn frictionless_tangential_laws_keep_the_normal_memory() {
             damping: None,
             tangential: Some(t),
             cohesion: None,
+            rolling: None,
             lever_arm: Default::default(),
             no_pull: false,
         };

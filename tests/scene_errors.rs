@@ -1218,3 +1218,26 @@ fn a_user_who_means_a_long_run_raises_its_wall_time_limit() {
     s["run"]["max_wall_time"] = json!(-1);
     expect_input_error(s, &["run.max_wall_time: must be > 0"]);
 }
+
+/// A rolling resistance needs spins and a tangential law with one spring to join, and
+/// its own parameters in range; each rule is named at its path.
+#[test]
+fn rolling_resistance_rules_are_named() {
+    let mut s = base();
+    s["contact"]["rolling"] =
+        json!({"law": "sds", "stiffness": 0.0, "damping": -1.0, "friction": 0.2});
+    s.as_object_mut().unwrap().remove("rotation");
+    expect_input_error(
+        s.clone(),
+        &[
+            "contact.rolling.stiffness: must be > 0",
+            "contact.rolling.damping: must be >= 0",
+            "contact.rolling: needs \"rotation\"",
+        ],
+    );
+    s["contact"]["tangential"] = json!({"law": "coulomb", "friction": 0.3});
+    expect_input_error(
+        s,
+        &["contact.rolling.law: 'sds' needs contact.tangential with a law that keeps one spring"],
+    );
+}

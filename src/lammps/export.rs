@@ -98,6 +98,11 @@ pub(super) fn pair_model(scene: &Scene) -> std::result::Result<String, Vec<(Stri
             .map_err(|why| refused.push(("contact.tangential.law".to_string(), why.0)))
             .ok(),
     };
+    // `rolling sds k γ μ` joins the tangential words, as in LAMMPS's examples.
+    let tangential = tangential.map(|t| match &scene.contact.rolling {
+        Some(r) => format!("{t} {}", r.lammps()),
+        None => t,
+    });
     match (normal, damping, tangential) {
         (Some(n), Some((kw, coefficient)), Some(t)) if refused.is_empty() => {
             let normal = match n {

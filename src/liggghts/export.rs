@@ -115,6 +115,12 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
             "the exported deck dumps at one interval",
         );
     }
+    if scene.contact.rolling.is_some() {
+        refuse(
+            "contact.rolling",
+            "LIGGGHTS 3.8's rolling_friction models (cdt, epsd, epsd2, epsd3) are not LAMMPS's sds rolling resistance, the only one tamp has",
+        );
+    }
     // The law's own rules; the contact kinds are checked after the scene is built.
     match scene.contact.normal.liggghts_deck(&deck_scene(scene, None)) {
         None => refuse(

@@ -40,6 +40,7 @@ pub mod model;
 pub mod normal;
 pub mod record;
 pub mod registry;
+pub mod rolling;
 pub mod states;
 pub mod tangential;
 pub mod van_der_waals;
@@ -51,6 +52,7 @@ use damping::Damping;
 use model::{Composed, LawVisitor, NoFriction, NormalModel, Roles, TangentialModel};
 use normal::NormalLaw;
 use tangential::TangentialLaw;
+use tangential::families::Spring;
 use van_der_waals::Cohesion;
 
 /// Geometry of one contact, computed once and shared by all roles.
@@ -90,6 +92,9 @@ pub struct ContactForce {
     pub normal: f64,
     /// Tangential (friction) force on i, perpendicular to `normal`, N.
     pub tangential: Vec3,
+    /// Rolling resistance F_r on i (its torque R* n × F_r), N; zero without a
+    /// rolling law.
+    pub rolling: Vec3,
 }
 
 /// The scene's law: one value per role, as the scene file gives them, turned into
@@ -104,6 +109,8 @@ pub struct ContactLaw {
     pub tangential: Option<TangentialLaw>,
     /// The attraction across small gaps, if any.
     pub cohesion: Option<Cohesion>,
+    /// The rolling resistance, if any; it joins the tangential law (`rolling/mod.rs`).
+    pub rolling: Option<rolling::RollingLaw>,
     /// Where the contact acts on spinning spheres (`contact.lever_arm`).
     pub lever_arm: lever_arm::LeverArm,
     /// Whether the elastic plus damping normal force is clamped at zero
@@ -133,6 +140,7 @@ impl ContactLaw {
             damping,
             tangential,
             cohesion,
+            rolling: None,
             lever_arm: lever_arm::LeverArm::default(),
             no_pull: false,
         }
@@ -187,9 +195,18 @@ impl ContactLaw {
 
     #[cfg_attr(test, allow(dead_code))]
     fn with_tangential<N: NormalModel, V: LawVisitor>(&self, n: N, v: V) -> V::Output {
-        match self.tangential {
-            None => self.compose(n, NoFriction, v),
-            Some(tangential) => each_family!(tangential, t => self.compose(n, t, v)),
+        match (self.tangential, self.rolling) {
+            (None, _) => self.compose(n, NoFriction, v),
+            (Some(tangential), None) => each_family!(tangential, t => self.compose(n, t, v)),
+            (Some(tangential), Some(rolling)) => {
+                let sliding = Spring::of(tangential).unwrap_or_else(|| {
+                    panic!(
+                        "rolling resistance joins a tangential law that keeps one spring; the scene's rules refuse '{}' with it",
+                        tangential.name()
+                    )
+                });
+                self.compose(n, rolling::WithRolling { sliding, rolling }, v)
+            }
         }
     }
 

@@ -22,6 +22,7 @@ use crate::contact::mdr::contact::MdrForce;
 use crate::contact::mdr::{Mdr, MdrContact};
 use crate::contact::normal::NormalLaw;
 use crate::contact::registry::{NormalExample, TangentialExample};
+use crate::contact::rolling::RollingInput;
 use crate::contact::states::ContactStates;
 use crate::contact::van_der_waals::Cohesion;
 use crate::contact::{ContactForce, ContactGeometry};
@@ -351,6 +352,9 @@ pub trait TangentialModel: Copy + Debug + PartialEq {
     type State: ContactState;
     /// False for `NoFriction`: no tangential velocity, force or torque is computed.
     const ACTIVE: bool = true;
+    /// True for a law with rolling resistance (`WithRolling`): the force loop then
+    /// adds the rolling torque R* n × F_r to i and its opposite to j.
+    const ROLLS: bool = false;
 
     /// The `law` of the scene file, also the law's name in outputs.
     fn name(&self) -> &'static str;
@@ -387,6 +391,12 @@ pub trait TangentialModel: Copy + Debug + PartialEq {
 
     /// Tangential force on particle i; advances the state.
     fn force(&self, input: &TangentialInput, state: &mut Self::State) -> Vec3;
+
+    /// Rolling resistance F_r on particle i (`ROLLS` laws); advances the state.
+    #[inline(always)]
+    fn rolling(&self, _input: &RollingInput, _state: &mut Self::State) -> Vec3 {
+        Vec3::zeros()
+    }
 
     /// Largest tangent stiffness at this contact state (θ = 1), N/m; zero for the
     /// spring-less laws.
@@ -533,13 +543,14 @@ impl<N: NormalModel, T: TangentialModel> Composed<N, T> {
         state: &mut StateOf<N, T>,
         dt: f64,
     ) -> ContactForce {
-        self.evaluate_given(g, pair, state, dt, None)
+        self.evaluate_given(g, pair, state, dt, None, Vec3::zeros())
     }
 
     /// `evaluate` with the normal force `given` by the caller: MDR's, which the force
     /// loop computes with the contact's particles (its force without the dashpot, and
     /// the dashpot's coefficient). The dashpot, friction and cohesion follow as in
-    /// `evaluate`.
+    /// `evaluate`; a law that resists rolling reads the relative spin ω_i − ω_j
+    /// (`relative_spin`, ω_i against a wall) after the friction.
     #[inline(always)]
     pub fn evaluate_given(
         &self,
@@ -548,6 +559,7 @@ impl<N: NormalModel, T: TangentialModel> Composed<N, T> {
         state: &mut StateOf<N, T>,
         dt: f64,
         given: Option<MdrForce>,
+        relative_spin: Vec3,
     ) -> ContactForce {
         let mut force = ContactForce::default();
         if g.overlap > 0.0 {
@@ -586,6 +598,15 @@ impl<N: NormalModel, T: TangentialModel> Composed<N, T> {
             if T::ACTIVE {
                 let input = Self::tangential_input(g, pair, force.normal, stiffness, damping, dt);
                 force.tangential = self.tangential.force(&input, &mut state.tangential);
+            }
+            if T::ROLLS {
+                let input = RollingInput {
+                    normal: g.normal,
+                    velocity: relative_spin.cross(&g.normal) * g.effective_radius,
+                    dt,
+                    normal_force: force.normal,
+                };
+                force.rolling = self.tangential.rolling(&input, &mut state.tangential);
             }
         } else if Self::HAS_STATE {
             *state = StateOf::<N, T>::default();

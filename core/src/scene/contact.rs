@@ -17,7 +17,9 @@ use crate::contact::damping::Damping;
 use crate::contact::lever_arm::LeverArm;
 use crate::contact::model::{Needs, Roles};
 use crate::contact::normal::NormalLaw;
+use crate::contact::rolling::RollingLaw;
 use crate::contact::tangential::TangentialLaw;
+use crate::contact::tangential::families::Spring;
 use crate::contact::van_der_waals::Cohesion;
 use crate::error::Errors;
 use crate::material::{Material, PairTable};
@@ -39,6 +41,9 @@ pub struct ContactSpec {
     /// Attraction between surfaces near contact; absent means none.
     #[serde(default)]
     pub cohesion: Option<Cohesion>,
+    /// Resistance to rolling (`law` tag and its parameters); absent means none.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rolling: Option<RollingLaw>,
     /// Where a contact acts on spinning spheres: `mid_overlap` (default) or `lammps`
     /// (contact/lever_arm.rs).
     #[serde(default)]
@@ -64,6 +69,7 @@ impl ContactSpec {
     pub fn law(&self) -> ContactLaw {
         ContactLaw {
             lever_arm: self.lever_arm,
+            rolling: self.rolling,
             no_pull: self.damping.is_some_and(|d| d.limit),
             ..ContactLaw::new(
                 self.normal,
@@ -221,8 +227,43 @@ pub fn validate(contact: &ContactSpec, at: &str, ctx: &LawContext, e: &mut Error
     if let Some(cohesion) = &contact.cohesion {
         cohesion.check(&format!("{at}.cohesion"), e);
     }
+    if let Some(rolling) = &contact.rolling {
+        rolling_rules(rolling, contact, at, ctx, e);
+    }
     if normal.mdr().is_some() {
         mdr_rules(contact, at, ctx, e);
+    }
+}
+
+/// Rolling resistance acts on spins, and joins a tangential law that keeps one spring
+/// (`contact/rolling/mod.rs`).
+fn rolling_rules(
+    rolling: &RollingLaw,
+    contact: &ContactSpec,
+    at: &str,
+    ctx: &LawContext,
+    e: &mut Errors,
+) {
+    let path = format!("{at}.rolling");
+    rolling.check(&path, e);
+    let spring = contact
+        .tangential
+        .as_ref()
+        .is_some_and(|t| Spring::of(t.law).is_some());
+    if !spring {
+        e.push(
+            format!("{path}.law"),
+            format!(
+                "'{}' needs {at}.tangential with a law that keeps one spring (cundall_strack, mindlin_no_slip, storakers, liggghts_history or lammps_linear_history)",
+                rolling.name()
+            ),
+        );
+    }
+    if !ctx.rotation {
+        e.push(
+            path,
+            "needs \"rotation\": a rolling resistance acts on the particles' spins",
+        );
     }
 }
 

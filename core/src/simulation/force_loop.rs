@@ -67,6 +67,7 @@ pub(super) fn resolve<N, T>(
     state: &mut StateOf<N, T>,
     dt: f64,
     given: Option<MdrForce>,
+    relative_spin: Vec3,
 ) -> std::result::Result<(Vec3, ContactForce), String>
 where
     N: NormalModel,
@@ -78,7 +79,7 @@ where
             "overlap {overlap:.4e} m is {ratio:.3e} of the smaller radius (limit {max_fraction})"
         ));
     }
-    let f = law.evaluate_given(g, pair, state, dt, given);
+    let f = law.evaluate_given(g, pair, state, dt, given, relative_spin);
     let total = g.normal * f.normal + f.tangential;
     if !total.iter().all(|c| c.is_finite()) {
         return Err(format!(
@@ -328,14 +329,27 @@ impl Simulation {
             let given = mdr_step
                 .as_mut()
                 .and_then(|m| m.pair::<N>(&mut state.normal, overlap, (i, j), id, &g));
-            let (total, f) = resolve(law, &g, ratio, max_fraction, pair, state, dt, given)
+            let spin = if T::ROLLS {
+                bodies.omega[i] - bodies.omega[j]
+            } else {
+                Vec3::zeros()
+            };
+            let (total, f) = resolve(law, &g, ratio, max_fraction, pair, state, dt, given, spin)
                 .map_err(|what| format!("{}: {what}", name()))?;
             force[i] += total;
             force[j] -= total;
             if torques {
                 let t = -normal.cross(&f.tangential);
-                torque[i] += t * arm_i.torque;
-                torque[j] += t * arm_j.torque;
+                let (mut t_i, mut t_j) = (t * arm_i.torque, t * arm_j.torque);
+                if T::ROLLS {
+                    // Summed per contact before it joins the particle's torque, as
+                    // LAMMPS does, so that both codes round alike.
+                    let rolling = normal.cross(&f.rolling) * g.effective_radius;
+                    t_i += rolling;
+                    t_j -= rolling;
+                }
+                torque[i] += t_i;
+                torque[j] += t_j;
             }
             Ok(())
         });
@@ -371,19 +385,27 @@ impl Simulation {
                         let given = mdr_step
                             .as_mut()
                             .and_then(|m| m.wall::<N>(&mut state.normal, contact.overlap, i, &g));
+                        let spin = if T::ROLLS {
+                            bodies.omega[i]
+                        } else {
+                            Vec3::zeros()
+                        };
                         let (total, f) =
-                            resolve(law, &g, ratio, max_fraction, pair, state, dt, given).map_err(
-                                |what| {
+                            resolve(law, &g, ratio, max_fraction, pair, state, dt, given, spin)
+                                .map_err(|what| {
                                     format!(
                                         "contact {}-wall '{}' (facet {facet}): {what}",
                                         id[i], wall.name
                                     )
-                                },
-                            )?;
+                                })?;
                         force[i] += total;
                         wall_force[w] -= total;
                         if torques {
-                            torque[i] += -normal.cross(&f.tangential) * arm.torque;
+                            let mut t = -normal.cross(&f.tangential) * arm.torque;
+                            if T::ROLLS {
+                                t += normal.cross(&f.rolling) * g.effective_radius;
+                            }
+                            torque[i] += t;
                         }
                     }
                     Ok(())

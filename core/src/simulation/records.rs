@@ -88,7 +88,18 @@ impl Simulation {
             let given = mdr
                 .as_mut()
                 .and_then(|m| m.pair::<N>(&mut state.normal, overlap, (i, j), &p.id, &g));
-            if let Ok((_, f)) = resolve(law, &g, ratio, max_fraction, pair, &mut state, dt, given) {
+            let spin = p.omega[i] - p.omega[j];
+            if let Ok((_, f)) = resolve(
+                law,
+                &g,
+                ratio,
+                max_fraction,
+                pair,
+                &mut state,
+                dt,
+                given,
+                spin,
+            ) {
                 out.push(ContactRecord {
                     i,
                     partner: Partner::Particle(j),
@@ -122,9 +133,17 @@ impl Simulation {
                     let given = mdr
                         .as_mut()
                         .and_then(|m| m.wall::<N>(&mut state.normal, contact.overlap, i, &g));
-                    if let Ok((_, f)) =
-                        resolve(law, &g, ratio, max_fraction, pair, &mut state, dt, given)
-                    {
+                    if let Ok((_, f)) = resolve(
+                        law,
+                        &g,
+                        ratio,
+                        max_fraction,
+                        pair,
+                        &mut state,
+                        dt,
+                        given,
+                        p.omega[i],
+                    ) {
                         let point = p.position[i] - g.normal * arm.torque;
                         out.push(ContactRecord {
                             i,

@@ -35,6 +35,7 @@ mod one_material;
 pub mod probe;
 mod restitution_laws;
 mod rojek_models;
+mod rolling_resistance;
 mod scott_random_packing;
 mod settled_packing;
 mod sliding_oblique_impact;
@@ -75,6 +76,7 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("thornton_restitution", thornton_restitution::run),
     ("thornton_liggghts_restitution", thornton_restitution::run),
     ("sliding_oblique_impact", sliding_oblique_impact::run),
+    ("rolling_resistance_lammps", rolling_resistance::run),
     ("oblique_wall_impact_liggghts", oblique_impact::wall),
     ("oblique_wall_impact_lammps_mindlin", oblique_impact::wall),
     ("oblique_wall_impact_lammps_linear", oblique_impact::wall),

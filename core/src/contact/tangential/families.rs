@@ -104,6 +104,21 @@ family!(
     }
 );
 
+impl Spring {
+    /// The law as a member of this family, if it keeps one 3-vector.
+    pub fn of(law: super::TangentialLaw) -> Option<Spring> {
+        use super::TangentialLaw as L;
+        match law {
+            L::CundallStrack(l) => Some(Spring::CundallStrack(l)),
+            L::MindlinNoSlip(l) => Some(Spring::MindlinNoSlip(l)),
+            L::Storakers(l) => Some(Spring::Storakers(l)),
+            L::LiggghtsHistory(l) => Some(Spring::LiggghtsHistory(l)),
+            L::LammpsLinearHistory(l) => Some(Spring::LammpsLinearHistory(l)),
+            _ => None,
+        }
+    }
+}
+
 family!(
     /// The one-dimensional history laws acting along the slip direction.
     ScalarAxis, ScalarAxisState, {

@@ -55,7 +55,7 @@ const TURN_THRESHOLD: f64 = 1e-10;
 /// component times `scale` (the stiffness for a displacement history, 1 for a force
 /// history) exceeds 1e-10 F_s.
 #[inline(always)]
-pub(super) fn turn_above_threshold(h: &mut Vec3, normal: &Vec3, scale: f64, limit: f64) {
+pub(crate) fn turn_above_threshold(h: &mut Vec3, normal: &Vec3, scale: f64, limit: f64) {
     if h.dot(normal).abs() * scale > TURN_THRESHOLD * limit {
         *h = rotate_into_plane(*h, normal);
     }
