@@ -327,6 +327,36 @@ fn mdr_is_pair_granular_mdr_with_its_dashpot_radii_that_change_and_only_region_w
     assert!(refusals(&current).is_empty(), "{:?}", refusals(&current));
 }
 
+/// A wall's own surface energy goes into its fix, the particles' into `pair_coeff`
+/// (LAMMPS's tableting example: adhesive particles, non-adhesive walls).
+#[test]
+fn mdr_walls_take_their_own_surface_energy() {
+    let s = two_spheres(
+        r#"{"normal": {"law": "mdr", "youngs_modulus": 1.83e11, "poisson_ratio": 0.318, "yield_stress": 8e8,
+            "surface_energy": 2.0, "wall_surface_energy": 0.0,
+            "bulk_trigger": 0.5, "damping": {"coefficient": 1.8, "form": "stiffness"}}}"#,
+        r#", "walls": [{"material": "steel", "shape": {"kind": "plane", "point": [0, 0, -0.02], "normal": [0, 0, 1]}}]"#,
+    );
+    assert!(refusals(&s).is_empty(), "{:?}", refusals(&s));
+    let deck = deck_of(&s, "mdr-gamma").unwrap();
+    let model = |gamma: &str| {
+        format!(
+            "mdr 1.83e11 3.18e-1 8e8 {gamma} 5e-1 1.8e0 damping mdr 1 tangential linear_nohistory 0 0"
+        )
+    };
+    assert!(
+        deck.contains(&format!("pair_coeff   1 1 {}\n", model("2e0"))),
+        "{deck}"
+    );
+    assert!(
+        deck.contains(&format!(
+            "wall/gran/region granular {} region wall0",
+            model("0e0")
+        )),
+        "{deck}"
+    );
+}
+
 #[test]
 fn output_walls_prints_each_walls_displacement_and_force_into_walls_csv() {
     let s = mdr_sphere_with_walls(

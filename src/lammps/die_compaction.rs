@@ -27,7 +27,7 @@
 //!   every record, and a frame of every particle per record (`dump.lammps`), from
 //!   which `tamp import-liggghts-dump --die-stroke stroke.json` measures densities.
 
-use super::export::{pair_model, refusals};
+use super::export::{pair_model, refusals, surface_energy};
 use crate::error::Result;
 use crate::liggghts::die_compaction::DieStroke;
 use crate::peer_deck::{DUMP_COLUMNS, Exported, dump_format, neighbor_skin};
@@ -217,18 +217,23 @@ pub fn export_pressing(file: &DieCompactionFile, sha: &str, out_dir: &Path) -> R
             .find(|m| m.name == name)
             .expect("validated material")
     };
-    let line = |name: &str, mu: f64| {
+    let line = |name: &str, mu: f64, wall: bool| {
         let m = material(name);
-        model
+        surface_energy(&model, &file.scene, wall)
             .replace("{E}", &g(m.youngs_modulus.unwrap_or(0.0)))
             .replace("{nu}", &g(m.poisson_ratio.unwrap_or(0.0)))
             .replace("{mu}", &g(mu))
     };
     let contact = &file.scene.contact;
-    let pair = line(particle, contact.friction_between(particle, particle));
+    let pair = line(
+        particle,
+        contact.friction_between(particle, particle),
+        false,
+    );
     let wall = line(
         &dc.wall_material,
         contact.friction_between(particle, &dc.wall_material),
+        true,
     );
     let n = stroke.steps_per_record;
     let mut notes = vec![format!(

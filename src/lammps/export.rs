@@ -67,8 +67,18 @@ const AXES: [&str; 3] = ["x", "y", "z"];
 
 use crate::decimal::g;
 
+/// `model` with MDR's `{gamma}` set to the surface energy of a pair of particles, or of
+/// a particle and a wall.
+pub(super) fn surface_energy(model: &str, scene: &Scene, wall: bool) -> String {
+    let gamma = scene.contact.normal.mdr().map_or(0.0, |law| match wall {
+        true => law.at_wall().surface_energy,
+        false => law.surface_energy,
+    });
+    model.replace("{gamma}", &g(gamma))
+}
+
 /// The contact model of every `pair_coeff` line, with the material's E and ν left as
-/// `{E}` and `{nu}`.
+/// `{E}` and `{nu}`, and MDR's surface energy as `{gamma}` (`surface_energy`).
 pub(super) fn pair_model(scene: &Scene) -> std::result::Result<String, Vec<(String, String)>> {
     let mut refused = Vec::new();
     let normal = scene
@@ -118,12 +128,13 @@ pub(super) fn pair_model(scene: &Scene) -> std::result::Result<String, Vec<(Stri
                         MdrDampingForm::Velocity => 2,
                     };
                     let kw = format!("mdr {form}");
+                    // γ is left as `{gamma}`: a wall's may differ from the particles'
+                    // (`surface_energy`).
                     return Ok(format!(
-                        "mdr {} {} {} {} {} {} damping {kw} tangential {t}",
+                        "mdr {} {} {} {{gamma}} {} {} damping {kw} tangential {t}",
                         g(law.youngs_modulus),
                         g(law.poisson_ratio),
                         g(law.yield_stress),
-                        g(law.surface_energy),
                         g(law.bulk_trigger),
                         g(coefficient)
                     ));
@@ -963,9 +974,9 @@ pub fn export(
         .as_ref()
         .is_some_and(|t| !t.friction_pairs.is_empty());
     // The pair model with material `m`'s E and ν and the friction `mu`.
-    let line = |m: usize, mu: f64| {
+    let line = |m: usize, mu: f64, wall: bool| {
         let m = &sim.model().materials[m];
-        model
+        surface_energy(model, scene, wall)
             .replace("{E}", &g(m.youngs_modulus.unwrap_or(0.0)))
             .replace("{nu}", &g(m.poisson_ratio.unwrap_or(0.0)))
             .replace("{mu}", &g(mu))
@@ -995,7 +1006,7 @@ pub fn export(
                     "pair_coeff   {} {} {}",
                     a + 1,
                     b + 1,
-                    line(a, mu(a, b))
+                    line(a, mu(a, b), false)
                 );
             }
         }
@@ -1004,7 +1015,7 @@ pub fn export(
             let _ = writeln!(
                 deck,
                 "pair_style   gran/hooke/history {}\npair_coeff   * *",
-                line(first, mu(first, first))
+                line(first, mu(first, first), false)
             );
         }
     }
@@ -1063,7 +1074,7 @@ pub fn export(
                 let _ = writeln!(
                     deck,
                     "fix          wall{k}{id} {group} wall/gran/region granular {} region wall{k}{contacts}",
-                    line(wm, *mu)
+                    line(wm, *mu, true)
                 );
                 record.fixes.push(format!("wall{k}{id}"));
             }
@@ -1075,7 +1086,7 @@ pub fn export(
                 let _ = writeln!(
                     deck,
                     "fix          wall{k}{suffix}{id} {group} wall/gran granular {} {geometry}{contacts}",
-                    line(wm, *mu)
+                    line(wm, *mu, true)
                 );
                 record.fixes.push(format!("wall{k}{suffix}{id}"));
             }

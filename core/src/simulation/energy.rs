@@ -107,7 +107,7 @@ impl Simulation {
                 let held = match &mdr {
                     Some((m, moduli, particles)) => N::mdr_contact(&mut state.normal)
                         .map_or(0.0, |c| {
-                            c.wall_energy(m, moduli, overlap, WallSide(i), particles)
+                            c.wall_energy(&m.at_wall(), moduli, overlap, WallSide(i), particles)
                         }),
                     None => 0.0,
                 };

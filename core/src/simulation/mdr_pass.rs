@@ -112,6 +112,8 @@ impl Simulation {
 /// histories and the particles' sums.
 pub(super) struct MdrStep<'a> {
     pub law: &'a Mdr,
+    /// The law of a wall contact (`Mdr::at_wall`).
+    pub wall_law: Mdr,
     pub moduli: Moduli,
     pub particles: &'a mut MdrParticles,
     pub update: bool,
@@ -127,6 +129,7 @@ impl<'a> MdrStep<'a> {
     ) -> Option<Self> {
         law.zip(particles).map(|(law, particles)| MdrStep {
             law,
+            wall_law: law.at_wall(),
             moduli: law.moduli(),
             particles,
             update,
@@ -167,7 +170,7 @@ impl<'a> MdrStep<'a> {
     ) -> Option<MdrForce> {
         N::mdr_contact(normal).map(|c| {
             c.wall(
-                self.law,
+                &self.wall_law,
                 &self.moduli,
                 overlap,
                 WallSide(i),

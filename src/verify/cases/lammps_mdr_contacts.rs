@@ -65,6 +65,9 @@ struct Run {
     #[serde(default)]
     wall: Option<f64>,
     surface_energy: f64,
+    /// The wall's surface energy where it differs from the particles' (`Mdr`).
+    #[serde(default)]
+    wall_surface_energy: Option<f64>,
     bulk_trigger: f64,
     damping: MdrDamping,
 }
@@ -196,6 +199,7 @@ impl Parameters {
             poisson_ratio: self.poisson_ratio,
             yield_stress: self.yield_stress,
             surface_energy: run.surface_energy,
+            wall_surface_energy: run.wall_surface_energy,
             bulk_trigger: run.bulk_trigger,
             damping: run.damping,
         }
@@ -310,7 +314,7 @@ impl Parameters {
                     }
                     let normal = Vec3::new(dot * (1.0 / dot), 0.0, 0.0);
                     let out = c.wall(
-                        &law,
+                        &law.at_wall(),
                         &moduli,
                         particles.radius[i] - dot,
                         WallSide(i),
@@ -505,6 +509,7 @@ fn hertz_limit(p: &Parameters) -> Measured {
         poisson_ratio: p.poisson_ratio,
         yield_stress: 1e30,
         surface_energy: 0.0,
+        wall_surface_energy: None,
         bulk_trigger: 0.5,
         damping: MdrDamping {
             coefficient: 0.0,

@@ -87,6 +87,7 @@ const MDR: Mdr = Mdr {
     poisson_ratio: 0.318,
     yield_stress: 800e6,
     surface_energy: 0.0,
+    wall_surface_energy: None,
     bulk_trigger: 0.5,
     damping: MdrDamping {
         coefficient: 1.8,

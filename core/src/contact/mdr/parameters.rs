@@ -22,6 +22,11 @@ pub struct Mdr {
     /// Effective surface energy γ, J/m² (0: no adhesion).
     #[serde(default)]
     pub surface_energy: f64,
+    /// Effective surface energy between a particle and a wall, J/m²; absent: γ. LAMMPS
+    /// gives every wall fix its own `mdr` coefficients; its tableting example makes
+    /// the walls non-adhesive this way.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub wall_surface_energy: Option<f64>,
     /// Free-surface fraction ψ_b below which the bulk response acts.
     pub bulk_trigger: f64,
     /// The normal dashpot.
@@ -46,6 +51,14 @@ impl Mdr {
             shear: self.shear_modulus(),
             bulk: self.bulk_modulus(),
             plane_strain: self.plane_strain_modulus(),
+        }
+    }
+
+    /// The law of a particle–wall contact: γ is the wall's.
+    pub fn at_wall(&self) -> Mdr {
+        Mdr {
+            surface_energy: self.wall_surface_energy.unwrap_or(self.surface_energy),
+            ..*self
         }
     }
 
@@ -77,6 +90,9 @@ impl Mdr {
         }
         errors.non_negative(format!("{path}.yield_stress"), self.yield_stress);
         errors.non_negative(format!("{path}.surface_energy"), self.surface_energy);
+        if let Some(gamma) = self.wall_surface_energy {
+            errors.non_negative(format!("{path}.wall_surface_energy"), gamma);
+        }
         let psi_b = self.bulk_trigger;
         if !(0.0..=1.0).contains(&psi_b) {
             errors.push(

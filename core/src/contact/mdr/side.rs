@@ -361,6 +361,7 @@ mod tests {
             poisson_ratio: 0.318,
             yield_stress: 8e8,
             surface_energy,
+            wall_surface_energy: None,
             bulk_trigger: 0.5,
             damping: MdrDamping {
                 coefficient: 0.0,

@@ -136,6 +136,7 @@ fn reference() -> Mdr {
         poisson_ratio: 0.3,
         yield_stress: 5e7,
         surface_energy: 0.0,
+        wall_surface_energy: None,
         bulk_trigger: 0.5,
         damping: MdrDamping {
             coefficient: 0.0,
