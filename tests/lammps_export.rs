@@ -4,6 +4,7 @@
 //! unit-test build does not compile the force loop for every law (docs/performance.md).
 
 use tamp::lammps::export::{export, refusals};
+use tamp::scene::materials::MaterialSpec;
 use tamp::scene::{self, Scene};
 fn two_spheres(contact: &str, extra: &str) -> Scene {
     scene::parse(&format!(
@@ -301,7 +302,7 @@ fn mdr_is_pair_granular_mdr_with_its_dashpot_radii_that_change_and_only_region_w
     for line in [
         "atom_style   sphere 1\n".to_string(),
         "newton       off\n".to_string(),
-        format!("pair_coeff   1 1 {model}\n"),
+        format!("pair_coeff   * * {model}\n"),
         "dump         mdr all custom 10 mdr.lammps id d_psi\n".to_string(),
         // Even an axis-aligned fixed plane: LAMMPS's mdr takes region walls only.
         format!(
@@ -345,7 +346,7 @@ fn mdr_walls_take_their_own_surface_energy() {
         )
     };
     assert!(
-        deck.contains(&format!("pair_coeff   1 1 {}\n", model("2e0"))),
+        deck.contains(&format!("pair_coeff   * * {}\n", model("2e0"))),
         "{deck}"
     );
     assert!(
@@ -354,6 +355,51 @@ fn mdr_walls_take_their_own_surface_energy() {
             model("0e0")
         )),
         "{deck}"
+    );
+}
+
+/// LAMMPS's fix granular/mdr takes one mdr model: one `pair_coeff * *`, and a scene whose
+/// particles are of two materials is refused.
+#[test]
+fn mdr_is_one_pair_coeff_for_every_type_and_one_particle_material() {
+    let plane = r#"{"material": "steel", "shape": {"kind": "plane", "point": [0, 0, -0.02], "normal": [0, 0, 1]}}"#;
+    let mut s = mdr_sphere_with_walls(plane, "");
+    let steel = s.materials[0].clone();
+    s.materials.push(MaterialSpec {
+        name: "brass".into(),
+        ..steel
+    });
+    let deck = deck_of(&s, "mdr-types").unwrap();
+    assert_eq!(deck.matches("pair_coeff").count(), 1, "{deck}");
+    s.particles[1].material = "brass".into();
+    let refused: Vec<String> = refusals(&s).into_iter().map(|(p, _)| p).collect();
+    assert_eq!(refused, ["materials"]);
+}
+
+/// A rolling law turns LAMMPS's atom sorting off: the sort swaps pairs in the
+/// neighbour list, and LAMMPS negates a swapped pair's rolling history.
+#[test]
+fn rolling_sds_is_written_with_atom_sorting_off() {
+    let s = two_spheres(
+        r#"{"normal": {"law": "linear", "stiffness": 1e4},
+            "tangential": {"law": "lammps_linear_history", "stiffness": 1e4, "x_gamma_t": 0, "friction": 0.5},
+            "rolling": {"law": "sds", "stiffness": 1.0, "damping": 0.0, "friction": 0.2}, "lever_arm": "lammps"}"#,
+        r#", "rotation": {}"#,
+    );
+    let deck = deck_of(&s, "rolling").unwrap();
+    assert!(
+        deck.contains("atom_modify  map array sort 0 0.0\n"),
+        "{deck}"
+    );
+    assert!(
+        deck.contains("tangential linear_history 1e4 0e0 5e-1 rolling sds 1e0 0e0 2e-1"),
+        "{deck}"
+    );
+    let plain = two_spheres(r#"{"normal": {"law": "linear", "stiffness": 1e4}}"#, "");
+    assert!(
+        deck_of(&plain, "no-rolling")
+            .unwrap()
+            .contains("atom_modify  map array\n")
     );
 }
 

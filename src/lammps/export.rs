@@ -295,6 +295,19 @@ pub fn refusals(scene: &Scene) -> Vec<(String, String)> {
     }
     let hertz = scene.contact.normal.lammps() == Ok(LammpsNormal::HertzMaterial);
     let mdr = scene.contact.normal.mdr().is_some();
+    if mdr
+        && scene
+            .materials
+            .iter()
+            .filter(|m| made_of(scene, &m.name))
+            .count()
+            > 1
+    {
+        refuse(
+            "materials".into(),
+            "LAMMPS's fix granular/mdr takes one mdr model for every atom type (\"Cannot currently define multiple MDR normal models\"): give every particle one material",
+        );
+    }
     for (k, m) in scene.materials.iter().enumerate() {
         if m.rigid {
             // A wall material only; walls are refused below, and a stand-in
@@ -958,10 +971,18 @@ pub fn export(
         true => "sphere 1",
         false => "sphere",
     };
-    let _ = writeln!(
-        deck,
-        "units        si\natom_style   {atom_style}\natom_modify  map array"
-    );
+    let _ = writeln!(deck, "units        si\natom_style   {atom_style}");
+    // LAMMPS 22 Jul 2025 negates every history value of a pair whose two atoms swap
+    // places in the neighbour list, the rolling displacement too, which keeps its sign
+    // under the swap; the spatial sort of atoms (every 1000 steps by default) is what
+    // swaps them in a serial run (docs/models/rolling_sds.md).
+    if scene.contact.rolling.is_some() {
+        deck.push_str(
+            "# atom sorting off: it would swap pairs in the neighbour list, and LAMMPS negates a swapped pair's rolling history\natom_modify  map array sort 0 0.0\n",
+        );
+    } else {
+        deck.push_str("atom_modify  map array\n");
+    }
     let _ = writeln!(deck, "boundary     {}", boundary.join(" "));
     deck.push_str("newton       off\ncomm_modify  vel yes\nread_data    particles.data\n");
     let _ = writeln!(deck, "neighbor     {} bin\nneigh_modify delay 0", g(skin));
@@ -993,8 +1014,17 @@ pub fn export(
             // materials too: LAMMPS would mix μ_ii and μ_jj, and tamp's μ_ij is the
             // scene's (refusals checked that the two materials share E and ν, so E* is
             // mixed as tamp mixes it).
-            let mut pairs: Vec<(usize, usize)> =
-                (0..sim.model().materials.len()).map(|k| (k, k)).collect();
+            // LAMMPS's fix granular/mdr takes one mdr model ("Cannot currently define
+            // multiple MDR normal models"): one line for every type, the particles'.
+            if mdr {
+                let a = kinds[0];
+                let _ = writeln!(deck, "pair_coeff   * * {}", line(a, mu(a, a), false));
+            }
+            let mut pairs: Vec<(usize, usize)> = if mdr {
+                Vec::new()
+            } else {
+                (0..sim.model().materials.len()).map(|k| (k, k)).collect()
+            };
             if has_friction_pairs {
                 for (x, &a) in kinds.iter().enumerate() {
                     pairs.extend(kinds[x + 1..].iter().map(|&b| (a, b)));

@@ -7,16 +7,18 @@
 //! operands are evaluated as tamp evaluates them, and the functions are the C library's
 //! in both codes (evalexpr's `math::sin` is Rust's `f64::sin`, LAMMPS's `sin` is
 //! `sin()` of libm; `^` is `pow` in both). Translated: numbers, `t` (LAMMPS's `time`,
-//! the step times Δt), `+ − × /`, unary minus, `^`, and `math::` sin, cos, tan, asin,
-//! acos, atan, atan2, exp, ln, sqrt, abs and pow. Refused: everything else
-//! (comparisons, `%`, other functions and variables), and a division of two integer
-//! expressions, which evalexpr truncates (`1/2` is 0) and LAMMPS does not.
+//! the step times Δt), `+ − × /`, unary minus, `^`, `math::` sin, cos, tan, asin,
+//! acos, atan, atan2, exp, ln, sqrt, abs and pow, and a motion in stages:
+//! the comparisons `< <= > >=` (true and false in evalexpr, 1 and 0 in LAMMPS) and
+//! `if(c, a, b)` (LAMMPS's `ternary(c,a,b)`). Refused: everything else (`==`, `%`,
+//! other functions and variables), and a division of two integer expressions, which
+//! evalexpr truncates (`1/2` is 0) and LAMMPS does not.
 
 use crate::decimal::g;
 use evalexpr::{DefaultNumericTypes, Node, Operator, Value};
 
 /// The LAMMPS names of the evalexpr functions translated one to one.
-const FUNCTIONS: [(&str, &str); 12] = [
+const FUNCTIONS: [(&str, &str); 13] = [
     ("math::sin", "sin"),
     ("math::cos", "cos"),
     ("math::tan", "tan"),
@@ -29,6 +31,7 @@ const FUNCTIONS: [(&str, &str); 12] = [
     ("math::sqrt", "sqrt"),
     ("math::abs", "abs"),
     ("math::pow", "pow"),
+    ("if", "ternary"),
 ];
 
 /// A translated subexpression: its LAMMPS text and whether evalexpr computes it in
@@ -92,6 +95,10 @@ fn term(node: &Node<DefaultNumericTypes>) -> Result<Term, String> {
         Operator::Mul => binary("*"),
         Operator::Div => binary("/"),
         Operator::Exp => binary("^"),
+        Operator::Lt => binary("<"),
+        Operator::Leq => binary("<="),
+        Operator::Gt => binary(">"),
+        Operator::Geq => binary(">="),
         Operator::Neg => {
             let args = operands()?;
             match args.as_slice() {
@@ -164,6 +171,21 @@ mod tests {
         assert_eq!(formula("math::atan2(t, 2.0)").unwrap(), "atan2(time,2e0)");
     }
 
+    /// A motion in stages: evalexpr's `if` on a comparison is LAMMPS's `ternary` on
+    /// the same comparison, which is 1 or 0 there.
+    #[test]
+    fn stages_become_ternaries_of_comparisons() {
+        assert_eq!(
+            formula("if(t < 0.5, 0.0, if(t <= 1.5, -0.1 * math::sin(2.0 * (t - 0.5)), 0.1))")
+                .unwrap(),
+            "ternary((time)<(5e-1),0e0,ternary((time)<=(1.5e0),(-(1e-1))*(sin((2e0)*((time)-(5e-1)))),1e-1))"
+        );
+        assert_eq!(
+            formula("if(t >= 1.0, 1.0, 0.0)").unwrap(),
+            "ternary((time)>=(1e0),1e0,0e0)"
+        );
+    }
+
     #[test]
     fn what_lammps_would_compute_differently_is_refused() {
         assert!(
@@ -172,7 +194,7 @@ mod tests {
                 .contains("division of two integers")
         );
         assert!(formula("math::cbrt(t)").unwrap_err().contains("math::cbrt"));
-        assert!(formula("if(t > 1.0, t, 0.0)").is_err());
+        assert!(formula("if(t == 1.0, t, 0.0)").is_err());
         assert!(formula("t % 2.0").is_err());
     }
 }
