@@ -15,7 +15,6 @@
 
 use crate::compare::{read_trajectory, read_walls};
 use crate::error::{Result, TampError};
-use crate::verify::engine::peer_record::deck_sha256;
 use crate::verify::recording::RecordSpec;
 use crate::verify::{CaseContext, Measured};
 use serde::Deserialize;
@@ -29,22 +28,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let recorded = ctx.reference_data_dir().join("lammps").join(&ctx.spec.name);
 
     // The record is of this scene's deck as tamp exports it now.
-    let fresh = ctx.report_dir.join(format!("{}_deck", ctx.spec.name));
-    if fresh.exists() {
-        std::fs::remove_dir_all(&fresh)
-            .map_err(|e| TampError::io(format!("clearing {}", fresh.display()), e))?;
-    }
-    crate::lammps::export::export(&scene, "", &fresh, None)?;
-    let deck = recorded.join("deck");
-    if deck_sha256(&fresh)? != deck_sha256(&deck)? {
-        return Err(TampError::Other(format!(
-            "{}: the recorded deck is not the one tamp exports from {} now ({}); re-record it with {}/regenerate.sh",
-            deck.display(),
-            ctx.spec.scene.as_deref().unwrap_or_default(),
-            fresh.display(),
-            recorded.display()
-        )));
-    }
+    super::recorded_deck::check(ctx, &scene, &recorded)?;
 
     let theirs = read_trajectory(&recorded.join("trajectory.csv"))?;
     let their_walls = read_walls(&recorded.join("walls.csv"))?;

@@ -22,6 +22,7 @@ mod hollomon_constants;
 mod kuwabara_kono_restitution;
 mod lammps_die_press_cycle;
 mod lammps_mdr_contacts;
+mod lammps_mdr_tableting;
 mod lammps_mdr_triaxial;
 mod linear_damped_collision;
 mod linear_restitution;
@@ -33,6 +34,7 @@ mod no_pull_restitution;
 mod oblique_impact;
 mod one_material;
 pub mod probe;
+mod recorded_deck;
 mod restitution_laws;
 mod rojek_models;
 mod rolling_resistance;
@@ -128,6 +130,7 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ),
     ("lammps_die_press_cycle", lammps_die_press_cycle::run),
     ("lammps_mdr_contacts", lammps_mdr_contacts::run),
+    ("lammps_mdr_tableting", lammps_mdr_tableting::run),
     ("lammps_mdr_triaxial", lammps_mdr_triaxial::run),
     ("lammps_settled_packing", settled_packing::lammps),
 ];
