@@ -6,18 +6,10 @@ use super::accuracy_cost::{Row, observed_order};
 use super::stable_alpha::StableRow;
 use crate::error::{Result, TampError};
 use crate::plot::{Panel, Series, write_svg};
+use crate::verify::read_csv;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::Path;
-
-fn read_csv<T: serde::de::DeserializeOwned>(path: &Path) -> Result<Vec<T>> {
-    let bad = |e: String| TampError::Other(format!("{}: {e}", path.display()));
-    let mut reader = csv::Reader::from_path(path).map_err(|e| bad(e.to_string()))?;
-    reader
-        .deserialize()
-        .collect::<std::result::Result<Vec<T>, _>>()
-        .map_err(|e| bad(e.to_string()))
-}
 
 /// One run of a case: its rows (one per quantity).
 struct Run<'a> {

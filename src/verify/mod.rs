@@ -1051,6 +1051,16 @@ pub fn run_cases(
     Ok(if failed == 0 { 0 } else { 1 })
 }
 
+/// The rows of a CSV file with a header, each read as a `T`; an error names the file.
+pub fn read_csv<T: serde::de::DeserializeOwned>(path: &Path) -> Result<Vec<T>> {
+    let bad = |e: String| TampError::Other(format!("{}: {e}", path.display()));
+    let mut reader = csv::Reader::from_path(path).map_err(|e| bad(e.to_string()))?;
+    reader
+        .deserialize()
+        .collect::<std::result::Result<Vec<T>, _>>()
+        .map_err(|e| bad(e.to_string()))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -109,11 +109,7 @@ pub fn run(ctx: &CaseContext) -> Result<Vec<Measured>> {
 
     let path = recorded.join("final.csv");
     let bad = |what: String| TampError::Other(format!("{}: {what}", path.display()));
-    let rows: Vec<FinalRow> = csv::Reader::from_path(&path)
-        .map_err(|e| bad(e.to_string()))?
-        .deserialize()
-        .collect::<std::result::Result<_, _>>()
-        .map_err(|e| bad(e.to_string()))?;
+    let rows: Vec<FinalRow> = crate::verify::read_csv(&path)?;
     let last = ours
         .frames
         .last()

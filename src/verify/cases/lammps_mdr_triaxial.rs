@@ -133,11 +133,7 @@ struct FreeSurface {
 /// scene stepped here: an engine's recording carries no MDR state).
 fn free_surface_difference(scene: &crate::scene::Scene, path: &std::path::Path) -> Result<f64> {
     let bad = |what: String| TampError::Other(format!("{}: {what}", path.display()));
-    let mut rows: Vec<FreeSurface> = csv::Reader::from_path(path)
-        .map_err(|e| bad(e.to_string()))?
-        .deserialize()
-        .collect::<std::result::Result<_, _>>()
-        .map_err(|e| bad(e.to_string()))?;
+    let mut rows: Vec<FreeSurface> = crate::verify::read_csv(path)?;
     rows.sort_by_key(|r| (r.step, r.id));
     let mut sim = crate::scene::build(scene)?.sim;
     let mut largest = 0.0_f64;

@@ -31,11 +31,7 @@ pub struct MdrRecord {
 pub fn load(reference_data: &Path) -> Result<Vec<MdrRecord>> {
     let path = reference_data.join("lammps/nial_die_compaction_mdr/results.csv");
     let bad = |what: String| TampError::Other(format!("{}: {what}", path.display()));
-    let records: Vec<MdrRecord> = csv::Reader::from_path(&path)
-        .map_err(|e| bad(e.to_string()))?
-        .deserialize()
-        .collect::<std::result::Result<_, _>>()
-        .map_err(|e| bad(e.to_string()))?;
+    let records: Vec<MdrRecord> = crate::verify::read_csv(&path)?;
     if records.len() < 2 {
         return Err(bad("the recorded run has fewer than two records".into()));
     }
