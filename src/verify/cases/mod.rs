@@ -22,6 +22,7 @@ mod hollomon_constants;
 mod kuwabara_kono_restitution;
 mod lammps_die_press_cycle;
 mod lammps_mdr_contacts;
+mod lammps_mdr_deep_pair;
 mod lammps_mdr_tableting;
 mod lammps_mdr_triaxial;
 mod linear_damped_collision;
@@ -130,6 +131,7 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ),
     ("lammps_die_press_cycle", lammps_die_press_cycle::run),
     ("lammps_mdr_contacts", lammps_mdr_contacts::run),
+    ("lammps_mdr_deep_pair", lammps_mdr_deep_pair::run),
     ("lammps_mdr_tableting", lammps_mdr_tableting::run),
     ("lammps_mdr_triaxial", lammps_mdr_triaxial::run),
     ("lammps_settled_packing", settled_packing::lammps),
