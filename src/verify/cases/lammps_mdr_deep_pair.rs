@@ -5,10 +5,10 @@
 //! A 1 µm sphere is pressed by a 3 µm one to a pair overlap of 1.3 µm. At the
 //! intersection plane the small sphere's cap height would be
 //! δ_max (2R − δ_max)/(2(r + R − δ_max)) = 1.13 r, so its side passes 0.75 r (where a
-//! version of LAMMPS's source caps the force's split) and 0.95 r (where LAMMPS caps the
-//! mean surface displacement's). With the bulk trigger at 0.99 the bulk response acts,
-//! so any difference between the two splits enters the force as a bulk displacement
-//! that grows at every step (`contact::mdr::flat`).
+//! version of LAMMPS's source caps the force's split) and 0.95 r (where LAMMPS 22 Jul
+//! 2025 caps both of its splits). With the bulk trigger at 0.99 the bulk response acts,
+//! so a difference between the force's split and the mean surface displacement's would
+//! enter the force through the bulk displacement (`contact::mdr::flat`).
 //!
 //! Checked: the force on the small sphere at every recorded step against LAMMPS's, and,
 //! once both stand still, that the force does not change, in tamp's run and in

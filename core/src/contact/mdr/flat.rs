@@ -101,6 +101,7 @@ mod tests {
         let [d0, d1] = flat.displacement_sides(0.1, ri, rj);
         assert!((d0 - hi).abs() < 1e-15 && (d1 - hj).abs() < 1e-15);
     }
+
     /// Past the cap the force's split and the mean surface displacement's agree to
     /// round-off, so a pair that does not move adds no surface displacement: a small
     /// sphere whose share of the overlap would be 0.83 and 1.13 of its radius.
@@ -125,7 +126,7 @@ mod tests {
                     "{force:?} {shown:?}"
                 );
             }
-            assert!((force[1] - (uncapped).min(OVERLAP_LIMIT * r)).abs() < 1e-15 * dmax);
+            assert!((force[1] - uncapped.min(OVERLAP_LIMIT * r)).abs() < 1e-15 * dmax);
         }
     }
 }
