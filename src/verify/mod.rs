@@ -428,14 +428,12 @@ impl<'a> CaseContext<'a> {
             .join(peer)
             .join(&self.spec.name)
             .join("results.csv");
-        let bad = |what: String| TampError::Other(format!("{}: {what}", path.display()));
-        let mut reader = csv::Reader::from_path(&path).map_err(|e| bad(e.to_string()))?;
-        let rows = reader
-            .deserialize()
-            .collect::<std::result::Result<Vec<T>, _>>()
-            .map_err(|e| bad(e.to_string()))?;
+        let rows = read_csv(&path)?;
         if rows.is_empty() {
-            return Err(bad(format!("no {peer} runs recorded")));
+            return Err(TampError::Other(format!(
+                "{}: no {peer} runs recorded",
+                path.display()
+            )));
         }
         Ok(rows)
     }
