@@ -57,23 +57,23 @@ use std::path::Path;
 /// One record of the peer's replay (regenerate.sh joins the thermo output of the
 /// deck and `import-liggghts-dump --die-stroke`'s die.csv).
 #[derive(Debug, Deserialize)]
-struct Row {
+pub(super) struct Row {
     /// The pressing's label, in a case that presses more than one (absent: the
     /// case's one pressing).
     #[serde(default)]
-    pressing: String,
-    seed: u64,
-    record: usize,
-    time: f64,
-    height: f64,
-    h0: f64,
-    dt: f64,
-    steps_per_record: u64,
-    tamp_pressure: f64,
-    punch_pressure: f64,
-    floor_pressure: f64,
-    density_specimen: f64,
-    density_rve: f64,
+    pub(super) pressing: String,
+    pub(super) seed: u64,
+    pub(super) record: usize,
+    pub(super) time: f64,
+    pub(super) height: f64,
+    pub(super) h0: f64,
+    pub(super) dt: f64,
+    pub(super) steps_per_record: u64,
+    pub(super) tamp_pressure: f64,
+    pub(super) punch_pressure: f64,
+    pub(super) floor_pressure: f64,
+    pub(super) density_specimen: f64,
+    pub(super) density_rve: f64,
 }
 
 /// The radius of each body's material (docs/measures.md): the radius it starts the
@@ -93,7 +93,11 @@ const PRESSURES: [f64; 3] = [10e6, 25e6, 50e6];
 
 /// `column` where the punch pressure first reaches p, linear between records;
 /// beyond the last record, extrapolated from the last two.
-fn at_pressure(records: &[ReplayRecord], p: f64, column: fn(&ReplayRecord) -> f64) -> f64 {
+pub(super) fn at_pressure(
+    records: &[ReplayRecord],
+    p: f64,
+    column: fn(&ReplayRecord) -> f64,
+) -> f64 {
     let between = |a: &ReplayRecord, b: &ReplayRecord| {
         let s = (p - a.punch_pressure) / (b.punch_pressure - a.punch_pressure);
         column(a) + s * (column(b) - column(a))
@@ -431,7 +435,7 @@ fn write_plot(
 }
 
 /// The stroke of one seed's rows (records 0, 1, 2, … in order).
-fn stroke_of(rows: &[&Row]) -> Stroke {
+pub(super) fn stroke_of(rows: &[&Row]) -> Stroke {
     Stroke {
         h0: rows[0].h0,
         interval: rows[1].time - rows[0].time,
@@ -447,7 +451,7 @@ fn stroke_of(rows: &[&Row]) -> Stroke {
 /// tamp would export now: written from this scene file (its sha256 in the deck's
 /// header) and along the stroke results.csv holds and tamp replays. The specimen's
 /// H₀ is checked by the caller.
-fn recorded_deck_is_current(dir: &Path, sha: &str, stroke: &Stroke) -> Result<()> {
+pub(super) fn recorded_deck_is_current(dir: &Path, sha: &str, stroke: &Stroke) -> Result<()> {
     let read = |file: &str| {
         let path = dir.join(file);
         std::fs::read_to_string(&path)

@@ -30,6 +30,7 @@ mod linear_restitution;
 mod mdr_curve;
 mod momentum_conservation;
 mod nial_die_compaction;
+mod nial_die_compaction_dense;
 mod nial_die_compaction_small;
 mod no_pull_restitution;
 mod oblique_impact;
@@ -101,6 +102,7 @@ pub const CASES: &[(&str, CaseFn)] = &[
     ("nial_die_compaction_small", nial_die_compaction_small::run),
     ("die_press_cycle", die_press_cycle::run),
     ("nial_die_compaction", nial_die_compaction::full),
+    ("nial_die_compaction_dense", nial_die_compaction_dense::full),
     ("scott_random_packing_quick", scott_random_packing::run),
     ("scott_random_packing", scott_random_packing::run),
     ("density_segregation", density_segregation::run),

@@ -44,7 +44,7 @@ const BALANCE_FROM: f64 = 0.1;
 
 /// The normal law of one pressing.
 #[derive(Clone, Copy, Debug, PartialEq)]
-enum Law {
+pub(super) enum Law {
     /// The scene's Hertz–Mindlin–Deresiewicz.
     Hertz,
     /// Storåkers with Hollomon m and σ₀ (Pa).
@@ -55,11 +55,11 @@ enum Law {
 
 /// A contact law of one pressing.
 #[derive(Clone, Copy, Debug)]
-struct Model {
-    label: &'static str,
-    law: Law,
+pub(super) struct Model {
+    pub(super) label: &'static str,
+    pub(super) law: Law,
     /// Friction between particles (the die wall keeps the scene's 0.02).
-    friction: f64,
+    pub(super) friction: f64,
 }
 
 impl Model {
@@ -70,7 +70,7 @@ impl Model {
     }
 }
 
-const HERTZ: Model = Model {
+pub(super) const HERTZ: Model = Model {
     label: "hertz",
     law: Law::Hertz,
     friction: 0.0,
@@ -110,7 +110,7 @@ const CYCLE_EJECT: EjectSpec = EjectSpec {
 };
 
 /// Rojek §5: the three Hollomon pairs (m, σ₀).
-const STORAKERS: [(f64, f64, &str); 3] = [
+pub(super) const STORAKERS: [(f64, f64, &str); 3] = [
     (0.0, 800e6, "storakers_m0"),
     (0.1, 1375e6, "storakers_m0.1"),
     (0.2, 2363e6, "storakers_m0.2"),
@@ -172,7 +172,7 @@ fn full_models() -> Vec<Model> {
 /// middle of the 0.5–5 Olsson & Larsson suggest, since §5 does not state it. MDR
 /// keeps the Mindlin–Deresiewicz friction (only the walls have any) and brings its
 /// own dashpot.
-fn with_model(scene: &DieCompactionFile, model: &Model) -> Result<DieCompactionFile> {
+pub(super) fn with_model(scene: &DieCompactionFile, model: &Model) -> Result<DieCompactionFile> {
     let mut s = scene.clone();
     let tangential = s.scene.contact.tangential.as_mut().ok_or_else(|| {
         TampError::Other("the NiAl scene must have a tangential law (wall friction)".into())
@@ -196,11 +196,19 @@ fn with_model(scene: &DieCompactionFile, model: &Model) -> Result<DieCompactionF
             });
         }
     }
+    s.validate()?;
+    Ok(s)
+}
+
+/// The study's pressing of `model`: the law, and the press cycle for the models
+/// that go through it.
+fn study_pressing(scene: &DieCompactionFile, model: &Model) -> Result<DieCompactionFile> {
+    let mut s = with_model(scene, model)?;
     if model.cycle() {
         s.die_compaction.unload = Some(CYCLE_UNLOAD);
         s.die_compaction.eject = Some(CYCLE_EJECT);
+        s.validate()?;
     }
-    s.validate()?;
     Ok(s)
 }
 
@@ -211,37 +219,35 @@ const CHECKPOINT_EVERY: u64 = 200_000;
 /// A finished pressing, with its press cycle when it has one, and the wall time it
 /// took (over all sessions it ran in).
 #[derive(Serialize, Deserialize)]
-struct Done {
-    pressing: Pressing,
+pub(super) struct Done {
+    pub(super) pressing: Pressing,
     #[serde(default)]
     cycle: Option<Cycle>,
     wall_s: f64,
 }
 
-/// Press one specimen under several models, one per core at a time, reusing
-/// and checkpointing work in `store`.
-fn press_all(
+/// Press one specimen in each of the labelled scenes, one per core at a time, reusing
+/// and checkpointing work in `store` under each label.
+pub(super) fn press_all(
     ctx: &CaseContext,
-    scene: &DieCompactionFile,
     specimen: &Specimen,
-    models: &[Model],
+    pressings: &[(&str, DieCompactionFile)],
     store: &Store,
 ) -> Result<Vec<Done>> {
-    let press_one = |model: &Model| -> Result<Done> {
-        let s = with_model(scene, model)?;
-        let key = key_of(&s);
-        let done_file = format!("{}.done.json", model.label);
+    let press_one = |(label, s): &(&str, DieCompactionFile)| -> Result<Done> {
+        let key = key_of(s);
+        let done_file = format!("{label}.done.json");
         if let Some(done) = store.load::<Done>(&done_file, &key) {
-            eprintln!("nial_die_compaction: pressing '{}' reused", model.label);
+            eprintln!("{}: pressing '{label}' reused", ctx.spec.name);
             return Ok(done);
         }
-        let checkpoint_file = format!("{}.checkpoint.json", model.label);
+        let checkpoint_file = format!("{label}.checkpoint.json");
         let resume: Option<(PressState, f64)> = store.load(&checkpoint_file, &key);
         let (resume, earlier_wall) = match resume {
             Some((state, wall)) => {
                 eprintln!(
-                    "nial_die_compaction: pressing '{}' resumed at step {}",
-                    model.label, state.pressing.steps
+                    "{}: pressing '{label}' resumed at step {}",
+                    ctx.spec.name, state.pressing.steps
                 );
                 (Some(state), wall)
             }
@@ -253,14 +259,12 @@ fn press_all(
             store.save(&checkpoint_file, &key, &(state, wall))
         };
         let (pressing, sim) =
-            die_compaction::press(&s, specimen, false, resume, CHECKPOINT_EVERY, &mut save)?;
+            die_compaction::press(s, specimen, false, resume, CHECKPOINT_EVERY, &mut save)?;
         // An interrupted cycle starts again from the checkpoint at the peak.
         let cycle = match s.die_compaction.unload {
             Some(_) => {
-                let fixed = die_compaction::press_scene(&s, specimen)?.time_step.fixed;
-                Some(press_cycle::run(
-                    &s, specimen, &pressing, sim, fixed, false,
-                )?)
+                let fixed = die_compaction::press_scene(s, specimen)?.time_step.fixed;
+                Some(press_cycle::run(s, specimen, &pressing, sim, fixed, false)?)
             }
             None => None,
         };
@@ -271,19 +275,19 @@ fn press_all(
         };
         store.save(&done_file, &key, &done)?;
         eprintln!(
-            "nial_die_compaction: pressing '{}' done, {:.0} s",
-            model.label, done.wall_s
+            "{}: pressing '{label}' done, {:.0} s",
+            ctx.spec.name, done.wall_s
         );
         Ok(done)
     };
-    ctx.map(models, press_one)
+    ctx.map(pressings, press_one)
         .into_iter()
-        .zip(models)
-        .map(|(r, m)| r.map_err(|e| TampError::Other(format!("pressing '{}': {e}", m.label))))
+        .zip(pressings)
+        .map(|(r, (label, _))| r.map_err(|e| TampError::Other(format!("pressing '{label}': {e}"))))
         .collect()
 }
 
-fn at(pressing: &Pressing, p: f64, column: fn(&PressRecord) -> f64) -> Result<f64> {
+pub(super) fn at(pressing: &Pressing, p: f64, column: fn(&PressRecord) -> f64) -> Result<f64> {
     pressing
         .at_pressure(p, column)
         .or_else(|| {
@@ -372,7 +376,11 @@ pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {
     );
     let models = full_models();
     let (mut pressings, mut walls, mut cycled) = (Vec::new(), Vec::new(), Vec::new());
-    for d in press_all(ctx, &scene, &specimen, &models, &store)? {
+    let scenes = models
+        .iter()
+        .map(|m| Ok((m.label, study_pressing(&scene, m)?)))
+        .collect::<Result<Vec<_>>>()?;
+    for d in press_all(ctx, &specimen, &scenes, &store)? {
         pressings.push(d.pressing);
         walls.push(d.wall_s);
         cycled.push(d.cycle);
