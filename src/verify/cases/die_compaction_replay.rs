@@ -76,6 +76,36 @@ pub(super) struct Row {
     pub(super) density_rve: f64,
 }
 
+impl Row {
+    /// The row as a record of the replay.
+    pub(super) fn record(&self) -> ReplayRecord {
+        ReplayRecord {
+            time: self.time,
+            height: self.height,
+            punch_pressure: self.punch_pressure,
+            floor_pressure: self.floor_pressure,
+            density_specimen: self.density_specimen,
+            density_rve: self.density_rve,
+        }
+    }
+}
+
+/// The rows of one seed in the order of their records, which must run 0, 1, 2, … with
+/// none missing.
+pub(super) fn seed_rows<'a>(
+    rows: impl Iterator<Item = &'a Row>,
+    seed: u64,
+) -> Result<Vec<&'a Row>> {
+    let mut mine: Vec<&Row> = rows.filter(|r| r.seed == seed).collect();
+    mine.sort_by_key(|r| r.record);
+    if mine.len() < 3 || mine.iter().enumerate().any(|(k, r)| r.record != k) {
+        return Err(TampError::Other(format!(
+            "results.csv: seed {seed} needs records 0, 1, 2, … in full"
+        )));
+    }
+    Ok(mine)
+}
+
 /// The radius of each body's material (docs/measures.md): the radius it starts the
 /// replay with, which MDR's apparent radius outgrows as the bed is pressed and a
 /// pairwise law keeps.
@@ -307,28 +337,12 @@ fn recorded_runs(
     seeds.dedup();
     let mut out = Vec::new();
     for seed in seeds {
-        let mut mine: Vec<&Row> = rows.iter().copied().filter(|r| r.seed == seed).collect();
-        mine.sort_by_key(|r| r.record);
-        if mine.len() < 3 || mine.iter().enumerate().any(|(k, r)| r.record != k) {
-            return Err(TampError::Other(format!(
-                "results.csv: seed {seed} needs records 0, 1, 2, … in full"
-            )));
-        }
+        let mine = seed_rows(rows.iter().copied(), seed)?;
         let stroke = stroke_of(&mine);
         recorded_deck_is_current(&decks.join(format!("seed{seed}")), &sha, &stroke)?;
         let mut scene = base.clone();
         scene.scene.seed = seed;
-        let theirs: Vec<ReplayRecord> = mine
-            .iter()
-            .map(|r| ReplayRecord {
-                time: r.time,
-                height: r.height,
-                punch_pressure: r.punch_pressure,
-                floor_pressure: r.floor_pressure,
-                density_specimen: r.density_specimen,
-                density_rve: r.density_rve,
-            })
-            .collect();
+        let theirs: Vec<ReplayRecord> = mine.iter().map(|r| r.record()).collect();
         out.push(RecordedRun {
             label: pressing.label.clone(),
             seed,

@@ -6,9 +6,10 @@
 //! particles push back 50 MPa (reference_data/lammps/nial_die_compaction_mdr).
 //!
 //! It is drawn beside tamp's laws in the plots of `nial_die_compaction` and
-//! `liggghts_die_compaction`. It is a comparison of models, not a check: no quantity
-//! is judged against it; reference_data/nial/README.md says where the laws agree
-//! and why.
+//! `liggghts_die_compaction`, where it compares models, and it is the reference of
+//! tamp's own MDR pressing of the same specimen at 50 MPa
+//! (`density_specimen_at_50MPa_mdr_minus_lammps`); reference_data/nial/README.md
+//! says where the laws agree and why.
 
 use crate::error::{Result, TampError};
 use crate::plot::Series;

@@ -24,7 +24,9 @@
 //! m = 0 stops where a contact's overlap reaches half the smaller radius (the scene's
 //! `stability.max_overlap_fraction`; on the 300-particle specimen at 444 MPa).
 
-use super::die_compaction_replay::{Row, at_pressure, recorded_deck_is_current, stroke_of};
+use super::die_compaction_replay::{
+    Row, at_pressure, recorded_deck_is_current, seed_rows, stroke_of,
+};
 use super::nial_die_compaction::{
     HERTZ, Law, Model, STORAKERS, at, mpa, poured_point, press_all, with_model, write_curves_csv,
 };
@@ -80,14 +82,7 @@ pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {
     // LAMMPS's replay of the stroke tamp pressed, recorded for this specimen and scene
     // (read after the pressings, which the store keeps should the recording be stale).
     let rows: Vec<Row> = ctx.peer_results("lammps")?;
-    let mut rows: Vec<&Row> = rows.iter().filter(|r| r.seed == scene.scene.seed).collect();
-    rows.sort_by_key(|r| r.record);
-    if rows.len() < 3 || rows.iter().enumerate().any(|(k, r)| r.record != k) {
-        return Err(TampError::Other(format!(
-            "results.csv: seed {} needs records 0, 1, 2, … in full",
-            scene.scene.seed
-        )));
-    }
+    let rows = seed_rows(rows.iter(), scene.scene.seed)?;
     let stroke = stroke_of(&rows);
     let decks = ctx
         .reference_data_dir()
@@ -102,17 +97,7 @@ pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {
             stroke.h0, specimen.h0
         )));
     }
-    let lammps: Vec<ReplayRecord> = rows
-        .iter()
-        .map(|r| ReplayRecord {
-            time: r.time,
-            height: r.height,
-            punch_pressure: r.punch_pressure,
-            floor_pressure: r.floor_pressure,
-            density_specimen: r.density_specimen,
-            density_rve: r.density_rve,
-        })
-        .collect();
+    let lammps: Vec<ReplayRecord> = rows.iter().map(|r| r.record()).collect();
 
     let (mdr, hertz, storakers) = (&pressed[0], &pressed[1], &pressed[2]);
     let tamp: Vec<ReplayRecord> = mdr.records.iter().map(replay_record).collect();
