@@ -287,6 +287,30 @@ pub(super) fn press_all(
         .collect()
 }
 
+/// The study's specimen, filled and flattened once per scene and kept in the store.
+pub(super) fn stored_specimen(store: &Store, scene: &DieCompactionFile) -> Result<Specimen> {
+    store.cached("specimen.json", &key_of(scene), || {
+        die_compaction::prepare(scene, false)
+    })
+}
+
+/// The particles' volume: with every particle inside the die, the exact solid volume
+/// of the specimen is this less the caps pressed through the walls.
+pub(super) fn solid_volume(specimen: &Specimen) -> f64 {
+    specimen
+        .particles
+        .iter()
+        .map(|p| 4.0 / 3.0 * PI * p.radius.powi(3))
+        .sum()
+}
+
+/// Volume conservation: the specimen's relative density at a record, from its solid
+/// volume and the die's volume at the record's height.
+pub(super) fn solid_balance(specimen: &Specimen, die_diameter: f64, r: &PressRecord) -> f64 {
+    let die_area = PI * (0.5 * die_diameter).powi(2);
+    (solid_volume(specimen) - r.wall_lens_volume) / (die_area * r.height)
+}
+
 pub(super) fn at(pressing: &Pressing, p: f64, column: fn(&PressRecord) -> f64) -> Result<f64> {
     pressing
         .at_pressure(p, column)
@@ -367,9 +391,7 @@ pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let dc = &scene.die_compaction;
     // Not quiet: this case runs for most of an hour, and its log says how far it got.
     let store = ctx.store()?;
-    let specimen = store.cached("specimen.json", &key_of(&scene), || {
-        die_compaction::prepare(&scene, false)
-    })?;
+    let specimen = stored_specimen(&store, &scene)?;
     eprintln!(
         "nial_die_compaction: specimen H0 = {:e} m, density {:.4}, RVE {:.4}",
         specimen.h0, specimen.density_specimen, specimen.density_rve
@@ -490,15 +512,7 @@ pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {
         )?;
     }
 
-    // Volume conservation: with every particle inside the die, the exact solid
-    // volume of the specimen is the particles' volume less the caps pressed through
-    // the walls.
-    let solid: f64 = specimen
-        .particles
-        .iter()
-        .map(|p| 4.0 / 3.0 * PI * p.radius.powi(3))
-        .sum();
-    let die_area = PI * (0.5 * dc.die_diameter).powi(2);
+    let solid = solid_volume(&specimen);
     let rve0 = specimen.density_rve;
     let first = hertz.records.first().expect("records");
     let ten = 10e6;
@@ -508,7 +522,7 @@ pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {
         Measured::new(
             "density_specimen_at_50MPa_hertz",
             at(hertz, p_max, |r| r.density_specimen)?,
-            (solid - last.wall_lens_volume) / (die_area * last.height),
+            solid_balance(&specimen, dc.die_diameter, last),
         ),
         Measured::new(
             "height_reduction_at_50MPa_hertz",
@@ -546,7 +560,7 @@ pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {
         Measured::new(
             "density_specimen_at_50MPa_mdr",
             mdr_density,
-            (solid - mdr_last.wall_lens_volume) / (die_area * mdr_last.height),
+            solid_balance(&specimen, dc.die_diameter, mdr_last),
         ),
         Measured::new(
             "density_specimen_at_50MPa_mdr_minus_lammps",

@@ -28,17 +28,16 @@ use super::die_compaction_replay::{
     Row, at_pressure, recorded_deck_is_current, seed_rows, stroke_of,
 };
 use super::nial_die_compaction::{
-    HERTZ, Law, Model, STORAKERS, at, mpa, poured_point, press_all, with_model, write_curves_csv,
+    HERTZ, Law, Model, STORAKERS, at, mpa, poured_point, press_all, solid_balance, stored_specimen,
+    with_model, write_curves_csv,
 };
 use crate::error::{Result, TampError};
 use crate::plot::{Panel, Series, write_svg};
 use crate::process::die_compaction::{self, PressRecord};
 use crate::process::die_compaction_file::DieCompactionFile;
 use crate::process::die_replay::ReplayRecord;
-use crate::verify::store::key_of;
 use crate::verify::{CaseContext, Measured};
 use serde::Deserialize;
-use std::f64::consts::PI;
 
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -60,9 +59,7 @@ pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let scene = ctx.die_compaction()?;
     let dc = &scene.die_compaction;
     let store = ctx.store()?;
-    let specimen = store.cached("specimen.json", &key_of(&scene), || {
-        die_compaction::prepare(&scene, false)
-    })?;
+    let specimen = stored_specimen(&store, &scene)?;
 
     let pairwise = pairwise_scene(ctx, &scene, &parameters)?;
     let storakers_m0 = Model {
@@ -103,17 +100,11 @@ pub fn full(ctx: &CaseContext) -> Result<Vec<Measured>> {
     let tamp: Vec<ReplayRecord> = mdr.records.iter().map(replay_record).collect();
     write_plot(ctx, &labels, &pressed, &lammps)?;
 
-    let solid: f64 = specimen
-        .particles
-        .iter()
-        .map(|p| 4.0 / 3.0 * PI * p.radius.powi(3))
-        .sum();
-    let die_area = PI * (0.5 * dc.die_diameter).powi(2);
     let last = mdr.records.last().expect("records");
     let mut measured = vec![Measured::new(
         "density_specimen_600mpa_solid_balance",
         at(mdr, dc.press.pressure, |r| r.density_specimen)?,
-        (solid - last.wall_lens_volume) / (die_area * last.height),
+        solid_balance(&specimen, dc.die_diameter, last),
     )];
     for p in PRESSURES {
         measured.push(Measured::new(
