@@ -1,6 +1,8 @@
 //! `tamp crosscheck [--live] [--tier quick|full] [--peer P] [--case C]`: the peer-code
 //! cross-check cases, the verification cases named `liggghts_*` (LIGGGHTS 3.8) and
-//! `lammps_*` (LAMMPS 22 Jul 2025, `.ci/install-lammps`).
+//! `lammps_*` (LAMMPS 22 Jul 2025, `.ci/install-lammps`), and any other case that keeps
+//! a peer's run of it in `reference_data/<peer>/<case>/regenerate.sh` (a study that
+//! also compares against a peer, such as `nial_die_compaction_dense`).
 //!
 //! Without `--live` they run against the results recorded in
 //! `reference_data/<peer>/<case>/`, exactly as `tamp verify` runs them. With
@@ -160,11 +162,16 @@ pub fn run_cli(
         peers
     };
     let specs = verify::load_specs(&verify::verification_dir())?;
+    let recorded_root = reference_root();
     let peer_of = |name: &str| {
-        peers
-            .iter()
-            .copied()
-            .find(|p| name.starts_with(&format!("{}_", p.name())))
+        peers.iter().copied().find(|p| {
+            name.starts_with(&format!("{}_", p.name()))
+                || recorded_root
+                    .join(p.name())
+                    .join(name)
+                    .join("regenerate.sh")
+                    .is_file()
+        })
     };
     let names: Vec<String> = specs
         .iter()
@@ -198,7 +205,6 @@ pub fn run_cli(
             peer.check_installed()?;
         }
     }
-    let recorded_root = reference_root();
     let live_root = std::path::absolute(report_dir.join("liggghts_live"))
         .map_err(|e| TampError::io("resolving the report directory", e))?;
     let tamp =
