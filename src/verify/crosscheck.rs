@@ -103,7 +103,7 @@ fn recorded_csv_files(dir: &Path) -> Result<Vec<std::ffi::OsString>> {
     Ok(files)
 }
 
-/// A peer code: its cases are named `<name>_*` and recorded in `reference_data/<name>/`.
+/// A peer code: its cases are recorded in `reference_data/<name>/`, and most are named `<name>_*`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum Peer {
     Liggghts,
@@ -149,6 +149,19 @@ pub fn lammps_executable() -> PathBuf {
     }
 }
 
+/// The peer a case cross-checks, of `peers`: the one it is named for, or the one whose
+/// run of it is kept in `recorded_root/<peer>/<case>/regenerate.sh`.
+fn peer_of(name: &str, peers: &[Peer], recorded_root: &Path) -> Option<Peer> {
+    peers.iter().copied().find(|p| {
+        name.starts_with(&format!("{}_", p.name()))
+            || recorded_root
+                .join(p.name())
+                .join(name)
+                .join("regenerate.sh")
+                .is_file()
+    })
+}
+
 pub fn run_cli(
     live: bool,
     tier: Tier,
@@ -163,16 +176,7 @@ pub fn run_cli(
     };
     let specs = verify::load_specs(&verify::verification_dir())?;
     let recorded_root = reference_root();
-    let peer_of = |name: &str| {
-        peers.iter().copied().find(|p| {
-            name.starts_with(&format!("{}_", p.name()))
-                || recorded_root
-                    .join(p.name())
-                    .join(name)
-                    .join("regenerate.sh")
-                    .is_file()
-        })
-    };
+    let peer_of = |name: &str| peer_of(name, peers, &recorded_root);
     let names: Vec<String> = specs
         .iter()
         .filter(|s| {
@@ -332,5 +336,24 @@ fn run_script(recorded: &Path, out: &Path, tamp: &Path) -> Result<()> {
             script.display(),
             log_path.display()
         )))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_study_with_a_peer_run_is_a_cross_check_case() {
+        let root = reference_root();
+        let of = |name| peer_of(name, &Peer::ALL, &root);
+        assert_eq!(of("lammps_mdr_triaxial"), Some(Peer::Lammps));
+        assert_eq!(of("liggghts_die_compaction_small"), Some(Peer::Liggghts));
+        assert_eq!(of("nial_die_compaction_dense"), Some(Peer::Lammps));
+        assert_eq!(of("nial_die_compaction"), None);
+        assert_eq!(
+            peer_of("nial_die_compaction_dense", &[Peer::Liggghts], &root),
+            None
+        );
     }
 }
