@@ -220,6 +220,7 @@ fn timed(
             variant,
             &verify::engine::Engine::Tamp,
             verify::engine::peer_record::PeerRuns::Recorded,
+            verify::default_jobs(),
         );
         repeats += 1;
         let elapsed = started.elapsed().as_secs_f64();

@@ -161,6 +161,8 @@ pub struct CaseContext<'a> {
     pub engine: Engine,
     /// Whether a peer engine runs now or gives its recorded values.
     pub peer_runs: PeerRuns,
+    /// How many of its own runs the case may make at once (`map`): `tamp verify --jobs`.
+    pub jobs: usize,
     /// The runs a peer engine made for this case, as its record keeps them.
     peer_log: Mutex<Vec<PeerRun>>,
     /// The peer's record of this case, once read.
@@ -228,6 +230,7 @@ impl<'a> CaseContext<'a> {
             variant,
             engine,
             peer_runs: PeerRuns::default(),
+            jobs: default_jobs(),
             peer_log: Mutex::new(Vec::new()),
             peer_record: Mutex::new(None),
             not_expressible: Mutex::new(None),
@@ -465,7 +468,7 @@ impl<'a> CaseContext<'a> {
     /// `items.iter().map(run).collect()` on one thread per core, results in the
     /// order of the items (`parallel::map`): the independent runs of one case.
     pub fn map<T: Sync, R: Send>(&self, items: &[T], run: impl Fn(&T) -> R + Sync) -> Vec<R> {
-        parallel::map(items, default_jobs(), run)
+        parallel::map(items, self.jobs, run)
     }
 
     /// The case's die-compaction file, with the variant's step and detector applied to
@@ -690,6 +693,7 @@ fn judge(spec: &QuantitySpec, m: &Measured) -> QuantityResult {
     }
 }
 
+#[allow(clippy::too_many_arguments)]
 pub fn run_case(
     spec: &CaseSpec,
     dir: &Path,
@@ -698,6 +702,7 @@ pub fn run_case(
     variant: Variant,
     engine: &Engine,
     peer_runs: PeerRuns,
+    jobs: usize,
 ) -> CaseResult {
     let started = Instant::now();
     let started_at = std::time::SystemTime::now();
@@ -709,6 +714,7 @@ pub fn run_case(
     };
     let mut ctx = CaseContext::new(spec, dir, &own_dir, reference_data, variant, engine.clone());
     ctx.peer_runs = peer_runs;
+    ctx.jobs = jobs;
     let outcome = match (cases::find(&spec.name), &spec.tamp_only) {
         (None, _) => Err(TampError::Other(format!(
             "no code registered for case '{}' in src/verify/cases",
@@ -978,6 +984,7 @@ pub fn run_cases(
             Variant::default(),
             engine,
             peer_runs,
+            jobs,
         );
         let name = match several {
             true => format!("{} [{engine}]", spec.name),
@@ -1087,6 +1094,36 @@ mod tests {
         // A NaN is a broken measurement, whatever the record says.
         assert_eq!(judged(record, f64::NAN), Status::Fail);
         assert!(Status::KnownDeviation.is_ok() && !Status::UnexpectedPass.is_ok());
+    }
+
+    #[test]
+    fn a_case_maps_its_runs_no_more_than_jobs_at_a_time() {
+        use std::sync::atomic::{AtomicUsize, Ordering};
+        let spec: CaseSpec = serde_json::from_str(
+            r#"{"name": "c", "tier": "quick", "description": "d", "quantities": []}"#,
+        )
+        .unwrap();
+        let mut ctx = CaseContext::new(
+            &spec,
+            Path::new(""),
+            Path::new(""),
+            None,
+            Variant::default(),
+            Engine::Tamp,
+        );
+        for jobs in [1, 3] {
+            ctx.jobs = jobs;
+            let (running, most) = (AtomicUsize::new(0), AtomicUsize::new(0));
+            let order = ctx.map(&[0u64; 12], |_| {
+                let now = running.fetch_add(1, Ordering::SeqCst) + 1;
+                most.fetch_max(now, Ordering::SeqCst);
+                std::thread::sleep(std::time::Duration::from_millis(5));
+                running.fetch_sub(1, Ordering::SeqCst);
+                now
+            });
+            assert_eq!(order.len(), 12);
+            assert!(most.load(Ordering::SeqCst) <= jobs, "jobs {jobs}");
+        }
     }
 
     #[test]
