@@ -1096,6 +1096,18 @@ mod tests {
         assert!(Status::KnownDeviation.is_ok() && !Status::UnexpectedPass.is_ok());
     }
 
+    /// A context of `spec` that reads and writes nothing of a checkout.
+    fn bare_context(spec: &CaseSpec) -> CaseContext<'_> {
+        CaseContext::new(
+            spec,
+            Path::new(""),
+            Path::new(""),
+            None,
+            Variant::default(),
+            Engine::Tamp,
+        )
+    }
+
     #[test]
     fn a_case_maps_its_runs_no_more_than_jobs_at_a_time() {
         use std::sync::atomic::{AtomicUsize, Ordering};
@@ -1103,14 +1115,7 @@ mod tests {
             r#"{"name": "c", "tier": "quick", "description": "d", "quantities": []}"#,
         )
         .unwrap();
-        let mut ctx = CaseContext::new(
-            &spec,
-            Path::new(""),
-            Path::new(""),
-            None,
-            Variant::default(),
-            Engine::Tamp,
-        );
+        let mut ctx = bare_context(&spec);
         for jobs in [1, 3] {
             ctx.jobs = jobs;
             let (running, most) = (AtomicUsize::new(0), AtomicUsize::new(0));
@@ -1141,14 +1146,7 @@ mod tests {
                     "quantities": []}}"#
             ))
             .unwrap();
-            let ctx = CaseContext::new(
-                &spec,
-                Path::new(""),
-                Path::new(""),
-                None,
-                Variant::default(),
-                Engine::Tamp,
-            );
+            let ctx = bare_context(&spec);
             ctx.parameters::<Scenario>().map_err(|e| e.to_string())
         };
         let ok = read(r#""parameters": {"box_width_radii": 20, "seeds": [1, 2]},"#).unwrap();
