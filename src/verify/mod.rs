@@ -465,7 +465,7 @@ impl<'a> CaseContext<'a> {
         Ok(store::Store { dir })
     }
 
-    /// `items.iter().map(run).collect()` on one thread per core, results in the
+    /// `items.iter().map(run).collect()` on up to `jobs` threads, results in the
     /// order of the items (`parallel::map`): the independent runs of one case.
     pub fn map<T: Sync, R: Send>(&self, items: &[T], run: impl Fn(&T) -> R + Sync) -> Vec<R> {
         parallel::map(items, self.jobs, run)
