@@ -44,26 +44,18 @@ PY
 }
 for k in $ks; do one "$k" & done
 wait
-python3 - "$here/results.csv" "$work" $ks <<'PY'
+python3 - "$root/reference_data" "$here/results.csv" "$work" $ks <<'PY'
 import csv, math, sys, json
-recorded, work, ks = sys.argv[1], sys.argv[2], sys.argv[3:]
+sys.path.insert(0, sys.argv[1])
+from die_replay_rows import thermo_forces
+recorded, work, ks = sys.argv[2], sys.argv[3], sys.argv[4:]
 rows = list(csv.DictReader(open(recorded)))
 n = int(rows[0]["steps_per_record"])
 area = math.pi * (0.5 * json.load(open(f"{work}/ulp{ks[0]}/stroke.json"))["die_diameter"]) ** 2
 rec = [(float(r["punch_pressure"]), float(r["density_specimen"])) for r in rows]
 def moved(k):
-    # Thermo rows: step time F_punch F_floor dz; the first row of a step is kept.
-    force, head = {}, False
-    for line in open(f"{work}/ulp{k}/log.lammps"):
-        w = line.split()
-        if w[:2] == ["Step", "Time"]:
-            head = True
-            continue
-        if head and w and w[0].isdigit() and len(w) == 5:
-            force.setdefault(int(w[0]), float(w[2]))
-        else:
-            head = False
-    return [(force[j * n] / area, rec[j][1]) for j in range(len(rec)) if j * n in force]
+    force = thermo_forces(f"{work}/ulp{k}/log.lammps")
+    return [(force[j * n][1] / area, rec[j][1]) for j in range(len(rec)) if j * n in force]
 def density_at(c, p):
     for a, b in zip(c, c[1:]):
         if a[0] <= p <= b[0]:
